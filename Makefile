@@ -1,0 +1,55 @@
+# The two commands of the README:
+#   make test   install what is missing, configure, build, run the whole suite
+#   make demo   same set-up, then run the main job
+# Other targets: build, test-sanitize (ASan+UBSan build running the CI part),
+# bench (Google Benchmark programs, kept out of `make test`), lint, format.
+BUILD ?= build
+BUILD_SAN ?= build-asan
+BUILD_BENCH ?= build-bench
+JOBS ?= $(shell nproc)
+CMAKE_GEN := $(shell command -v ninja >/dev/null 2>&1 && echo "-G Ninja")
+
+.PHONY: all deps configure build test demo test-sanitize bench lint format clean
+
+all: build
+
+deps:
+	@bash scripts/install-deps
+
+$(BUILD)/CMakeCache.txt: | deps
+	cmake -S . -B $(BUILD) $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=RelWithDebInfo
+
+configure: deps $(BUILD)/CMakeCache.txt
+
+build: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+
+demo: build
+	$(BUILD)/stereosim_host_demo --out out/demo
+
+# The CI's sanitizer pass: the dsp layer (and, once they exist, a short system scenario).
+SAN_LABELS ?= dsp|scene|rtl
+test-sanitize: deps
+	cmake -S . -B $(BUILD_SAN) $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=Debug -DSTEREOSIM_SANITIZE=ON
+	cmake --build $(BUILD_SAN) -j $(JOBS)
+	cd $(BUILD_SAN) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+		ctest --output-on-failure -j $(JOBS) -L '$(SAN_LABELS)' $(CTEST_ARGS)
+
+bench: deps
+	cmake -S . -B $(BUILD_BENCH) $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=Release -DSTEREOSIM_BENCH=ON
+	cmake --build $(BUILD_BENCH) -j $(JOBS)
+	@for b in $(BUILD_BENCH)/bench/bench_*; do echo "== $$b"; $$b --benchmark_min_time=0.2; done
+
+lint: deps
+	@for f in $$(find rtl -name '*.v' | sort); do \
+		verilator --lint-only -Wall -Irtl $$f || exit 1; done; echo "lint: rtl clean"
+
+
+format:
+	clang-format -i $$(git ls-files '*.cpp' '*.h')
+
+clean:
+	rm -rf $(BUILD) $(BUILD_SAN) $(BUILD_BENCH)

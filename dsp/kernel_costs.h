@@ -1,0 +1,39 @@
+// Modelled C64x cycles of each firmware kernel call, from the C64x cost
+// model (dsp/c64x_cost_model.h): every function describes the operations a
+// hand-scheduled C64x implementation of the kernel issues per functional
+// unit (packed 8-bit SIMD such as SUBABS4 and DOTPU4, 64-bit loads) and
+// where its data lives, and lets the model turn that into cycles.
+// These are the figures charged to dsp::hal::charge_cycles.
+#pragma once
+
+#include <cstdint>
+
+namespace dsp::cost {
+
+// Where a kernel's image data lives (DESIGN.md, "DSP memory").
+enum class memory : uint8_t { l2, sdram };
+
+// Fused Bayer bilinear demosaic + gray + brightness mean, one frame.
+uint64_t demosaic_gray_cycles(int width, int height, memory where = memory::l2);
+// Brightness gain lookup table build + apply, one frame.
+uint64_t brightness_cycles(int width, int height, memory where = memory::l2);
+// Three-frame difference (two absdiff + threshold + and), fused, one frame.
+uint64_t three_frame_difference_cycles(int width, int height, memory where = memory::l2);
+// Binary 3x3 erosion or dilation, `passes` passes over width x height.
+uint64_t morphology_cycles(int width, int height, int passes);
+// Connected components with `foreground` set pixels in width x height.
+uint64_t connected_components_cycles(int width, int height, int foreground);
+// Exhaustive SAD search: `positions` placements of a pattern_w x pattern_h pattern.
+uint64_t sad_search_cycles(int pattern_w, int pattern_h, int positions);
+// Copy of a pattern (reference update).
+uint64_t pattern_copy_cycles(int pattern_w, int pattern_h);
+// Parabola sub-pixel refinement (one division).
+uint64_t subpixel_cycles();
+// Sobel 3x3 over `rows` rows of `width` pixels.
+uint64_t sobel_cycles(int width, int rows);
+// Edge segment extraction and matching over `lines` epipolar lines of `width` pixels.
+uint64_t edge_match_cycles(int width, int lines, int max_disparity);
+// Triangulation: depth and X, Y (64-bit divisions in software).
+uint64_t triangulate_cycles();
+
+}  // namespace dsp::cost

@@ -1,0 +1,42 @@
+// Stereo matching by SAD direct matching (paper step 5a): the pattern taken
+// from the RIGHT image is searched in the LEFT image along the same rows
+// +-row_slack rows (parallel optical axes), at horizontal shifts
+// d in [min_disparity, max_disparity]: left position (x + d, y + dy).
+// A scene point at right-image column x appears at left column x + d, d >= 0
+// (Middlebury's convention: left (x, y) matches right (x - d, y)).
+//
+// Sub-pixel refinement: a parabola through SAD(d-1), SAD(d), SAD(d+1) at the
+// best row gives the offset (S(d-1) - S(d+1)) / (2 (S(d-1) - 2 S(d) + S(d+1)))
+// in [-0.5, 0.5], computed in integer arithmetic as Q8 (1/256 px).
+#pragma once
+
+#include <cstdint>
+
+#include "dsp/image.h"
+
+namespace dsp {
+
+struct stereo_params {
+    int min_disparity = 0;
+    int max_disparity = 64;
+    int row_slack = 1;  // +-rows searched (pattern height plus two rows)
+    bool subpixel = true;
+};
+
+struct stereo_result {
+    bool valid = false;
+    int disparity = 0;         // integer minimum
+    int dy = 0;                // row offset of the minimum
+    int32_t disparity_q8 = 0;  // refined disparity, Q8 (256 = 1 px)
+    uint32_t sad = 0;
+    int positions = 0;  // positions evaluated (for the cost model)
+};
+
+// pattern: the box in `right`. The search is clipped to the left image.
+stereo_result stereo_match_sad(gray_cplane right, gray_cplane left, box pattern,
+                               const stereo_params& params);
+
+// The parabola offset in Q8 from three SADs around a minimum (s0 <= s_m, s0 <= s_p).
+int32_t subpixel_offset_q8(uint32_t s_minus, uint32_t s0, uint32_t s_plus);
+
+}  // namespace dsp

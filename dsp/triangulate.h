@@ -1,0 +1,40 @@
+// Depth and 3D position from disparity (paper step 6), fixed point.
+//
+//   D = s f / (l + r),  X = D x / f,  Y = D y / f,  Z = D
+//
+// l and r are the distances of the image points from the left and right
+// optical axes on the sensor plane. With columns measured in pixels,
+// l + r = pitch * ((x_left - cx_left) - (x_right - cx_right))
+//       = pitch * (d - (cx_left - cx_right)), d = x_left - x_right,
+// and f / pitch is the focal length in pixels, so D = s * f_px / (d - dcx).
+// x, y are the right image point's offsets from the right principal point.
+// The result is in the RIGHT camera's frame: X right, Y down, Z forward, in
+// micrometres.
+#pragma once
+
+#include <cstdint>
+
+namespace dsp {
+
+struct camera_rig {
+    int32_t baseline_um = 120000;      // s: 120 mm (DESIGN.md default rig)
+    int32_t focal_length_um = 6000;    // 6 mm lenses
+    int32_t pixel_pitch_nm = 7600;     // 7.6 um, the OV7620's (hardware-facts.md section 6)
+    int32_t cx_left_q8 = 320 * 256 - 128;  // principal points, Q8 px: image centre of
+    int32_t cy_left_q8 = 240 * 256 - 128;  // a 640x480 image is (319.5, 239.5)
+    int32_t cx_right_q8 = 320 * 256 - 128;
+    int32_t cy_right_q8 = 240 * 256 - 128;
+
+    // Focal length in pixels, Q8: f / pitch (789.5 px for the default rig).
+    int64_t focal_px_q8() const;
+};
+
+struct point3_um {
+    int32_t x = 0, y = 0, z = 0;
+};
+
+// false when the disparity does not give a point in front of the rig.
+bool triangulate(const camera_rig& rig, int32_t x_right_q8, int32_t y_right_q8,
+                 int32_t disparity_q8, point3_um* out);
+
+}  // namespace dsp
