@@ -5,9 +5,21 @@
 // A scene point at right-image column x appears at left column x + d, d >= 0
 // (Middlebury's convention: left (x, y) matches right (x - d, y)).
 //
+// Computes: SAD(d, dy) = sum_ij |left(x + d + i, y + dy + j) - right(x + i, y + j)|
+//   for every (d, dy) whose box lies wholly inside the left image (positions
+//   that would leave it are skipped, not padded). The minimum wins; ties go
+//   to the smallest |dy|, then the smallest d, then the negative dy.
 // Sub-pixel refinement: a parabola through SAD(d-1), SAD(d), SAD(d+1) at the
-// best row gives the offset (S(d-1) - S(d+1)) / (2 (S(d-1) - 2 S(d) + S(d+1)))
-// in [-0.5, 0.5], computed in integer arithmetic as Q8 (1/256 px).
+//   best row gives the offset (S(d-1) - S(d+1)) / (2 (S(d-1) - 2 S(d) + S(d+1)))
+//   in [-0.5, 0.5], computed in integer arithmetic as Q8 (1/256 px), rounded
+//   to nearest. When d-1 or d+1 was not evaluated (edge of the disparity
+//   range or of the image) or the three SADs are flat, the offset is 0.
+//   The two neighbours come from the search itself: no extra SAD is computed.
+// Assumes: the pattern box lies inside the right image (else: invalid);
+//   pattern width * height * 255 < 2^32 (any pattern up to 16 M pixels).
+// Costs: positions * width * height absolute differences (one SUBABS4 per
+//   4 pixels on the C64x), plus one division for the sub-pixel step; see
+//   dsp::cost::sad_search_cycles and dsp::cost::subpixel_cycles.
 #pragma once
 
 #include <cstdint>
@@ -28,15 +40,17 @@ struct stereo_result {
     int disparity = 0;         // integer minimum
     int dy = 0;                // row offset of the minimum
     int32_t disparity_q8 = 0;  // refined disparity, Q8 (256 = 1 px)
-    uint32_t sad = 0;
-    int positions = 0;  // positions evaluated (for the cost model)
+    uint32_t sad = 0;          // matching cost of the minimum (SAD, or the edge score)
+    int positions = 0;         // positions evaluated (for the cost model)
 };
 
 // pattern: the box in `right`. The search is clipped to the left image.
+// Invalid when the box is empty, not inside `right`, or no position fits in `left`.
 stereo_result stereo_match_sad(gray_cplane right, gray_cplane left, box pattern,
                                const stereo_params& params);
 
-// The parabola offset in Q8 from three SADs around a minimum (s0 <= s_m, s0 <= s_p).
+// The parabola offset in Q8 from three SADs around a minimum (s0 <= s_m, s0 <= s_p),
+// rounded to nearest and clamped to [-128, 128]; 0 when the three are flat.
 int32_t subpixel_offset_q8(uint32_t s_minus, uint32_t s0, uint32_t s_plus);
 
 }  // namespace dsp
