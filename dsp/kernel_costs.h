@@ -4,14 +4,27 @@
 // unit (packed 8-bit SIMD such as SUBABS4 and DOTPU4, 64-bit loads) and
 // where its data lives, and lets the model turn that into cycles.
 // These are the figures charged to dsp::hal::charge_cycles.
+//
+// The op profile of each kernel (ops per iteration per unit, pixels per
+// iteration) is documented in kernel_costs.cpp; *_profile() returns it so a
+// report can show the breakdown. Figures come from cost::model() (model id
+// cost::model().id()); the platform may replace it once at start-up, e.g.
+// for the DSK v2/v3 clocks (SDRAM stalls depend on the CPU/EMIF ratio) or a
+// compiled-C factor.
 #pragma once
 
 #include <cstdint>
+
+#include "dsp/c64x_cost_model.h"
 
 namespace dsp::cost {
 
 // Where a kernel's image data lives (DESIGN.md, "DSP memory").
 enum class memory : uint8_t { l2, sdram };
+
+// The model all functions below use (default: DSK v1 clocks, fitted values).
+const c64x::cost_model& model();
+void set_model(const c64x::cost_model& m);
 
 // Fused Bayer bilinear demosaic + gray + brightness mean, one frame.
 uint64_t demosaic_gray_cycles(int width, int height, memory where = memory::l2);
@@ -23,7 +36,8 @@ uint64_t three_frame_difference_cycles(int width, int height, memory where = mem
 uint64_t morphology_cycles(int width, int height, int passes);
 // Connected components with `foreground` set pixels in width x height.
 uint64_t connected_components_cycles(int width, int height, int foreground);
-// Exhaustive SAD search: `positions` placements of a pattern_w x pattern_h pattern.
+// Exhaustive SAD search: `positions` placements of a pattern_w x pattern_h
+// pattern.
 uint64_t sad_search_cycles(int pattern_w, int pattern_h, int positions);
 // Copy of a pattern (reference update).
 uint64_t pattern_copy_cycles(int pattern_w, int pattern_h);
@@ -31,9 +45,26 @@ uint64_t pattern_copy_cycles(int pattern_w, int pattern_h);
 uint64_t subpixel_cycles();
 // Sobel 3x3 over `rows` rows of `width` pixels.
 uint64_t sobel_cycles(int width, int rows);
-// Edge segment extraction and matching over `lines` epipolar lines of `width` pixels.
-uint64_t edge_match_cycles(int width, int lines, int max_disparity);
+// Edge segment extraction and matching over `lines` epipolar lines of
+// `width` pixels scanned per line and image, shifts
+// min_disparity..max_disparity.
+uint64_t edge_match_cycles(int width, int lines, int max_disparity, int min_disparity = 0);
 // Triangulation: depth and X, Y (64-bit divisions in software).
 uint64_t triangulate_cycles();
+
+// The op profiles behind the figures above (same arguments).
+c64x::kernel_profile demosaic_gray_profile(int width, int height, memory where = memory::l2);
+c64x::kernel_profile brightness_profile(int width, int height, memory where = memory::l2);
+c64x::kernel_profile three_frame_difference_profile(int width, int height,
+                                                    memory where = memory::l2);
+c64x::kernel_profile morphology_profile(int width, int height, int passes);
+c64x::kernel_profile connected_components_profile(int width, int height, int foreground);
+c64x::kernel_profile sad_search_profile(int pattern_w, int pattern_h, int positions);
+c64x::kernel_profile pattern_copy_profile(int pattern_w, int pattern_h);
+c64x::kernel_profile subpixel_profile();
+c64x::kernel_profile sobel_profile(int width, int rows);
+c64x::kernel_profile edge_match_profile(int width, int lines, int max_disparity,
+                                        int min_disparity = 0);
+c64x::kernel_profile triangulate_profile();
 
 }  // namespace dsp::cost
