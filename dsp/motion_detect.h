@@ -10,6 +10,11 @@
 // (8-connectivity) are labelled, components smaller than min_area dropped,
 // and the largest remaining one is the moving object; its bounding box is
 // the reference pattern's zone.
+//
+// Common assumptions: every plane of one call has the same width and height
+// (strides may differ); an output never aliases an input; no alignment or
+// multiple-of-8 width is needed (the C64x versions would take 8 pixels per
+// step with a scalar tail).
 #pragma once
 
 #include <cstdint>
@@ -18,25 +23,75 @@
 
 namespace dsp {
 
-// out = |a - b| (bytewise, SUBABS4).
+// out = |a - b| per byte.
+// Costs (C64x, estimate; not in the cost model, the detector uses the fused
+// kernel): per 8 pixels 2 LDNDW, 2 SUBABS4, 1 STNDW: .D bound, ~0.19
+// cycles/pixel.
 void absdiff(gray_cplane a, gray_cplane b, gray_plane out);
+
 // out = in > threshold ? 255 : 0.
+// Costs (C64x, estimate; not in the cost model): per 8 pixels LDDW, 2
+// CMPGTU4, 2 XPND4 (bit mask to 0/255 bytes), STDW: ~0.125 cycles/pixel.
 void threshold_binary(gray_cplane in, uint8_t threshold, gray_plane out);
-// out = a & b on 0/255 masks.
+
+// out = a & b (on 0/255 masks: the intersection).
+// Costs (C64x, estimate; not in the cost model): per 8 pixels 2 loads, 2
+// AND, 1 store: .D bound, ~0.19 cycles/pixel.
 void mask_and(gray_cplane a, gray_cplane b, gray_plane out);
-// Eq. 2-4 fused in one pass: object = (|f0-f1| > th) & (|f1-f2| > th).
+
+// Eq. 2-4 fused in one pass over the three frames, no intermediate masks:
+//   object = (|f0 - f1| > th) & (|f1 - f2| > th) ? 255 : 0.
+// Identical to absdiff x2 + threshold_binary x2 + mask_and (tests prove it).
+// Computed as min(|f0 - f1|, |f1 - f2|) > th (both above <=> the smaller is).
+// Costs (C64x): dsp::cost::three_frame_difference_cycles: per 8 pixels 3
+// loads, 4 SUBABS4, 2 MINU4, 2 CMPGTU4, XPND4, 1 store: II 3 (.L bound),
+// 0.375 cycles/pixel, against ~0.8 for the five separate passes, which also
+// write and re-read four intermediate planes.
 void three_frame_difference(gray_cplane f_tm2, gray_cplane f_tm1, gray_cplane f_t,
                             uint8_t threshold, gray_plane object_mask);
 
-// Binary 3x3 erosion / dilation of a 0/255 mask; the border outside the
-// image counts as background.
+// Binary 3x3 erosion / dilation of a 0/255 mask with a square structuring
+// element: out = AND (erosion) / OR (dilation) of the 3x3 neighbourhood,
+// which on 0/255 bytes is its minimum / maximum. Pixels outside the image
+// count as background (0): erosion clears the outermost rows and columns,
+// dilation is unaffected by the border. Same result as cv::erode /
+// cv::dilate with a 3x3 rect kernel and BORDER_CONSTANT 0.
+// Assumes: in holds only 0 and 255 (other values are ANDed / ORed bitwise,
+// not min / max); out does not alias in (use two buffers and ping-pong).
+// Costs (C64x): dsp::cost::morphology_cycles: separable, 8 pixels per
+// iteration from LDNDW x-1 / LDDW x / LDNDW x+1 and a 3-row ring, II 4 (.D
+// bound), 0.5 cycles/pixel per pass. The host code ANDs / ORs 64-bit words
+// reloaded at x - 1, x and x + 1 (lane-wise only, so it does not depend on
+// byte order).
 void erode_3x3(gray_cplane in, gray_plane out);
 void dilate_3x3(gray_cplane in, gray_plane out);
 
 struct component {
     box bbox;
-    int area = 0;
+    int area = 0;  // pixels
 };
+
+// Connected components (8-connectivity) of a mask (any non-zero byte is
+// foreground), one raster pass over runs of foreground pixels with
+// union-find on run labels, then one pass over the label table.
+//
+// Workspaces (caller-owned, nothing allocated here):
+//   labels: 2 * mask.width entries (the run labels of the previous and the
+//           current row; the full label image is never stored, so the
+//           kernel needs no width * height int32 buffer in L2);
+//   parent, stats: max_labels entries each (the union-find forest and the
+//           per-label bounding box and area).
+// Returns the number of components written to out (at most max_out), largest
+// area first, equal areas by bbox top then left; returns -1 when the mask
+// needs more than max_labels provisional labels (one per run that touches no
+// labelled run in the row above; at most ceil(w/2) * ceil(h/2)).
+// Costs (C64x): dsp::cost::connected_components_cycles: a scan of 8 pixels
+// per iteration for the run ends, per run pixel a label look-up above and a
+// label store, per run a find / union / stats update (not pipelinable),
+// then one pass over the label table and the sort of the components; the
+// data-dependent part scales with the foreground (runs), not the image.
+int connected_components(gray_cplane mask, int32_t* labels, int32_t* parent, component* stats,
+                         int max_labels, component* out, int max_out);
 
 struct detect_params {
     uint8_t threshold = 20;  // Binary(a) = a > threshold
@@ -49,44 +104,57 @@ struct detection {
     bool found = false;
     box bbox;
     int area = 0;
-    int components = 0;  // components at or above min_area
+    int components = 0;           // components at or above min_area
+    bool label_overflow = false;  // the mask needed more labels than init's max_components
 };
 
 // Owns its work buffers, allocated once in init (never in detect).
+//
+// detect(): three_frame_difference -> open_passes erosions, open_passes
+// dilations (opening) -> close_passes dilations, close_passes erosions
+// (closing) -> connected_components -> the largest component with area >=
+// min_area. Because the border counts as background, the closing's
+// erosions also clear the image's outermost close_passes rows and columns
+// (an object cut by the image edge loses that rim).
+// Memory: 2 masks of max_width * max_height bytes, 2 * max_width labels,
+// 3 tables of max_components entries (parent, stats, sorted components).
 class motion_detector {
-public:
+  public:
     motion_detector() = default;
     ~motion_detector();
     motion_detector(const motion_detector&) = delete;
     motion_detector& operator=(const motion_detector&) = delete;
 
-    // Size the buffers for images up to max_width x max_height.
+    // Size the buffers for images up to max_width x max_height;
+    // max_components bounds the provisional labels of one mask.
     void init(int max_width, int max_height, int max_components = 4096);
 
-    // The moving object at time t-1 from three consecutive gray frames.
+    // The moving object at time t-1 from three consecutive gray frames of the
+    // same size (at most the init size; larger frames give found = false).
     detection detect(gray_cplane f_tm2, gray_cplane f_tm1, gray_cplane f_t,
                      const detect_params& params);
 
     // The cleaned mask of the last detect() call (for tests and waveforms).
     gray_cplane last_mask() const;
 
+    // The components of the last detect() call, largest first (all sizes,
+    // also those below min_area).
+    const component* last_components() const { return m_components; }
+    int last_component_count() const { return m_last_components; }
+
     // Statistics of the last call, for the cost model.
     int last_foreground_pixels() const { return m_last_foreground; }
 
-private:
+  private:
     int m_max_width = 0, m_max_height = 0, m_max_components = 0;
     uint8_t* m_mask = nullptr;
     uint8_t* m_scratch = nullptr;
+    const uint8_t* m_result = nullptr;  // m_mask or m_scratch, whichever holds the cleaned mask
     int32_t* m_labels = nullptr;
     component* m_components = nullptr;
+    component* m_stats = nullptr;
     int32_t* m_parent = nullptr;
-    int m_last_width = 0, m_last_height = 0, m_last_foreground = 0;
+    int m_last_width = 0, m_last_height = 0, m_last_foreground = 0, m_last_components = 0;
 };
-
-// Connected components (8-connectivity) of a 0/255 mask; returns how many
-// components were written to out (at most max_out, largest first). labels
-// and parent are caller workspaces of width*height and max_labels entries.
-int connected_components(gray_cplane mask, int32_t* labels, int32_t* parent, int max_labels,
-                         component* out, int max_out);
 
 }  // namespace dsp
