@@ -1,0 +1,531 @@
+#include "dsp/controller.h"
+
+#include <cstring>
+
+#include "dsp/kernel_costs.h"
+#include "dsp/sobel.h"
+
+namespace dsp {
+
+const char* tracker_state_name(tracker_state s) {
+    switch (s) {
+        case tracker_state::detect:
+            return "DETECT";
+        case tracker_state::track:
+            return "TRACK";
+        case tracker_state::lost:
+            return "LOST";
+    }
+    return "?";
+}
+
+const char* stereo_method_name(stereo_method m) {
+    switch (m) {
+        case stereo_method::sad:
+            return "sad";
+        case stereo_method::edge:
+            return "edge";
+        case stereo_method::both:
+            return "both";
+    }
+    return "?";
+}
+
+namespace {
+
+constexpr int history_frames = 3;  // paper eq. 2-4 needs f(t-2), f(t-1), f(t)
+
+int max_int(int a, int b) {
+    return a > b ? a : b;
+}
+int min_int(int a, int b) {
+    return a < b ? a : b;
+}
+
+// Disparity (Q8 px) of a point at depth_mm on the rig: d = s f / D + dcx
+// (the inverse of dsp/triangulate.h). Integer, once at init.
+int64_t disparity_q8_at_depth(const camera_rig& rig, int32_t depth_mm) {
+    const int64_t depth_um = static_cast<int64_t>(depth_mm) * 1000;
+    const int64_t dcx_q8 = static_cast<int64_t>(rig.cx_left_q8) - rig.cx_right_q8;
+    return static_cast<int64_t>(rig.baseline_um) * rig.focal_px_q8() / depth_um + dcx_q8;
+}
+
+// Where object(t-1) is looked for when the object's box at t-1 was `last`:
+// the box grown by its own size each side (3 x 3 boxes), clipped to the
+// frame. A box much smaller than the object (an 8-21 px box started on an
+// 80 px ball) sees its object's extent only in a region this wide; grown by
+// a quarter of its size, the box shrank on such a ball instead of growing.
+box size_rule_region(box last, int width, int height) {
+    const int grow_x = max_int(2, last.width), grow_y = max_int(2, last.height);
+    const int x0 = max_int(0, last.x - grow_x), y0 = max_int(0, last.y - grow_y);
+    const int x1 = min_int(width, last.right() + grow_x);
+    const int y1 = min_int(height, last.bottom() + grow_y);
+    return box{x0, y0, max_int(0, x1 - x0), max_int(0, y1 - y0)};
+}
+
+// One axis of the box refit (see controller::impl::refit_box): the SAD box
+// (found_start, found_size) gets a size moved towards the mask's extent by at
+// most a step, and its centre moved by half the offset between the last box
+// and the mask (object(t-1) was seen where the last box was), at most a step;
+// then it is kept inside [0, limit). step = max(1, larger of the two sizes
+// / 8): with the box's size alone, a box started small on an object cut by
+// the image border needed ~20 frames to grow to the object.
+void refit_axis(int found_start, int found_size, int last_start, int last_size, int mask_start,
+                int mask_size, int min_size, int max_size, int limit, int* start, int* size) {
+    const int step = max_int(1, max_int(found_size, mask_size) / 8);
+    const int moved = max_int(found_size - step, min_int(found_size + step, mask_size));
+    const int new_size = min_int(limit, max_int(min_size, min_int(max_size, moved)));
+    // Centres in Q1 as 2 * start + size (twice the centre, plus one).
+    const int offset2 = (2 * last_start + last_size) - (2 * mask_start + mask_size);
+    const int shift2 = max_int(-2 * step, min_int(2 * step, offset2 / 2));
+    const int centre2 = 2 * found_start + found_size - shift2;
+    const int new_start = (centre2 - new_size) >> 1;  // floor, also below 0
+    *size = new_size;
+    *start = max_int(0, min_int(limit - new_size, new_start));
+}
+
+// A stereo minimum on an end of the disparity range actually searched is no
+// minimum: the true one may lie beyond. The upper end is max_disparity or,
+// nearer the right border, the largest disparity that keeps the box inside
+// the left image; there the object may have left the left view. The range
+// has disparity_margin_px beyond the depth range at each end, so an object
+// inside the depth range never has its minimum there. Measured on a ball
+// leaving the view: depth errors of +10 % to +195 % without this rule (the
+// minima at 35 px, the border, and at 13 px, the far end).
+bool at_range_end(const stereo_result& match, box object, int min_disparity, int max_disparity,
+                  int image_width) {
+    const int upper = min_int(max_disparity, image_width - object.right());
+    return match.valid && (match.disparity <= min_disparity || match.disparity >= upper);
+}
+
+// The part of an object box SAD stereo matches: the box less one eighth of
+// its width and height on each side (same centre). A round object fills only
+// pi/4 of its bounding box; the corners are background at another depth and
+// pulled the disparity towards it (measured +1.5 % to +2 % depth at 2.2 m,
+// background at 5 m). The core holds 0.7 % background for a disc; its mean
+// surface is 0.11 r nearer than the whole visible surface's (-5.5 mm for the
+// 5 cm ball: -0.55 % at 1 m, -0.18 % at 3 m).
+box object_core(box object) {
+    const int trim_x = object.width / 8, trim_y = object.height / 8;
+    return box{object.x + trim_x, object.y + trim_y, object.width - 2 * trim_x,
+               object.height - 2 * trim_y};
+}
+
+// stage_begin / stage_end around a scope; the cycles charged inside go to
+// the HAL (once, at the end) and to the frame's record.
+class stage_scope {
+  public:
+    stage_scope(hal& hardware, stage s, frame_output& out)
+        : m_hal(hardware), m_stage(s), m_out(out) {
+        m_hal.stage_begin(m_stage);
+    }
+    ~stage_scope() {
+        m_hal.charge_cycles(m_stage, m_cycles);
+        m_out.stage_cycles[static_cast<int>(m_stage)] += m_cycles;
+        m_hal.stage_end(m_stage);
+    }
+    stage_scope(const stage_scope&) = delete;
+    stage_scope& operator=(const stage_scope&) = delete;
+
+    void charge(uint64_t cycles) { m_cycles += cycles; }
+
+  private:
+    hal& m_hal;
+    stage m_stage;
+    frame_output& m_out;
+    uint64_t m_cycles = 0;
+};
+
+}  // namespace
+
+struct controller::impl {
+    controller_config config;
+    hal* hardware = nullptr;
+
+    rgb8* line_scratch = nullptr;                 // one demosaiced row
+    uint8_t* right_history[history_frames] = {};  // ring of right gray frames
+    uint8_t* left_gray = nullptr;                 // the current left gray frame
+    uint8_t* size_mask = nullptr;                 // object(t-1) around the last box
+    int32_t* size_columns = nullptr;              // its set pixels per column and per row
+    int32_t* size_rows = nullptr;
+    uint8_t* edge_band_right = nullptr;  // Sobel of the pattern's rows, +1 row each side
+    uint8_t* edge_band_left = nullptr;
+    int band_capacity_rows = 0;
+
+    motion_detector detector;
+    sad_tracker tracker;
+
+    int width = 0, height = 0;  // size of the pairs in the history
+    int newest = history_frames - 1;
+    int frames_in_history = 0;
+    int lost_pairs = 0;
+    uint32_t frame_index = 0;
+
+    ~impl() {
+        delete[] line_scratch;
+        for (auto* frame : right_history) delete[] frame;
+        delete[] left_gray;
+        delete[] size_mask;
+        delete[] size_columns;
+        delete[] size_rows;
+        delete[] edge_band_right;
+        delete[] edge_band_left;
+    }
+
+    gray_plane frame_plane(uint8_t* data) const { return gray_plane{data, width, height, width}; }
+    gray_cplane history(int age) const {  // age 0 = newest
+        const int slot = (newest - age + history_frames) % history_frames;
+        return frame_plane(right_history[slot]).as_const();
+    }
+    gray_cplane left() const { return frame_plane(left_gray).as_const(); }
+
+    void preprocess(gray_cplane raw_left, gray_cplane raw_right, frame_output& out);
+    // Each returns whether an object box is known after it.
+    bool detect(frame_output& out);
+    bool track(frame_output& out);
+    box refit_box(box last, box found, uint64_t* cycles);
+    void stereo_sad(box object, frame_output& out);
+    void stereo_edge(box object, frame_output& out);
+    bool choose_disparity(frame_output& out) const;
+    void xyz(box object, frame_output& out);
+};
+
+controller::~controller() {
+    delete m_impl;
+}
+
+void controller::init(const controller_config& config, hal& hardware) {
+    delete m_impl;
+    m_impl = new impl;
+    impl& s = *m_impl;
+    s.config = config;
+    s.hardware = &hardware;
+    m_state = tracker_state::detect;
+
+    const size_t frame_pixels = static_cast<size_t>(config.max_width) * config.max_height;
+    s.line_scratch = new rgb8[config.max_width];
+    for (auto& frame : s.right_history) frame = new uint8_t[frame_pixels];
+    s.left_gray = new uint8_t[frame_pixels];
+    // The size rule's region: a box of at most track.max_size, grown.
+    const int region_side = 3 * max_int(2, config.track.max_size);
+    const size_t region_pixels = static_cast<size_t>(region_side) * region_side;
+    s.size_mask = new uint8_t[region_pixels];
+    s.size_columns = new int32_t[region_side];
+    s.size_rows = new int32_t[region_side];
+    // The tracker never holds a pattern taller than track.max_size.
+    s.band_capacity_rows = min_int(config.track.max_size, config.max_height);
+    const size_t band_pixels = static_cast<size_t>(config.max_width) * (s.band_capacity_rows + 2);
+    s.edge_band_right = new uint8_t[band_pixels];
+    s.edge_band_left = new uint8_t[band_pixels];
+    std::memset(s.edge_band_right, 0, band_pixels);
+    std::memset(s.edge_band_left, 0, band_pixels);
+
+    s.detector.init(config.max_width, config.max_height);
+    s.tracker.init(config.track);
+
+    if (config.disparity_from_rig) {
+        const int64_t near_q8 = disparity_q8_at_depth(config.rig, config.min_depth_mm);
+        const int64_t far_q8 = disparity_q8_at_depth(config.rig, config.max_depth_mm);
+        const int max_d = static_cast<int>((near_q8 + 255) / 256) + config.disparity_margin_px;
+        const int min_d = max_int(0, static_cast<int>(far_q8 / 256) - config.disparity_margin_px);
+        s.config.stereo.min_disparity = min_d;
+        s.config.stereo.max_disparity = max_d;
+        s.config.edge.min_disparity = min_d;
+        s.config.edge.max_disparity = max_d;
+    }
+}
+
+const controller_config& controller::config() const {
+    return m_impl->config;
+}
+
+gray_cplane controller::gray_left() const {
+    if (!m_impl || m_impl->frames_in_history == 0) return gray_cplane{};
+    return m_impl->left();
+}
+
+gray_cplane controller::gray_right() const {
+    if (!m_impl || m_impl->frames_in_history == 0) return gray_cplane{};
+    return m_impl->history(0);
+}
+
+frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_right) {
+    frame_output out;
+    out.state = m_state;
+    if (!m_impl) {
+        out.accepted = false;
+        return out;
+    }
+    impl& s = *m_impl;
+    const controller_config& cfg = s.config;
+    out.frame_index = s.frame_index++;
+
+    const int w = raw_right.width, h = raw_right.height;
+    if (raw_left.width != w || raw_left.height != h || w > cfg.max_width || h > cfg.max_height ||
+        w < 4 || h < 4 || (w & 1) || (h & 1)) {
+        out.accepted = false;
+        return out;
+    }
+    if (w != s.width || h != s.height) {  // a new image size starts a new history
+        s.width = w;
+        s.height = h;
+        s.frames_in_history = 0;
+        m_state = tracker_state::detect;
+    }
+
+    s.preprocess(raw_left, raw_right, out);
+
+    bool has_object = false;
+    switch (m_state) {
+        case tracker_state::detect:
+            has_object = s.detect(out);
+            if (has_object) m_state = tracker_state::track;
+            break;
+        case tracker_state::track:
+            has_object = s.track(out);
+            if (!has_object) {
+                s.lost_pairs = 0;
+                m_state =
+                    cfg.lost_frames_to_detect > 0 ? tracker_state::lost : tracker_state::detect;
+            }
+            break;
+        case tracker_state::lost:
+            if (++s.lost_pairs >= cfg.lost_frames_to_detect) m_state = tracker_state::detect;
+            break;
+    }
+    out.state = m_state;
+    if (!has_object) return out;
+
+    out.has_object = true;
+    out.box_right = s.tracker.position();
+    s.stereo_sad(object_core(out.box_right), out);
+    s.stereo_edge(out.box_right, out);
+    if (s.choose_disparity(out)) s.xyz(out.box_right, out);
+    return out;
+}
+
+// Stage preprocess: both images to gray; the right one straight into the
+// history ring (the oldest frame is overwritten).
+void controller::impl::preprocess(gray_cplane raw_left, gray_cplane raw_right, frame_output& out) {
+    stage_scope scope(*hardware, stage::preprocess, out);
+    newest = (newest + 1) % history_frames;
+    out.gain_q8_right = preprocess_raw_to_gray(raw_right, config.cfa, config.brightness,
+                                               line_scratch, frame_plane(right_history[newest]))
+                            .gain_q8;
+    out.gain_q8_left = preprocess_raw_to_gray(raw_left, config.cfa, config.brightness, line_scratch,
+                                              frame_plane(left_gray))
+                           .gain_q8;
+    if (frames_in_history < history_frames) ++frames_in_history;
+    uint64_t per_image = cost::demosaic_gray_cycles(width, height, config.frame_memory);
+    if (config.brightness.enabled)
+        per_image += cost::brightness_cycles(width, height, config.frame_memory);
+    scope.charge(2 * per_image);
+}
+
+// Stage detect: three-frame differencing gives object(t-1) in the middle
+// frame; the tracker takes the pattern there and finds it in the newest
+// frame, so the track starts at the current frame's position.
+bool controller::impl::detect(frame_output& out) {
+    if (frames_in_history < history_frames) return false;
+    stage_scope scope(*hardware, stage::detect, out);
+    const detection found = detector.detect(history(2), history(1), history(0), config.detect);
+    const int morphology_passes = 2 * (config.detect.open_passes + config.detect.close_passes);
+    scope.charge(
+        cost::three_frame_difference_cycles(width, height, config.frame_memory) +
+        cost::morphology_cycles(width, height, morphology_passes) +
+        cost::connected_components_cycles(width, height, detector.last_foreground_pixels()));
+    if (!found.found) return false;
+    out.motion_found = true;
+    out.motion_box = found.bbox;
+    // An object cut by the image border is not started: its box would hold
+    // mostly background (a 5 px sliver of the ball grew to an 8 px box that
+    // then "tracked" the static background for good), and stereo needs the
+    // object whole. It is detected again once wholly inside. The closing
+    // clears the outermost close_passes rows and columns, so the border
+    // band is one wider than that.
+    const int border = config.detect.close_passes + 1;
+    const box& b = found.bbox;
+    if (b.x <= border || b.y <= border || b.right() >= width - border ||
+        b.bottom() >= height - border) {
+        out.detection_at_border = true;
+        return false;
+    }
+
+    tracker.start(history(1), found.bbox);
+    const gray_cplane pattern = tracker.pattern();
+    const int pattern_w = pattern.width, pattern_h = pattern.height;
+    // The size came from object(t-1); update() only finds the position.
+    const track_status status = tracker.update(history(0));
+    scope.charge(cost::pattern_copy_cycles(pattern_w, pattern_h) +
+                 cost::sad_search_cycles(pattern_w, pattern_h, tracker.last_match().positions) +
+                 cost::pattern_copy_cycles(tracker.pattern().width, tracker.pattern().height));
+    out.detected = status == track_status::tracking;
+    return out.detected;
+}
+
+// Stage track: SAD search around the last position (the tracker keeps the
+// size), then the size rule of dsp/tracker.h, applied here with a correctly
+// aligned mask: the three-frame mask is object(t-1), the object where it was
+// at t-1, i.e. around the LAST box, while sad_tracker's own rule looks for it
+// around the NEW box, one frame of motion away (at 15 px per frame that
+// shrank the box to a third of the ball). The resized box is handed back to
+// the tracker with start(), which re-takes the pattern there.
+bool controller::impl::track(frame_output& out) {
+    stage_scope scope(*hardware, stage::track, out);
+    const box last = tracker.position();
+    const track_status status = tracker.update(history(0));
+    scope.charge(cost::sad_search_cycles(last.width, last.height, tracker.last_match().positions));
+    if (status != track_status::tracking) return false;
+    scope.charge(cost::pattern_copy_cycles(last.width, last.height));
+
+    uint64_t cycles = 0;
+    const box found = tracker.position();
+    const box resized = refit_box(last, found, &cycles);
+    scope.charge(cycles);
+    if (resized.x != found.x || resized.y != found.y || resized.width != found.width ||
+        resized.height != found.height) {
+        tracker.start(history(0), resized);
+        scope.charge(cost::pattern_copy_cycles(resized.width, resized.height));
+    }
+    return true;
+}
+
+// object(t-1) = three-frame mask over the region around `last`; its extent
+// per axis comes from its row / column projections. If it covers at least
+// 1/8 of the last box, the box found by
+// SAD is refitted per axis (refit_axis): its size follows the object's, and
+// its centre is pulled towards the object's. The pull is what keeps the box
+// on the object: re-taking the pattern at an integer position every frame
+// makes the box drift by the rounding of the object's motion (0.3 px per
+// frame at 0.7 px/frame, measured 9 px after 30 frames without it). Too few
+// moving pixels (the object stopped): the SAD box is kept.
+box controller::impl::refit_box(box last, box found, uint64_t* cycles) {
+    const box region = size_rule_region(last, width, height);
+    const gray_plane mask{size_mask, region.width, region.height, region.width};
+    auto in_region = [&](gray_cplane frame) {
+        return frame.sub(region.x, region.y, region.width, region.height);
+    };
+    three_frame_difference(in_region(history(2)), in_region(history(1)), in_region(history(0)),
+                           config.detect.threshold, mask);
+    // Projections instead of an opening: an opening (as the detector uses)
+    // erases the thin crescents the object's slowly moving sides leave in the
+    // mask, and measured boxes 30-40 % narrower than the ball; a column or
+    // row counts as the object's only with >= 2 set pixels, so a lone
+    // noise pixel does not stretch the box.
+    std::memset(size_columns, 0, sizeof(int32_t) * region.width);
+    int count = 0;
+    for (int y = 0; y < region.height; ++y) {
+        const uint8_t* row = mask.row(y);
+        int in_row = 0;
+        for (int x = 0; x < region.width; ++x) {
+            const int set = row[x] ? 1 : 0;
+            size_columns[x] += set;
+            in_row += set;
+        }
+        size_rows[y] = in_row;
+        count += in_row;
+    }
+    int min_x = 0, max_x = region.width - 1, min_y = 0, max_y = region.height - 1;
+    while (min_x < max_x && size_columns[min_x] < 2) ++min_x;
+    while (max_x > min_x && size_columns[max_x] < 2) --max_x;
+    while (min_y < max_y && size_rows[min_y] < 2) ++min_y;
+    while (max_y > min_y && size_rows[max_y] < 2) --max_y;
+    // The projection pass (column and row sums, SIMD-able) is modelled as two
+    // copies of the region (~area / 8 cycles each): an estimate, no kernel
+    // formula of its own.
+    *cycles =
+        cost::three_frame_difference_cycles(region.width, region.height, config.frame_memory) +
+        2 * cost::pattern_copy_cycles(region.width, region.height);
+    if (count * 8 < last.width * last.height) return found;
+
+    const track_params& p = config.track;
+    box resized;
+    refit_axis(found.x, found.width, last.x, last.width, region.x + min_x, max_x - min_x + 1,
+               p.min_size, p.max_size, width, &resized.x, &resized.width);
+    refit_axis(found.y, found.height, last.y, last.height, region.y + min_y, max_y - min_y + 1,
+               p.min_size, p.max_size, height, &resized.y, &resized.height);
+    return resized;
+}
+
+// Stage stereo_sad: the right pattern along the same rows (+-row_slack) of
+// the left image.
+void controller::impl::stereo_sad(box object, frame_output& out) {
+    stage_scope scope(*hardware, stage::stereo_sad, out);
+    out.sad_match = stereo_match_sad(history(0), left(), object, config.stereo);
+    out.sad_at_range_end = at_range_end(out.sad_match, object, config.stereo.min_disparity,
+                                        config.stereo.max_disparity, width);
+    scope.charge(cost::sad_search_cycles(object.width, object.height, out.sad_match.positions));
+    if (config.stereo.subpixel && out.sad_match.valid) scope.charge(cost::subpixel_cycles());
+}
+
+// Stage stereo_edge: Sobel on a band of the pattern's rows of both images
+// (one extra input row each side for the 3x3), then segment matching. The
+// band planes have their own row numbering, so the pattern's rows are shifted
+// by the band's first row; columns, and so disparities, are unchanged.
+void controller::impl::stereo_edge(box object, frame_output& out) {
+    stage_scope scope(*hardware, stage::stereo_edge, out);
+    box pattern = object;
+    if (pattern.height > band_capacity_rows) {  // keep the central rows
+        pattern.y += (pattern.height - band_capacity_rows) / 2;
+        pattern.height = band_capacity_rows;
+    }
+    const int in_y0 = max_int(0, pattern.y - 1);
+    const int in_rows = min_int(height, pattern.bottom() + 1) - in_y0;
+    const gray_plane right_band{edge_band_right, width, in_rows, width};
+    const gray_plane left_band{edge_band_left, width, in_rows, width};
+    const int out_y0 = pattern.y - in_y0, out_y1 = out_y0 + pattern.height;
+    // At the image's top or bottom row the band's edge is the image's edge,
+    // where sobel_3x3 also writes 0: the band equals the whole-image Sobel.
+    sobel_3x3_rows(history(0).sub(0, in_y0, width, in_rows), out_y0, out_y1, right_band);
+    sobel_3x3_rows(left().sub(0, in_y0, width, in_rows), out_y0, out_y1, left_band);
+    box band_pattern = pattern;
+    band_pattern.y = out_y0;
+    out.edge_match =
+        stereo_match_edge(right_band.as_const(), left_band.as_const(), band_pattern, config.edge);
+    out.edge_at_range_end = at_range_end(out.edge_match, object, config.edge.min_disparity,
+                                         config.edge.max_disparity, width);
+    scope.charge(2 * cost::sobel_cycles(width, pattern.height) +
+                 cost::edge_match_cycles(width, config.edge.lines, config.edge.max_disparity,
+                                         config.edge.min_disparity));
+}
+
+bool controller::impl::choose_disparity(frame_output& out) const {
+    const bool sad_ok = out.sad_match.valid && !out.sad_at_range_end;
+    const bool edge_ok = out.edge_match.valid && !out.edge_at_range_end;
+    bool ok = false;
+    switch (config.method) {
+        case stereo_method::sad:
+            ok = sad_ok;
+            out.disparity_q8 = out.sad_match.disparity_q8;
+            break;
+        case stereo_method::edge:
+            ok = edge_ok;
+            out.disparity_q8 = out.edge_match.disparity_q8;
+            break;
+        case stereo_method::both:
+            ok = sad_ok || edge_ok;
+            if (sad_ok && edge_ok) {
+                out.disparity_q8 = (out.sad_match.disparity_q8 + out.edge_match.disparity_q8) / 2;
+            } else {
+                out.disparity_q8 =
+                    sad_ok ? out.sad_match.disparity_q8 : out.edge_match.disparity_q8;
+            }
+            break;
+    }
+    if (!ok) return false;
+    out.box_left = out.box_right;
+    out.box_left.x += (out.disparity_q8 + 128) >> 8;
+    if (config.method == stereo_method::sad) out.box_left.y += out.sad_match.dy;
+    return true;
+}
+
+// Stage xyz: the box centre (Q8, from the exact Q1 centre) and the chosen
+// disparity.
+void controller::impl::xyz(box object, frame_output& out) {
+    stage_scope scope(*hardware, stage::xyz, out);
+    out.has_point = triangulate(config.rig, object.center_x2() * 128, object.center_y2() * 128,
+                                out.disparity_q8, &out.point);
+    scope.charge(cost::triangulate_cycles());
+}
+
+}  // namespace dsp

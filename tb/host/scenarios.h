@@ -1,0 +1,44 @@
+// Stereo scenarios for the firmware's end-to-end tests, benchmarks and the
+// demo, beside scene::default_scenario (a thrown, bouncing ball at
+// 2.6 m -> 1.6 m). All use the default rig and the procedural background at
+// 5 m; one 5 cm ball. Frame n is taken at n * 24.5 ms.
+#pragma once
+
+#include "model/scene/sequence.h"
+
+namespace host {
+
+// The ball rests at (-0.3, 0, 2.6) m for every frame: nothing moves.
+scene::scenario static_scenario(int frames = 40);
+
+// The ball still for still_frames frames, then circling in the plane
+// Z = depth_m around the optical axis, radius 0.15 * depth_m (118 px in the
+// image) at 0.41 * depth_m m/s (8 px per frame at any depth). With depth_m at
+// 1 and 3 it puts the ball at both ends of DESIGN.md's 1-3 m accuracy range.
+scene::scenario circling_scenario(double depth_m, int still_frames = 4, int frames = 40);
+
+// The ball circles in the plane Z = 2.5 m, centre (0.7, 0, 2.5) m, radius
+// 0.5 m, at 1.2 m/s (~9 px per frame), starting at its leftmost point after
+// still_frames frames and going up. Its image leaves the right edge of the
+// view and comes back: see exit_return_timing() for when.
+scene::scenario exit_return_scenario(int still_frames = 4);
+
+// Frame indices of exit_return_scenario(still_frames), from the scene's
+// closed-form ellipse: the last frame fully inside the image before the
+// exit, the first frame with no pixel in the image, the last such frame,
+// and the first frame fully inside again.
+struct exit_return_frames {
+    int last_inside = -1;
+    int first_outside = -1;
+    int last_outside = -1;
+    int first_inside_again = -1;
+};
+exit_return_frames exit_return_timing(const scene::sequence& sequence, int frames);
+
+// The ball still (no motion at all) while the global light changes at
+// change_frame: a step of the gain to `gain`, or, with ramp_frames > 0, a
+// linear ramp to `gain` over ramp_frames frame periods (a lamp dimming).
+scene::scenario lighting_change_scenario(int change_frame, double gain, int ramp_frames,
+                                         int frames = 24);
+
+}  // namespace host
