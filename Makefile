@@ -31,7 +31,7 @@ demo: build
 	$(BUILD)/stereosim_host_demo --out out/demo
 
 # The CI's sanitizer pass: the dsp layer (and, once they exist, a short system scenario).
-SAN_LABELS ?= dsp|scene|rtl
+SAN_LABELS ?= dsp|scene|model|rtl
 test-sanitize: deps
 	cmake -S . -B $(BUILD_SAN) $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=Debug -DSTEREOSIM_SANITIZE=ON
 	cmake --build $(BUILD_SAN) -j $(JOBS)
@@ -53,3 +53,15 @@ format:
 
 clean:
 	rm -rf $(BUILD) $(BUILD_SAN) $(BUILD_BENCH)
+
+# Line and toggle coverage of the card RTL by the rtl tests (verilator
+# --coverage-line --coverage-toggle in a separate build directory, so normal
+# builds stay fast); prints the line coverage and fails below 90%.
+BUILD_COV ?= build-coverage-rtl
+.PHONY: coverage-rtl
+coverage-rtl: deps
+	cmake -S . -B $(BUILD_COV) $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSTEREOSIM_RTL_COVERAGE=ON
+	cmake --build $(BUILD_COV) -j $(JOBS) --target rtl_tests
+	rm -rf $(BUILD_COV)/coverage-rtl
+	cd $(BUILD_COV) && ctest --output-on-failure -j $(JOBS) -L rtl
+	bash rtl/coverage_report.sh $(BUILD_COV)/coverage-rtl 90
