@@ -1,0 +1,225 @@
+// The TMS320C6416 as a loosely-timed SystemC / TLM-2.0 model (docs/c6416.md).
+//
+// What it holds: the CPU (a thread that runs the firmware natively through
+// dsp::hal), 1 MB L2 SRAM at 0x00000000, the DSK's 16 MB SDRAM storage for
+// EMIFA CE0 (0x80000000), the EMIFA control registers, the interrupt
+// selector, the EDMA (channel controller + one transfer controller) and
+// timers 0-2, at their data-sheet addresses (dsp/c6416_regs.h).
+//
+// Ports and sockets (named after the pins / roles):
+//   ext_int4..7  bool signal inputs: the EXT_INT pins (J3), each may stay
+//                unbound (low). An active edge (EXTPOL)
+//                sets the IFR bit of every CPU interrupt the selector routes
+//                GPINT4..7 to, and the EDMA event of channel 4..7.
+//   emifa_cpu    TLM initiator: CPU accesses to EMIFA CE0-CE3
+//                (0x80000000-0xBFFFFFFF), one b_transport per 32-bit word;
+//                bind to the EMIF target's `cpu` socket.
+//   emifa_edma   TLM initiator: EDMA accesses to EMIFA, one b_transport per
+//                array (a burst: streaming width = its length, or the element
+//                size for a fixed address such as a FIFO port); bind to the
+//                EMIF target's `edma` socket.
+//   The caller waits the delay b_transport returns; a target may also
+//   consume time inside b_transport (the EMIF does). Sockets may stay
+//   unbound where nothing uses them.
+// The SDRAM's bytes live here (sdram_storage()); the EMIF model reads and
+// writes them for CE0 accesses (emif_async_master::set_sdram_storage). With
+// config.sdram_over_emifa = false the C6416 serves CE0 itself in zero time.
+// EMIFA control register writes (CECTLn ...) reach the EMIF model through
+// set_emifa_register_observer (-> emif_async_master::set_cectl).
+//
+// Time: the CPU clock is a simtime::tick_clock of the DSK profile's period.
+// charge_cycles(n) waits from the CPU edge at or after now to the edge n
+// cycles later, each edge placed at to_fs(its exact tick): no rounded period
+// is ever accumulated. The SystemC time resolution must be 1 fs
+// (tb/sc_test_main.cpp).
+// "CPU too slow" fault: set_cycle_scale(num, den, from): cycles charged
+// after `from` are multiplied by num / den (rounded up).
+#pragma once
+
+#include <tlm_utils/simple_initiator_socket.h>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <systemc>
+#include <tlm>
+#include <vector>
+
+#include "dsp/hal.h"
+#include "dsp/stage.h"
+#include "model/c6416/dsk_profile.h"
+#include "model/c6416/edma_core.h"
+#include "model/c6416/interrupt_selector.h"
+#include "model/c6416/timer_unit.h"
+#include "model/time/ticks.h"
+
+namespace c6416 {
+
+struct c6416_config {
+    dsk_profile dsk = dsk_v1();
+    // CE0 (SDRAM) accesses go out on emifa_cpu / emifa_edma (true) or are
+    // served locally in zero time (false: no EMIF model, e.g. unit tests).
+    bool sdram_over_emifa = true;
+    // CPU cycles one access to a C6416 peripheral register costs (ASSUMED 0:
+    // the C64x peripheral bus latency was not at hand).
+    uint32_t peripheral_access_cycles = 0;
+    // Stack of the CPU thread that runs the firmware (DESIGN.md, "Known traps").
+    std::size_t cpu_stack_bytes = std::size_t{64} << 20;
+    // sc_stop() when the firmware's entry returns.
+    bool stop_when_firmware_returns = false;
+};
+
+// A firmware report with its simulated time.
+struct timed_event {
+    sc_core::sc_time time;
+    dsp::event_record event;
+};
+
+class c6416_sc : public sc_core::sc_module {
+  public:
+    // An input pin that may stay unbound (reads low): the card drives 4-6 only.
+    using pin_in =
+        sc_core::sc_port<sc_core::sc_signal_in_if<bool>, 1, sc_core::SC_ZERO_OR_MORE_BOUND>;
+    pin_in ext_int4;
+    pin_in ext_int5;
+    pin_in ext_int6;
+    pin_in ext_int7;
+    tlm_utils::simple_initiator_socket_optional<c6416_sc> emifa_cpu;
+    tlm_utils::simple_initiator_socket_optional<c6416_sc> emifa_edma;
+
+    using firmware_entry = std::function<void(dsp::hal&)>;
+    using event_observer = std::function<void(const timed_event&)>;
+    using result_observer = std::function<void(const sc_core::sc_time&, const dsp::frame_output&)>;
+    using stage_observer = std::function<void(const sc_core::sc_time&, dsp::stage, bool begin)>;
+    using register_observer = std::function<void(uint32_t address, uint32_t value)>;
+
+    SC_HAS_PROCESS(c6416_sc);
+    c6416_sc(sc_core::sc_module_name name, const c6416_config& config = {});
+    ~c6416_sc() override;
+
+    // What the CPU runs (from time 0). Without one the CPU stays idle.
+    void set_firmware(firmware_entry entry) { m_firmware = std::move(entry); }
+    void set_cycle_scale(uint32_t num, uint32_t den, const sc_core::sc_time& from);
+    // The firmware's stop_requested() turns true; wait_for_interrupt returns.
+    void request_stop();
+    bool firmware_returned() const { return m_firmware_returned; }
+    const sc_core::sc_event& firmware_returned_event() const { return m_firmware_returned_event; }
+
+    void set_event_observer(event_observer f) { m_event_observer = std::move(f); }
+    void set_result_observer(result_observer f) { m_result_observer = std::move(f); }
+    void set_stage_observer(stage_observer f) { m_stage_observer = std::move(f); }
+    // Every write to an EMIFA control register (GBLCTL, CECTLn, SDCTL, ...):
+    // the EMIF model takes its timing from them.
+    void set_emifa_register_observer(register_observer f) { m_emifa_observer = std::move(f); }
+
+    // ---- inspection (tests, platform) -----------------------------------------------------
+    const c6416_config& config() const { return m_config; }
+    const simtime::tick_clock& cpu_clock() const { return m_cpu_clock; }
+    // The CPU cycle (edge index) at or after t, and the time of edge k.
+    uint64_t cpu_cycle_at_or_after(const sc_core::sc_time& t) const;
+    sc_core::sc_time time_of_cpu_cycle(uint64_t k) const;
+    // Modelled memory (L2 or SDRAM), nullptr outside it.
+    uint8_t* memory(uint32_t address, uint32_t bytes);
+    uint8_t* sdram_storage() { return m_sdram.data(); }
+    std::size_t sdram_storage_bytes() const { return m_sdram.size(); }
+    // A C6416 register (EMIFA, selector, EDMA, timers), no time, no side effect.
+    uint32_t peek_register(uint32_t address);
+    uint32_t ifr() const { return m_ifr; }
+    uint32_t ier() const { return m_ier; }
+    edma_core& edma() { return m_edma; }
+    const interrupt_selector& selector() const { return m_selector; }
+    const std::vector<timed_event>& events() const { return m_events; }
+
+    // ---- statistics ------------------------------------------------------------------------
+    uint64_t charged_cycles(dsp::stage s) const { return m_stage_cycles[static_cast<int>(s)]; }
+    uint64_t charged_cycles_total() const;
+    sc_core::sc_time cpu_busy_time() const { return m_cpu_busy; }      // charge_cycles
+    sc_core::sc_time cpu_bus_stall_time() const { return m_cpu_bus; }  // CPU EMIFA accesses
+    sc_core::sc_time edma_busy_time() const { return m_edma_busy; }
+    uint64_t edma_bytes() const { return m_edma_bytes; }
+    uint64_t bus_errors() const { return m_bus_errors; }
+
+  private:
+    class firmware_hal;
+
+    // Processes.
+    void cpu_thread();
+    void edma_thread();
+    void ext_int_method();
+    void timer_method();
+
+    // CPU side (called on the CPU thread through firmware_hal).
+    void charge(dsp::stage s, uint64_t cycles);
+    void wait_cpu_cycles(uint64_t cycles);
+    uint32_t cpu_read32(uint32_t address);
+    void cpu_write32(uint32_t address, uint32_t value);
+    int wait_for_interrupt();
+    void report(const dsp::event_record& e);
+
+    // Registers.
+    bool is_peripheral(uint32_t address) const;
+    uint32_t register_read(uint32_t address);
+    void register_write(uint32_t address, uint32_t value);
+    bool emifa_register_index(uint32_t address, int& index) const;
+
+    // Events and interrupts.
+    void raise_interrupt_event(uint32_t selector_code);
+    void after_edma_change();
+    void reschedule_timer(int n);
+    void arm_timer_event();
+
+    // Transfers.
+    void execute(const transfer_request& r);
+    void read_run(uint32_t address, int64_t step, uint32_t elements, uint32_t element_bytes,
+                  uint8_t* out);
+    void write_run(uint32_t address, int64_t step, uint32_t elements, uint32_t element_bytes,
+                   const uint8_t* in);
+    void bus_access(tlm_utils::simple_initiator_socket_optional<c6416_sc>& socket,
+                    tlm::tlm_command command, uint32_t address, uint8_t* data, uint32_t length,
+                    uint32_t streaming_width);
+    bool local_memory(uint32_t address) const;
+
+    c6416_config m_config;
+    simtime::tick_clock m_cpu_clock;
+    std::unique_ptr<firmware_hal> m_hal;
+    firmware_entry m_firmware;
+
+    std::vector<uint8_t> m_l2;
+    std::vector<uint8_t> m_sdram;
+    uint32_t m_emifa_regs[dsp::c6416::emifa::block_bytes / 4] = {};
+    interrupt_selector m_selector;
+    edma_core m_edma;
+    timer_unit m_timers[3];
+    uint64_t m_timer_next[3] = {timer_unit::never, timer_unit::never, timer_unit::never};
+    sc_core::sc_event m_timer_event;
+    sc_core::sc_event m_edma_kick;
+    sc_core::sc_event m_irq_event;
+    std::vector<uint8_t> m_staging;
+
+    uint32_t m_ifr = 0;
+    uint32_t m_ier = 0;
+    bool m_ext_level[4] = {};
+    bool m_pins_sampled = false;
+    bool m_stop = false;
+    bool m_firmware_returned = false;
+    sc_core::sc_event m_firmware_returned_event;
+
+    uint32_t m_scale_num = 1, m_scale_den = 1;
+    sc_core::sc_time m_scale_from;
+
+    event_observer m_event_observer;
+    result_observer m_result_observer;
+    stage_observer m_stage_observer;
+    register_observer m_emifa_observer;
+    std::vector<timed_event> m_events;
+
+    uint64_t m_stage_cycles[dsp::stage_count] = {};
+    sc_core::sc_time m_cpu_busy, m_cpu_bus, m_edma_busy;
+    uint64_t m_edma_bytes = 0;
+    uint64_t m_bus_errors = 0;
+};
+
+// Ticks (1/18 ns) of the earliest tick whose femtosecond time is >= fs.
+simtime::ticks ticks_at_or_after_fs(int64_t fs);
+
+}  // namespace c6416
