@@ -1,0 +1,249 @@
+#include "tb/platform/budget.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace platform {
+
+const char* resource_name(resource r) {
+    switch (r) {
+        case resource::cpu:
+            return "cpu";
+        case resource::emif:
+            return "emif";
+        case resource::fifo:
+            return "fifo";
+        case resource::pair_buffers:
+            return "pair_buffers";
+    }
+    return "?";
+}
+
+std::string overrun::describe() const {
+    char text[200];
+    if (what == resource::pair_buffers) {
+        std::snprintf(
+            text, sizeof text,
+            "pair_buffers over budget in period %d: pair %u was dropped (ready while stage "
+            "%s ran, no pair buffer free)",
+            period, pair, dsp::stage_name(stage));
+    } else if (what == resource::fifo) {
+        std::snprintf(text, sizeof text,
+                      "fifo over budget in period %d: a card FIFO overflowed (stage %s)", period,
+                      dsp::stage_name(stage));
+    } else if (period >= 0) {
+        std::snprintf(text, sizeof text,
+                      "%s over budget in period %d (stage %s): %.3f ms of %.3f ms",
+                      resource_name(what), period, dsp::stage_name(stage), value_ms, limit_ms);
+    } else {
+        std::snprintf(text, sizeof text, "%s over budget for pair %u (stage %s): %.3f ms > %.3f ms",
+                      resource_name(what), pair, dsp::stage_name(stage), value_ms, limit_ms);
+    }
+    return text;
+}
+
+const overrun* budget_report::first(resource r) const {
+    for (const overrun& o : overruns)
+        if (o.what == r) return &o;
+    return nullptr;
+}
+
+namespace {
+
+double ticks_to_ms(simtime::ticks t) {
+    return static_cast<double>(t) / (static_cast<double>(simtime::ticks_per_ns) * 1e6);
+}
+
+simtime::ticks overlap(simtime::ticks a0, simtime::ticks a1, simtime::ticks b0, simtime::ticks b1) {
+    const simtime::ticks lo = std::max(a0, b0), hi = std::min(a1, b1);
+    return hi > lo ? hi - lo : 0;
+}
+
+// The stage the CPU was in at tick t: the charge covering it, else the last
+// one before it.
+dsp::stage stage_at(const std::vector<charge_record>& charges, simtime::ticks t) {
+    dsp::stage s = dsp::stage::capture;
+    for (const charge_record& c : charges) {
+        if (c.begin > t) break;
+        s = c.stage;
+        if (c.end > t) break;
+    }
+    return s;
+}
+
+int largest(const double* ms) {
+    int best = 0;
+    for (int i = 1; i < dsp::stage_count; ++i)
+        if (ms[i] > ms[best]) best = i;
+    return best;
+}
+
+// A period or a pair saturates a resource when it is busy all of it (to
+// a nanosecond of rounding).
+constexpr double saturated_slack_ms = 1e-6;
+
+}  // namespace
+
+budget_report check_budget(const platform_top& top, const scoreboard_report& score) {
+    budget_report b;
+    const platform_config& config = top.config();
+    const island& isl = top.cycle_island();
+    const probe_hal& probe = top.probe();
+    b.period_ms = ticks_to_ms(config.period);
+    b.cpu_hz = static_cast<double>(config.dsk.cpu_hz);
+    const double eclk_ns = static_cast<double>(top.engine().config().eclk.period_num()) /
+                           static_cast<double>(top.engine().config().eclk.period_den()) /
+                           simtime::ticks_per_ns;
+    const simtime::ticks steady_from = score.first_in_step_ready;
+    const simtime::ticks run_end = top.end_tick();
+    const auto cycles_ms = [&](uint64_t cycles) {
+        return 1e3 * static_cast<double>(cycles) / b.cpu_hz;
+    };
+
+    // ---- per period ----------------------------------------------------------------------
+    const std::vector<period_sample>& samples = isl.periods();
+    for (size_t k = 0; k < samples.size(); ++k) {
+        period_budget p;
+        p.index = static_cast<int>(k);
+        p.begin = config.period * static_cast<simtime::ticks>(k);
+        p.end = p.begin + config.period;
+        p.judged = steady_from >= 0 && p.begin >= steady_from && p.end <= run_end;
+        simtime::ticks asleep = 0;
+        for (const tick_interval& s : probe.sleeps())
+            asleep += overlap(s.begin, s.end, p.begin, p.end);
+        if (probe.asleep_since() >= 0)
+            asleep += overlap(probe.asleep_since(), run_end, p.begin, p.end);
+        p.cpu_busy_ms = ticks_to_ms(config.period - asleep);
+        p.emif_busy_ms = 1e-6 * eclk_ns * static_cast<double>(samples[k].emif_busy_edges);
+        for (int c = 0; c < 2; ++c) p.fifo_peak_words[c] = samples[k].fifo_peak_words[c];
+        p.overflow = samples[k].fifo_overflow[0] || samples[k].fifo_overflow[1];
+        for (const charge_record& c : probe.charges())
+            p.stage_ms[static_cast<int>(c.stage)] +=
+                ticks_to_ms(overlap(c.begin, c.end, p.begin, p.end));
+        b.periods.push_back(p);
+    }
+    // Drops, by the period their FRAME_READY came in.
+    const std::vector<simtime::ticks>& ready = isl.irq_rises(0);
+    for (const fw_event& e : probe.fw_events()) {
+        if (e.event.kind != dsp::firmware_event::pair_dropped) continue;
+        for (uint32_t n = e.event.pair - e.event.value; n < e.event.pair; ++n) {
+            if (n == 0 || n > ready.size()) continue;
+            const simtime::ticks t = ready[n - 1];
+            const size_t k = static_cast<size_t>(t / config.period);
+            ++b.drops;
+            if (k >= b.periods.size()) continue;
+            ++b.periods[k].drops;
+            if (b.periods[k].judged) {
+                overrun o;
+                o.what = resource::pair_buffers;
+                o.stage = stage_at(probe.charges(), t);
+                o.period = static_cast<int>(k);
+                o.pair = n;
+                b.overruns.push_back(o);
+            }
+        }
+    }
+
+    for (period_budget& p : b.periods) {
+        for (int c = 0; c < 2; ++c)
+            b.fifo_peak_words[c] = std::max(b.fifo_peak_words[c], p.fifo_peak_words[c]);
+        b.overflows += p.overflow;
+        if (!p.judged) continue;
+        ++b.judged_periods;
+        b.max_cpu_busy_ms = std::max(b.max_cpu_busy_ms, p.cpu_busy_ms);
+        b.max_emif_busy_ms = std::max(b.max_emif_busy_ms, p.emif_busy_ms);
+        if (p.cpu_busy_ms >= b.period_ms - saturated_slack_ms) {
+            overrun o;
+            o.what = resource::cpu;
+            o.stage = static_cast<dsp::stage>(largest(p.stage_ms));
+            o.period = p.index;
+            o.value_ms = p.cpu_busy_ms;
+            o.limit_ms = b.period_ms;
+            b.overruns.push_back(o);
+        }
+        if (p.emif_busy_ms >= b.period_ms - saturated_slack_ms) {
+            overrun o;
+            o.what = resource::emif;
+            o.period = p.index;
+            o.value_ms = p.emif_busy_ms;
+            o.limit_ms = b.period_ms;
+            b.overruns.push_back(o);
+        }
+        if (p.overflow) {
+            overrun o;
+            o.what = resource::fifo;
+            o.period = p.index;
+            b.overruns.push_back(o);
+        }
+    }
+
+    // ---- per pair ----------------------------------------------------------------------------
+    const std::vector<simtime::ticks>& edma = isl.edma_completions();
+    int captures = 0;
+    double capture_sum = 0.0;
+    int processed = 0;
+    double stage_sum[dsp::stage_count] = {};
+    for (const pair_check& pc : score.pairs) {
+        pair_budget pb;
+        pb.pair = pc.pair;
+        pb.judged = steady_from >= 0 && pc.ready >= steady_from;
+        const simtime::ticks next = pc.pair < ready.size() ? ready[pc.pair] : run_end;
+        simtime::ticks last = -1;
+        for (simtime::ticks t : edma)
+            if (t > pc.ready && t <= next) last = t;
+        bool chain_done = last >= 0;
+        if (pc.pair >= ready.size()) {
+            // The run's last pair: its chain may still be running at the end.
+            chain_done = chain_done && pc.processed;
+        }
+        if (chain_done) pb.capture_ms = ticks_to_ms(last - pc.ready);
+        if (pc.processed) {
+            pb.processed = true;
+            const dsp::frame_output& out = pc.record.out;
+            for (int s = 0; s < dsp::stage_count; ++s)
+                pb.stage_ms[s] = cycles_ms(out.stage_cycles[s]);
+            pb.stage_ms[static_cast<int>(dsp::stage::capture)] += cycles_ms(config.capture_cycles);
+            for (int s = 0; s < dsp::stage_count; ++s) pb.processing_ms += pb.stage_ms[s];
+            pb.latency_ms = pc.latency_ms;
+            ++processed;
+            for (int s = 0; s < dsp::stage_count; ++s) {
+                stage_sum[s] += pb.stage_ms[s];
+                b.stage_ms_max[s] = std::max(b.stage_ms_max[s], pb.stage_ms[s]);
+            }
+            b.max_processing_ms = std::max(b.max_processing_ms, pb.processing_ms);
+            b.latency_ms_max = std::max(b.latency_ms_max, pb.latency_ms);
+        }
+        if (pb.judged && chain_done) {
+            ++captures;
+            capture_sum += pb.capture_ms;
+            b.max_capture_ms = std::max(b.max_capture_ms, pb.capture_ms);
+            if (pb.capture_ms > b.period_ms) {
+                overrun o;
+                o.what = resource::emif;
+                o.pair = pb.pair;
+                o.value_ms = pb.capture_ms;
+                o.limit_ms = b.period_ms;
+                b.overruns.push_back(o);
+            }
+        }
+        if (pb.judged && pb.processed && pb.processing_ms > b.period_ms) {
+            overrun o;
+            o.what = resource::cpu;
+            o.stage = static_cast<dsp::stage>(largest(pb.stage_ms));
+            o.pair = pb.pair;
+            o.value_ms = pb.processing_ms;
+            o.limit_ms = b.period_ms;
+            b.overruns.push_back(o);
+        }
+        b.pairs.push_back(pb);
+    }
+    if (captures > 0) b.mean_capture_ms = capture_sum / captures;
+    for (int s = 0; s < dsp::stage_count; ++s) {
+        if (processed > 0) b.stage_ms_mean[s] = stage_sum[s] / processed;
+        b.stage_cycles_total[s] = probe.stage_cycles(static_cast<dsp::stage>(s));
+    }
+    b.fits = b.judged_periods > 0 && b.overruns.empty();
+    return b;
+}
+
+}  // namespace platform

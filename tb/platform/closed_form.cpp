@@ -1,0 +1,66 @@
+#include "tb/platform/closed_form.h"
+
+#include <algorithm>
+
+#include "model/emif/cectl.h"
+
+namespace platform {
+
+readout_figures readout(const sensor::sensor_profile& p) {
+    readout_figures r;
+    const int64_t line = p.line_pclks;
+    const int64_t first_row = p.first_row_line + p.active_row0();
+    const int64_t first_col = p.href_start + p.active_col0();
+    r.first_active_pclk = first_row * line + first_col;
+    r.last_active_pclk = (first_row + p.active_rows - 1) * line + first_col + p.active_cols - 1;
+    r.frame_pclks = p.frame_pclks();
+    const simtime::rational_ticks period = p.pclk_period();
+    r.pclk_ns = static_cast<double>(period.num) / static_cast<double>(period.den) /
+                static_cast<double>(simtime::ticks_per_ns);
+    return r;
+}
+
+capture_figures capture(int cols, int rows, uint32_t card_cectl, const emif::emif_config& emif) {
+    capture_figures c;
+    const emif::async_timing card = emif::decode_cectl(card_cectl);
+    const uint64_t ta = card.turnaround;  // CE2/CE3 <-> CE0 and back: the async space's TA
+    const uint64_t words_per_line = static_cast<uint64_t>(cols) / 4;
+    const emif::sdram_timing& sd = emif.sdram;
+    // An SDRAM burst: one row access, then 2 words per ECLK (64-bit bus);
+    // the chunks of one burst follow each other with the row open.
+    const auto sdram_write = [&](uint64_t words) { return sd.access_cycles + (words + 1) / 2; };
+    const uint64_t status_words = 5;  // VERDICT .. PAIRS_OK
+    c.header_eclk = status_words * card.read_cycles() + ta + sdram_write(status_words);
+    c.line_eclk = ta + words_per_line * card.read_cycles() + ta + sdram_write(words_per_line);
+    c.pair_eclk = c.header_eclk + 2 * static_cast<uint64_t>(rows) * c.line_eclk;
+    // Refresh: one every refresh_period ECLK. Inside a card burst it costs
+    // TA + refresh + TA, next to SDRAM data only the refresh (docs/emif.md).
+    const double async_share =
+        static_cast<double>(words_per_line * card.read_cycles()) / static_cast<double>(c.line_eclk);
+    if (sd.refresh_period > 0) {
+        const double cost = sd.refresh_cycles + 2.0 * ta * async_share;
+        c.refresh_fraction = cost / (static_cast<double>(sd.refresh_period) - cost);
+    }
+    c.total_eclk =
+        static_cast<uint64_t>(static_cast<double>(c.pair_eclk) * (1.0 + c.refresh_fraction) + 0.5);
+    const simtime::tick_clock& eclk = emif.eclk;
+    c.eclk_ns = static_cast<double>(eclk.period_num()) / static_cast<double>(eclk.period_den()) /
+                static_cast<double>(simtime::ticks_per_ns);
+    return c;
+}
+
+mode_estimate estimate_sequential(double capture_ms, double processing_ms, double period_ms) {
+    mode_estimate e;
+    e.need_ms = capture_ms + processing_ms;
+    e.fits = e.need_ms <= period_ms;
+    return e;
+}
+
+mode_estimate estimate_overlapped(double capture_ms, double processing_ms, double period_ms) {
+    mode_estimate e;
+    e.need_ms = std::max(capture_ms, processing_ms);
+    e.fits = e.need_ms <= period_ms;
+    return e;
+}
+
+}  // namespace platform

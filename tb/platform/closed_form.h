@@ -1,0 +1,61 @@
+// Closed-form figures the simulation is checked against (docs/budget.md
+// derives each one): the sensor readout, the EMIF time of one pair's capture
+// by the firmware's EDMA chain, and the budget estimate of the sequential and
+// overlapped modes. Plain arithmetic on the documented timing rules; nothing
+// here runs the models.
+#pragma once
+
+#include <cstdint>
+
+#include "model/emif/emif_async_master.h"
+#include "model/sensor/profile.h"
+
+namespace platform {
+
+// One sensor frame on its pins, in pixel clocks from the frame's line 0,
+// column 0 (docs/sensor.md, "Frame layout").
+struct readout_figures {
+    int64_t first_active_pclk = 0;  // clock of the first active pixel
+    int64_t last_active_pclk = 0;   // clock of the last active pixel
+    int64_t frame_pclks = 0;
+    double pclk_ns = 0.0;
+    double first_active_ms() const { return first_active_pclk * pclk_ns * 1e-6; }
+    double active_span_ms() const {
+        return (last_active_pclk - first_active_pclk) * pclk_ns * 1e-6;
+    }
+    double frame_ms() const { return frame_pclks * pclk_ns * 1e-6; }
+};
+readout_figures readout(const sensor::sensor_profile& p);
+
+// The firmware's capture chain for one pair (dsp/control_program.h): the
+// card's 5 status registers into the pair buffer's header, then the left and
+// the right frame line by line, each line a fixed-address burst from the
+// card's pixel port (CE3) followed by an incrementing burst into the SDRAM
+// buffer (CE0), every transfer started when the one before completed.
+struct capture_figures {
+    uint64_t header_eclk = 0;       // status registers + header write
+    uint64_t line_eclk = 0;         // one line: card read + SDRAM write + turnarounds
+    uint64_t pair_eclk = 0;         // header + 2 x rows x line, without refresh
+    double refresh_fraction = 0.0;  // bus time refresh adds (fraction of pair_eclk)
+    uint64_t total_eclk = 0;        // with refresh
+    double eclk_ns = 0.0;
+    double total_ms() const { return total_eclk * eclk_ns * 1e-6; }
+};
+// cols x rows active pixels (4 per 32-bit word); card_cectl = CECTL2/3; the
+// SDRAM numbers and the ECLK period of the engine's configuration.
+capture_figures capture(int cols, int rows, uint32_t card_cectl, const emif::emif_config& emif);
+
+// DESIGN.md "What the budget means", with the paper's two modes:
+//   sequential: the pair is read, then processed, before the next can be
+//               taken: fits when capture + processing (+ the interrupt
+//               path) <= period;
+//   overlapped: capture of pair N+1 runs while pair N is processed: fits
+//               when capture <= period and processing <= period.
+struct mode_estimate {
+    bool fits = false;
+    double need_ms = 0.0;  // the binding figure compared with the period
+};
+mode_estimate estimate_sequential(double capture_ms, double processing_ms, double period_ms);
+mode_estimate estimate_overlapped(double capture_ms, double processing_ms, double period_ms);
+
+}  // namespace platform

@@ -1,0 +1,410 @@
+#include "tb/platform/island_sc.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+
+#include "model/emif/emif_tlm_target_sc.h"
+
+// verilated.h, seeing SystemC, expects sc_time_stamp in the global namespace
+// (where <systemc.h> would put it). The card is --cc: it never calls it.
+using sc_core::sc_time_stamp;
+#include "Vcard.h"
+#include "Vcard___024root.h"
+#include "verilated.h"
+
+namespace platform {
+
+namespace {
+
+using simtime::ticks;
+
+// Pin groups of the hash (docs/platform.md, "Pin hash").
+constexpr uint32_t group_sensor_left = 0;
+constexpr uint32_t group_sensor_right = 1;
+constexpr uint32_t group_emif_dsp = 2;
+constexpr uint32_t group_card_out = 3;
+
+uint64_t pack_dsp_pins(const emif::emif_pins& p) {
+    uint64_t v = 0;
+    for (int i = 0; i < emif::ce_count; ++i) v |= static_cast<uint64_t>(p.ce_n[i]) << i;
+    v |= static_cast<uint64_t>(p.aoe_n) << 4 | static_cast<uint64_t>(p.are_n) << 5 |
+         static_cast<uint64_t>(p.awe_n) << 6 | static_cast<uint64_t>(p.ed_oe) << 7 |
+         static_cast<uint64_t>(p.be_n & 0xF) << 8 | static_cast<uint64_t>(p.ea & 0xFFFFF) << 12;
+    // ED as driven by the DSP matters only while it drives.
+    if (p.ed_oe) v ^= static_cast<uint64_t>(p.ed_out) << 32;
+    return v;
+}
+
+// The card's outputs that reach pins: OE, ED (while driven), ARDY, EXT_INT4..6.
+uint64_t pack_card_outputs(const Vcard& d) {
+    uint64_t v = static_cast<uint64_t>(d.sensor_oe) | static_cast<uint64_t>(d.ardy) << 1 |
+                 static_cast<uint64_t>(d.ed_oe) << 2 | static_cast<uint64_t>(d.ext_int4) << 3 |
+                 static_cast<uint64_t>(d.ext_int5) << 4 | static_cast<uint64_t>(d.ext_int6) << 5;
+    if (d.ed_oe) v |= static_cast<uint64_t>(d.ed_out) << 32;
+    return v;
+}
+
+}  // namespace
+
+island::island(sc_core::sc_module_name name, const island_config& config,
+               sensor::frame_source& source, emif::emif_async_master& engine, timeline& events)
+    : sc_core::sc_module(name),
+      ext_int4("ext_int4"),
+      ext_int5("ext_int5"),
+      ext_int6("ext_int6"),
+      m_config(config),
+      m_engine(engine),
+      m_events(events),
+      m_context(std::make_unique<VerilatedContext>()),
+      m_pclk(config.pclk),
+      m_eclk(engine.config().eclk) {
+    m_card = std::make_unique<Vcard>(m_context.get(), "card");
+    for (int c = 0; c < 2; ++c) {
+        m_sensor[c] = std::make_unique<sensor::sensor_core>(
+            config.profile, c == 0 ? scene::camera_id::left : scene::camera_id::right, source,
+            config.sensor[c]);
+        for (const sensor::fault& f : config.faults[c]) m_sensor[c]->add_fault(f);
+        const size_t bytes = static_cast<size_t>(config.profile.active_cols) *
+                             static_cast<size_t>(config.profile.active_rows);
+        m_ring[c].assign(static_cast<size_t>(std::max(2, config.frame_ring)),
+                         std::vector<uint8_t>(bytes, 0));
+        m_ring_owner[c].assign(m_ring[c].size(), UINT64_MAX);
+    }
+    // The engine must be at its first edge: the island owns its stepping.
+    m_eclk.reset(engine.config().eclk, 2 * engine.next_edge());
+    m_next_boundary = config.period;
+    reset_card();
+    SC_THREAD(run);
+}
+
+island::~island() {
+    if (m_card) m_card->final();
+}
+
+void island::reset_card() {
+    Vcard& d = *m_card;
+    d.pclk = 0;
+    d.eclk = 0;
+    d.rst_n = 1;
+    const emif::emif_pins& p = m_engine.pins();
+    d.ce2_n = p.ce_n[2];
+    d.ce3_n = p.ce_n[3];
+    d.aoe_n = p.aoe_n;
+    d.are_n = p.are_n;
+    d.awe_n = p.awe_n;
+    d.ea = p.ea;
+    d.be_n = p.be_n;
+    d.ed_in = p.ed_out;
+    d.eval();
+    d.rst_n = 0;  // a falling edge: the asynchronous resets act
+    d.eval();
+    d.rst_n = 1;
+    d.eval();
+    m_pins_seen = p;
+    m_card_out_seen = pack_card_outputs(d);
+}
+
+// ---- the SystemC side ------------------------------------------------------------------------
+void island::run() {
+    const sc_core::sc_time quantum = emif::time_of_tick(m_config.quantum);
+    for (;;) {
+        // Everything else at this time acts first: its bus requests are then
+        // queued before any edge after now is stepped.
+        while (sc_core::sc_pending_activity_at_current_time()) sc_core::wait(sc_core::SC_ZERO_TIME);
+        const sc_core::sc_time now = sc_core::sc_time_stamp();
+        const sc_core::sc_time ahead = std::min(quantum, sc_core::sc_time_to_pending_activity());
+        const ticks limit = std::min(m_config.end, emif::tick_at_or_before(now + ahead));
+        if (limit < 0 || (m_last_tick >= m_config.end && limit == m_config.end)) {
+            sc_core::wait();  // past the end of the run: nothing more to step
+            continue;
+        }
+
+        const auto wall0 = std::chrono::steady_clock::now();
+        bool stopped = false;
+        const ticks last = advance(limit, &stopped);
+        m_stats.wall_s +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+
+        const sc_core::sc_time wake = emif::time_of_tick(stopped ? last : limit);
+        ++m_stats.syncs;
+        sc_core::wait(wake > now ? wake - now : sc_core::SC_ZERO_TIME);
+        if (m_irq != m_irq_written) {
+            ext_int4.write((m_irq & 1) != 0);
+            ext_int5.write((m_irq & 2) != 0);
+            ext_int6.write((m_irq & 4) != 0);
+            m_irq_written = m_irq;
+        }
+    }
+}
+
+// ---- the C++ island --------------------------------------------------------------------------
+ticks island::advance(ticks limit, bool* stopped) {
+    Vcard& d = *m_card;
+    emif::emif_async_master& engine = m_engine;
+    sensor::sensor_core& left = *m_sensor[0];
+    sensor::sensor_core& right = *m_sensor[1];
+    const emif::emif_stats& bus = engine.stats();
+    auto& root = *d.rootp;
+    simtime::clock_cursor pclk = m_pclk;
+    simtime::clock_cursor eclk = m_eclk;
+    ticks last = m_last_tick;
+    const bool hash = m_config.hash_pins;
+
+    for (;;) {
+        const ticks tp = pclk.tick();
+        const ticks te = eclk.tick();
+        const ticks tl = left.next_rise_tick();
+        const ticks tr = right.next_rise_tick();
+        const ticks t = std::min(std::min(tp, te), std::min(tl, tr));
+        if (t > limit) break;
+        const bool pe = tp == t, ee = te == t;
+        while (t >= m_next_boundary) close_period();
+
+        // 1. Every core samples its inputs as they were before the tick.
+        emif::emif_inputs in;
+        if (ee) {
+            const int ce = engine.pins().active_ce();
+            if (ce == 2 || ce == 3) {
+                in.ardy = d.ardy != 0;
+                in.ed_in = d.ed_oe ? d.ed_out : 0u;
+            }
+        }
+        const bool oe_before = d.sensor_oe != 0;
+        if (pe) d.pclk = 1;
+        if (ee) d.eclk = 1;
+        if (pe || ee) d.eval();
+        if (tl == t) step_sensor(0, oe_before);
+        if (tr == t) step_sensor(1, oe_before);
+
+        // 2. Then the outputs of this tick.
+        bool stop = false;
+        if (pe) {
+            ++m_stats.pclk_edges;
+            const bool oe = d.sensor_oe != 0;
+            if (oe != m_oe) {
+                m_oe = oe;
+                m_events.add(t, event_kind::oe, oe ? 1 : 0);
+            }
+            const uint32_t level[2] = {root.card_top__DOT__l_wr_level_unused,
+                                       root.card_top__DOT__r_wr_level_unused};
+            for (int c = 0; c < 2; ++c) {
+                if (level[c] > m_current.fifo_peak_words[c])
+                    m_current.fifo_peak_words[c] = level[c];
+            }
+            const bool overflow[2] = {root.card_top__DOT__l_overflow != 0,
+                                      root.card_top__DOT__r_overflow != 0};
+            for (int c = 0; c < 2; ++c) {
+                if (overflow[c] && !m_fifo_overflow_seen[c]) m_current.fifo_overflow[c] = true;
+                m_fifo_overflow_seen[c] = overflow[c];
+            }
+        }
+        if (ee) {
+            ++m_stats.eclk_edges;
+            const uint8_t irq = static_cast<uint8_t>((d.ext_int4 ? 1 : 0) | (d.ext_int5 ? 2 : 0) |
+                                                     (d.ext_int6 ? 4 : 0));
+            if (irq != m_irq) {
+                const unsigned rose = irq & ~m_irq & 7u;
+                const unsigned fell = m_irq & ~irq & 7u;
+                for (int n = 0; n < 3; ++n) {
+                    if ((rose >> n) & 1u) {
+                        m_irq_rises[n].push_back(t);
+                        m_events.add(t, event_kind::irq, static_cast<uint8_t>(4 + n), 1);
+                    } else if ((fell >> n) & 1u) {
+                        m_events.add(t, event_kind::irq, static_cast<uint8_t>(4 + n), 0);
+                    }
+                }
+                m_irq = irq;
+                stop = true;
+                ++m_stats.stops_irq;
+            }
+            const uint64_t cpu_done = bus.accesses[0], edma_done = bus.accesses[1];
+            engine.step(in);
+            if (bus.accesses[0] != cpu_done || bus.accesses[1] != edma_done) {
+                if (bus.accesses[1] != edma_done) m_edma_done.push_back(t);
+                stop = true;
+                ++m_stats.stops_bus;
+            }
+            const emif::emif_pins& p = engine.pins();
+            d.ce2_n = p.ce_n[2];
+            d.ce3_n = p.ce_n[3];
+            d.aoe_n = p.aoe_n;
+            d.are_n = p.are_n;
+            d.awe_n = p.awe_n;
+            d.ea = p.ea;
+            d.be_n = p.be_n;
+            d.ed_in = p.ed_out;
+            if (hash && p != m_pins_seen) {
+                m_pins_seen = p;
+                mix_pin(t, group_emif_dsp, pack_dsp_pins(p));
+            }
+            eclk.advance();
+            eclk.advance();
+        }
+        if (pe) {
+            pclk.advance();
+            pclk.advance();
+        }
+        // A sensor word reaches the card's inputs if its falling edge comes
+        // before the card's next rising edge (always, on the master clock).
+        for (int c = 0; c < 2; ++c) {
+            pending_word& w = m_pending[c];
+            if (!w.applied && w.fall < pclk.tick()) {
+                apply_sensor_word(c, w.bits);
+                w.applied = true;
+            }
+        }
+        if (pe || ee) {
+            d.pclk = 0;
+            d.eclk = 0;
+            d.eval();
+            if (hash) {
+                const uint64_t out = pack_card_outputs(d);
+                if (out != m_card_out_seen) {
+                    m_card_out_seen = out;
+                    mix_pin(t, group_card_out, out);
+                }
+            }
+        }
+        last = t;
+        if (stop) {
+            *stopped = true;
+            break;
+        }
+    }
+    m_pclk = pclk;
+    m_eclk = eclk;
+    m_last_tick = last;
+    return last;
+}
+
+void island::step_sensor(int c, bool oe) {
+    sensor::sensor_core& s = *m_sensor[c];
+    const uint16_t bits = s.step(oe).bits;
+    pending_word& w = m_pending[c];
+    w.bits = bits;
+    w.fall = s.last_fall_tick();
+    w.applied = false;
+    if (m_config.hash_pins && bits != m_word_seen[c]) {
+        m_word_seen[c] = bits;
+        mix_pin(w.fall, c == 0 ? group_sensor_left : group_sensor_right, bits);
+    }
+
+    // Record the active pixels as driven (docs/platform.md, "Data path integrity").
+    recorder& r = m_rec[c];
+    const sensor::pin_word word{bits};
+    const bool vsync = word.vsync();
+    if (vsync && !r.vsync) start_frame(c);
+    r.vsync = vsync;
+    const bool href = word.href() && word.valid();
+    if (href) {
+        const sensor::sensor_profile& p = m_config.profile;
+        const int x = r.col - p.active_col0();
+        const int y = r.row - p.active_row0();
+        if (r.frame && static_cast<unsigned>(x) < static_cast<unsigned>(p.active_cols) &&
+            static_cast<unsigned>(y) < static_cast<unsigned>(p.active_rows)) {
+            r.frame[static_cast<size_t>(y) * p.active_cols + x] = word.data();
+            ++r.pixels;
+        }
+        ++r.col;
+    } else if (r.href) {
+        ++r.row;
+        r.col = 0;
+    }
+    r.href = href;
+}
+
+void island::apply_sensor_word(int c, uint16_t bits) {
+    Vcard& d = *m_card;
+    const sensor::pin_word w{bits};
+    uint8_t data = w.data();
+    const wire_fault& f = m_config.wire;
+    if (f.enabled && f.camera == c && m_pending[c].fall >= f.from_tick) {
+        const uint8_t mask = static_cast<uint8_t>(1u << f.bit);
+        data = f.value ? static_cast<uint8_t>(data | mask) : static_cast<uint8_t>(data & ~mask);
+    }
+    if (c == 0) {
+        d.l_vsync = w.vsync();
+        d.l_href = w.href();
+        d.l_valid = w.valid();
+        d.l_data = data;
+    } else {
+        d.r_vsync = w.vsync();
+        d.r_href = w.href();
+        d.r_valid = w.valid();
+        d.r_data = data;
+    }
+}
+
+void island::start_frame(int c) {
+    recorder& r = m_rec[c];
+    const sensor::sensor_core& s = *m_sensor[c];
+    if (s.truth().empty()) return;
+    const uint64_t index = s.truth().size() - 1;
+    if (index == r.truth_index) return;  // a VSYNC glitch inside the frame
+    if (r.truth_index != UINT64_MAX) m_frames[c][r.truth_index].pixels = r.pixels;
+    const size_t slot = static_cast<size_t>(index % m_ring[c].size());
+    if (m_ring_owner[c][slot] != UINT64_MAX) {
+        finalize(c, m_ring_owner[c][slot]);
+        m_frames[c][m_ring_owner[c][slot]].slot = -1;
+    }
+    std::vector<uint8_t>& buffer = m_ring[c][slot];
+    std::memset(buffer.data(), 0, buffer.size());
+    m_ring_owner[c][slot] = index;
+    if (m_frames[c].size() <= index) m_frames[c].resize(index + 1);
+    m_frames[c][index].slot = static_cast<int>(slot);
+    r.truth_index = index;
+    r.frame = buffer.data();
+    r.pixels = 0;
+    r.row = 0;
+    r.col = 0;
+    m_events.add(s.truth()[index].start_tick, event_kind::sensor_frame, static_cast<uint8_t>(c),
+                 static_cast<uint32_t>(index));
+}
+
+void island::finalize(int c, uint64_t index) {
+    frame_info& f = m_frames[c][index];
+    if (f.have_checksum || f.slot < 0) return;
+    if (m_rec[c].truth_index == index) f.pixels = m_rec[c].pixels;
+    const std::vector<uint8_t>& buffer = m_ring[c][static_cast<size_t>(f.slot)];
+    f.checksum = fnv1a(buffer.data(), buffer.size());
+    f.have_checksum = true;
+}
+
+const uint8_t* island::frame_pixels(int c, uint64_t index) const {
+    if (index >= m_frames[c].size() || m_frames[c][index].slot < 0) return nullptr;
+    return m_ring[c][static_cast<size_t>(m_frames[c][index].slot)].data();
+}
+
+bool island::frame_checksum(int c, uint64_t index, uint64_t* checksum) {
+    if (index >= m_frames[c].size()) return false;
+    finalize(c, index);
+    if (!m_frames[c][index].have_checksum) return false;
+    *checksum = m_frames[c][index].checksum;
+    return true;
+}
+
+void island::close_period() {
+    const uint64_t busy = m_engine.stats().busy_edges;
+    m_current.emif_busy_edges = busy - m_busy_at_boundary;
+    m_busy_at_boundary = busy;
+    for (int c = 0; c < 2; ++c) {
+        if (m_current.fifo_peak_words[c] > m_fifo_peak_run[c])
+            m_fifo_peak_run[c] = m_current.fifo_peak_words[c];
+    }
+    m_current.eclk_edges = m_stats.eclk_edges - m_eclk_at_boundary;
+    m_eclk_at_boundary = m_stats.eclk_edges;
+    m_periods.push_back(m_current);
+    m_current = period_sample{};
+    m_next_boundary += m_config.period;
+}
+
+void island::finish() {
+    for (int c = 0; c < 2; ++c) {
+        if (m_rec[c].truth_index != UINT64_MAX)
+            m_frames[c][m_rec[c].truth_index].pixels = m_rec[c].pixels;
+    }
+}
+
+}  // namespace platform

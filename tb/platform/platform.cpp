@@ -1,0 +1,154 @@
+#include "tb/platform/platform.h"
+
+#include <chrono>
+
+#include "dsp/c6416_regs.h"
+#include "dsp/kernel_costs.h"
+
+namespace platform {
+
+namespace {
+
+emif::emif_config engine_config(const platform_config& config) {
+    emif::emif_config e;
+    e.eclk = simtime::tick_clock(config.dsk.emif_period());
+    // One SDRAM row refresh every 15.6 us ([TR]; SDTIM 0x618 at 100 MHz,
+    // 0x750 at 120 MHz, hardware-facts.md section 3).
+    e.sdram.refresh_period = static_cast<uint32_t>(config.dsk.emif_hz * 156 / 10000000);
+    return e;
+}
+
+c6416::c6416_config cpu_config(const platform_config& config) {
+    c6416::c6416_config c;
+    c.dsk = config.dsk;
+    c.sdram_over_emifa = true;
+    return c;
+}
+
+island_config make_island_config(const platform_config& config) {
+    island_config c;
+    c.profile = config.profile;
+    c.sensor[0].seed = config.left_seed();
+    c.sensor[1].seed = config.right_seed();
+    for (sensor::sensor_config& s : c.sensor) s.noise = config.sensor_noise;
+    c.faults[0] = config.left_faults;
+    c.faults[1] = config.right_faults;
+    c.wire = config.wire;
+    c.pclk = simtime::tick_clock(config.profile.mclk_period);
+    c.quantum = config.quantum;
+    c.period = config.period;
+    c.hash_pins = config.hash_pins;
+    c.end = config.period * config.frames;
+    return c;
+}
+
+}  // namespace
+
+platform_top::platform_top(const platform_config& config)
+    : m_config(config),
+      m_sequence(config.scenario),
+      m_source(m_sequence.scene_renderer()),
+      m_engine(engine_config(config)) {
+    // Kernel cycle figures for this DSK's clocks (SDRAM stalls depend on the
+    // CPU / EMIF ratio, dsp/kernel_costs.h).
+    dsp::c64x::model_params params;
+    params.cpu_hz = static_cast<uint64_t>(config.dsk.cpu_hz);
+    params.emif_hz = static_cast<uint64_t>(config.dsk.emif_hz);
+    dsp::cost::set_model(dsp::c64x::cost_model(params));
+
+    m_cpu = std::make_unique<c6416::c6416_sc>("dsk", cpu_config(config));
+    m_target = std::make_unique<emif::emif_tlm_target>("emifa", m_engine);
+    m_island = std::make_unique<island>("island", make_island_config(config), m_source, m_engine,
+                                        m_timeline);
+    m_engine.set_sdram_storage(m_cpu->sdram_storage(), m_cpu->sdram_storage_bytes());
+    m_cpu->emifa_cpu.bind(m_target->cpu);
+    m_cpu->emifa_edma.bind(m_target->edma);
+    m_cpu->set_emifa_register_observer([this](uint32_t address, uint32_t value) {
+        for (int ce = 0; ce < emif::ce_count; ++ce) {
+            if (address == dsp::c6416::emifa::cectl(ce)) m_engine.set_cectl(ce, value);
+        }
+    });
+    m_island->ext_int4.bind(m_int[0]);
+    m_island->ext_int5.bind(m_int[1]);
+    m_island->ext_int6.bind(m_int[2]);
+    m_cpu->ext_int4.bind(m_int[0]);
+    m_cpu->ext_int5.bind(m_int[1]);
+    m_cpu->ext_int6.bind(m_int[2]);
+    m_cpu->ext_int7.bind(m_int[3]);  // not connected on the card: stays low
+    m_cpu->set_firmware([this](dsp::hal& hal) { firmware(hal); });
+}
+
+platform_top::~platform_top() = default;
+
+void platform_top::firmware(dsp::hal& hal) {
+    m_probe = std::make_unique<probe_hal>(hal, m_timeline);
+    m_probe->set_event_hook([this](const fw_event& e) { on_firmware_event(e); });
+    m_probe->start();
+    if (!m_program.init(program_config(m_config), *m_probe)) {
+        m_init_failed = true;
+        return;
+    }
+    m_program.run();
+}
+
+void platform_top::run() {
+    const auto wall0 = std::chrono::steady_clock::now();
+    m_end_tick = m_config.period * m_config.frames;
+    sc_core::sc_start(emif::time_of_tick(m_end_tick));
+    m_island->finish();
+    m_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+}
+
+int64_t platform_top::frame_before(int camera, simtime::ticks tick) const {
+    const std::vector<sensor::frame_truth>& truth = m_island->sensor(camera).truth();
+    for (size_t i = truth.size(); i-- > 0;) {
+        if (truth[i].have_active && truth[i].last_active_tick < tick)
+            return static_cast<int64_t>(i);
+    }
+    return -1;
+}
+
+void platform_top::on_firmware_event(const fw_event& e) {
+    if (e.event.kind != dsp::firmware_event::pair_captured) return;
+    captured_pair p;
+    p.pair = e.event.pair;
+    p.buffer = static_cast<int>(e.event.detail);
+    p.verdict = e.event.value;
+    p.tick = e.tick;
+    check_captured(p);
+    m_captured.push_back(p);
+}
+
+// Data path integrity (docs/platform.md): the raw frames as they landed in
+// the pair buffer against the active pixels the sensors drove.
+void platform_top::check_captured(captured_pair& p) {
+    const std::vector<simtime::ticks>& ready = m_island->irq_rises(0);
+    if (p.pair >= 1 && p.pair <= ready.size()) p.ready = ready[p.pair - 1];
+    const uint32_t bytes =
+        static_cast<uint32_t>(m_island->frame_width() * m_island->frame_height());
+    for (int c = 0; c < 2; ++c) {
+        const uint32_t address =
+            c == 0 ? m_program.left_address(p.buffer) : m_program.right_address(p.buffer);
+        const uint8_t* memory = m_probe->memory(address, bytes);
+        if (!memory) continue;
+        p.memory_checksum[c] = fnv1a(memory, bytes);
+        if (p.ready < 0) continue;
+        p.sensor_frame[c] = frame_before(c, p.ready);
+        if (p.sensor_frame[c] < 0) continue;
+        const uint64_t index = static_cast<uint64_t>(p.sensor_frame[c]);
+        p.sensor_checksum_known[c] = m_island->frame_checksum(c, index, &p.sensor_checksum[c]);
+        if (const uint8_t* pixels = m_island->frame_pixels(c, index)) {
+            uint64_t differing = 0;
+            uint8_t bits = 0;
+            for (uint32_t i = 0; i < bytes; ++i) {
+                const uint8_t x = static_cast<uint8_t>(memory[i] ^ pixels[i]);
+                differing += x != 0;
+                bits |= x;
+            }
+            p.differing_pixels[c] = differing;
+            p.differing_bits[c] = bits;
+        }
+    }
+}
+
+}  // namespace platform

@@ -1,0 +1,102 @@
+// The platform top (docs/platform.md): two sensors -> the daughter card RTL
+// -> EMIFA -> the C6416 model running the firmware of dsp/ -> 3D track, in the
+// fast arrangement (tb/platform/island_sc.h), with the observers the
+// scoreboard and the budget checker read after the run.
+//
+//   scene renderer --RGB--> island [ sensor L, sensor R, card (--cc), EMIF engine ]
+//                                 |  EXT_INT4..6 (sc_signal)     ^ TLM b_transport
+//                                 v                              |
+//                           c6416_sc [ CPU thread: firmware on probe_hal, EDMA, L2, SDRAM ]
+//
+// One platform per process: SystemC elaborates once (DESIGN.md "Known traps").
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <systemc>
+#include <vector>
+
+#include "dsp/control_program.h"
+#include "model/c6416/c6416_sc.h"
+#include "model/emif/emif_async_master.h"
+#include "model/emif/emif_tlm_target_sc.h"
+#include "model/scene/sequence.h"
+#include "tb/platform/island_sc.h"
+#include "tb/platform/platform_config.h"
+#include "tb/platform/probe_hal.h"
+#include "tb/platform/recording_source.h"
+#include "tb/platform/timeline.h"
+
+namespace platform {
+
+// A pair the EDMA moved into a pair buffer, checked the moment the firmware
+// takes it (its pair_captured report): the raw frames in modelled DSP
+// memory against the sensors' frames as driven on their pins.
+struct captured_pair {
+    uint32_t pair = 0;  // the card's PAIRS_OK number copied with it
+    int buffer = 0;
+    simtime::ticks tick = 0;             // pair_captured report
+    simtime::ticks ready = -1;           // FRAME_READY rise of this pair, -1 unknown
+    uint32_t verdict = 0;                // VERDICT copied with it
+    int64_t sensor_frame[2] = {-1, -1};  // truth index of the sensor frame (by timing)
+    uint64_t memory_checksum[2] = {};
+    bool sensor_checksum_known[2] = {};
+    uint64_t sensor_checksum[2] = {};
+    uint64_t differing_pixels[2] = {};  // memory vs sensor frame
+    uint8_t differing_bits[2] = {};     // OR of (memory XOR sensor) over the frame
+};
+
+class platform_top {
+  public:
+    explicit platform_top(const platform_config& config);
+    ~platform_top();
+    platform_top(const platform_top&) = delete;
+    platform_top& operator=(const platform_top&) = delete;
+
+    // Simulates config.frames sync periods (sc_start); then the run is over.
+    void run();
+
+    const platform_config& config() const { return m_config; }
+    const scene::sequence& sequence() const { return m_sequence; }
+    const recording_source& source() const { return m_source; }
+    island& cycle_island() { return *m_island; }
+    const island& cycle_island() const { return *m_island; }
+    c6416::c6416_sc& cpu() { return *m_cpu; }
+    const emif::emif_async_master& engine() const { return m_engine; }
+    const probe_hal& probe() const { return *m_probe; }
+    bool firmware_started() const { return m_probe != nullptr; }
+    bool firmware_init_failed() const { return m_init_failed; }
+    const dsp::control_program& program() const { return m_program; }
+    const timeline& events() const { return m_timeline; }
+    const std::vector<captured_pair>& captured() const { return m_captured; }
+    // The run's end (config.frames periods) and the host time run() took.
+    simtime::ticks end_tick() const { return m_end_tick; }
+    double wall_s() const { return m_wall_s; }
+
+    // The sensor frame (truth index) whose last active pixel is the latest
+    // before `tick`, or -1.
+    int64_t frame_before(int camera, simtime::ticks tick) const;
+
+  private:
+    void firmware(dsp::hal& hal);
+    void on_firmware_event(const fw_event& e);
+    void check_captured(captured_pair& pair);
+
+    platform_config m_config;
+    scene::sequence m_sequence;
+    recording_source m_source;
+    emif::emif_async_master m_engine;
+    timeline m_timeline;
+    std::unique_ptr<c6416::c6416_sc> m_cpu;
+    std::unique_ptr<emif::emif_tlm_target> m_target;
+    std::unique_ptr<island> m_island;
+    sc_core::sc_signal<bool> m_int[4];
+    std::unique_ptr<probe_hal> m_probe;
+    dsp::control_program m_program;
+    bool m_init_failed = false;
+    std::vector<captured_pair> m_captured;
+    simtime::ticks m_end_tick = 0;
+    double m_wall_s = 0.0;
+};
+
+}  // namespace platform

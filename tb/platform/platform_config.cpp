@@ -1,0 +1,44 @@
+#include "tb/platform/platform_config.h"
+
+#include "tb/host/stereo_runner.h"
+
+namespace platform {
+
+dsp::controller_config pipeline_config(const platform_config& config) {
+    dsp::controller_config c = host::controller_config_for(config.scenario.scene.rig);
+    c.cfa = config.profile.cfa;
+    if (config.track_search_radius > 0) c.track.search_radius = config.track_search_radius;
+    return c;
+}
+
+dsp::control_program_config program_config(const platform_config& config) {
+    dsp::control_program_config c;
+    c.pipeline = pipeline_config(config);
+    const sensor::sensor_profile& p = config.profile;
+    // The card's geometry registers from the sensor profile (docs/card.md,
+    // "Sensor pins the card expects").
+    c.card.h_start = static_cast<uint32_t>(p.href_start);
+    c.card.dark_cols_left = static_cast<uint32_t>(p.dark_cols_left);
+    c.card.border_cols_left = static_cast<uint32_t>(p.border_cols_before);
+    c.card.active_cols = static_cast<uint32_t>(p.active_cols);
+    c.card.border_cols_right = static_cast<uint32_t>(p.border_cols_after);
+    c.card.dark_cols_right = static_cast<uint32_t>(p.dark_cols_right);
+    c.card.line_total = static_cast<uint32_t>(p.line_pclks);
+    c.card.v_start = static_cast<uint32_t>(p.first_row_line);
+    c.card.dark_rows_top = static_cast<uint32_t>(p.dark_rows_top);
+    c.card.border_rows_top = static_cast<uint32_t>(p.border_rows_before);
+    c.card.active_rows = static_cast<uint32_t>(p.active_rows);
+    c.card.border_rows_bottom = static_cast<uint32_t>(p.border_rows_after);
+    c.card.dark_rows_bottom = static_cast<uint32_t>(p.dark_rows_bottom);
+    c.card.frame_lines = static_cast<uint32_t>(p.frame_lines);
+    c.dsk = config.dsk.version == 2   ? dsp::dsk_version::v2
+            : config.dsk.version == 3 ? dsp::dsk_version::v3
+                                      : dsp::dsk_version::v1;
+    c.cpu_mhz = static_cast<uint32_t>(config.dsk.cpu_hz / 1000000);
+    c.mode = config.mode;
+    c.capture_cycles = config.capture_cycles;
+    c.watchdog_ms = config.watchdog_ms;
+    return c;
+}
+
+}  // namespace platform

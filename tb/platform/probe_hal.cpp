@@ -1,0 +1,126 @@
+#include "tb/platform/probe_hal.h"
+
+#include <systemc>
+
+#include "model/c6416/c6416_sc.h"
+
+namespace platform {
+
+simtime::ticks probe_hal::now() {
+    return c6416::ticks_at_or_after_fs(static_cast<int64_t>(sc_core::sc_time_stamp().value()));
+}
+
+void probe_hal::start() {
+    m_started = true;
+    m_left = std::chrono::steady_clock::now();
+}
+
+void probe_hal::enter() {
+    if (!m_started) return;
+    m_firmware_wall_s +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - m_left).count();
+}
+
+void probe_hal::leave() {
+    if (m_started) m_left = std::chrono::steady_clock::now();
+}
+
+void probe_hal::charge_cycles(dsp::stage s, uint64_t cycles) {
+    enter();
+    const simtime::ticks begin = now();
+    m_inner.charge_cycles(s, cycles);
+    m_charges.push_back({begin, now(), s, cycles});
+    m_stage_cycles[static_cast<int>(s)] += cycles;
+    m_open_cycles += cycles;
+    leave();
+}
+
+void probe_hal::stage_begin(dsp::stage s) {
+    enter();
+    m_open_stage = static_cast<int>(s);
+    m_open_cycles = 0;
+    m_events.add(now(), event_kind::stage_begin, static_cast<uint8_t>(s));
+    m_inner.stage_begin(s);
+    leave();
+}
+
+void probe_hal::stage_end(dsp::stage s) {
+    enter();
+    m_events.add(now(), event_kind::stage_end, static_cast<uint8_t>(s),
+                 static_cast<uint32_t>(m_open_cycles));
+    m_open_stage = -1;
+    m_inner.stage_end(s);
+    leave();
+}
+
+uint32_t probe_hal::read32(uint32_t address) {
+    enter();
+    const uint32_t v = m_inner.read32(address);
+    leave();
+    return v;
+}
+
+void probe_hal::write32(uint32_t address, uint32_t value) {
+    enter();
+    m_inner.write32(address, value);
+    leave();
+}
+
+uint8_t* probe_hal::memory(uint32_t address, uint32_t bytes) {
+    return m_inner.memory(address, bytes);
+}
+
+void probe_hal::set_interrupt_enable(uint32_t ier) {
+    m_inner.set_interrupt_enable(ier);
+}
+
+uint32_t probe_hal::interrupt_flags() {
+    return m_inner.interrupt_flags();
+}
+
+void probe_hal::clear_interrupt_flags(uint32_t mask) {
+    m_inner.clear_interrupt_flags(mask);
+}
+
+int probe_hal::wait_for_interrupt() {
+    enter();
+    const simtime::ticks begin = now();
+    m_events.add(begin, event_kind::cpu_sleep);
+    m_asleep_since = begin;
+    const int n = m_inner.wait_for_interrupt();
+    const simtime::ticks end = now();
+    m_asleep_since = -1;
+    m_sleeps.push_back({begin, end});
+    m_events.add(end, event_kind::cpu_wake, static_cast<uint8_t>(n < 0 ? 255 : n));
+    leave();
+    return n;
+}
+
+void probe_hal::report(const dsp::event_record& e) {
+    enter();
+    const fw_event te{now(), e};
+    if (e.kind == dsp::firmware_event::pair_processed && !m_results.empty()) {
+        m_results.back().pair = e.pair;
+        if (timeline_event* result = m_events.last(event_kind::result)) result->b = e.pair;
+    }
+    if (m_hook) m_hook(te);
+    m_fw_events.push_back(te);
+    m_events.add(te.tick, event_kind::firmware, static_cast<uint8_t>(e.kind), e.pair, e.value);
+    m_inner.report(e);
+    leave();
+}
+
+void probe_hal::report_result(const dsp::frame_output& out) {
+    enter();
+    const simtime::ticks t = now();
+    m_results.push_back({t, 0, out});
+    m_events.add(t, event_kind::result, static_cast<uint8_t>(out.state), 0, out.has_point ? 1 : 0);
+    m_inner.report_result(out);
+    leave();
+}
+
+bool probe_hal::stop_requested() {
+    return m_inner.stop_requested();
+}
+
+}  // namespace platform

@@ -1,0 +1,102 @@
+// The HAL the firmware runs on in the platform: it forwards every call to
+// the C6416 model's HAL unchanged and records, with the simulated tick of
+// each, what the firmware did: stage intervals and the cycles charged in
+// them, when the CPU slept in wait_for_interrupt, every report and result
+// (docs/platform.md, "Timeline"). It also measures the host time the
+// firmware itself takes (time on the CPU thread outside the HAL's blocking
+// calls), for the firmware's share of the wall time.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "dsp/controller.h"
+#include "dsp/hal.h"
+#include "model/time/ticks.h"
+#include "tb/platform/timeline.h"
+
+namespace platform {
+
+struct charge_record {
+    simtime::ticks begin = 0, end = 0;  // simulated interval the CPU spent on it
+    dsp::stage stage = dsp::stage::capture;
+    uint64_t cycles = 0;
+};
+
+struct tick_interval {
+    simtime::ticks begin = 0, end = 0;
+};
+
+struct fw_event {
+    simtime::ticks tick = 0;
+    dsp::event_record event;
+};
+
+struct fw_result {
+    simtime::ticks tick = 0;
+    uint32_t pair = 0;  // from the pair_processed report that follows it
+    dsp::frame_output out;
+};
+
+class probe_hal final : public dsp::hal {
+  public:
+    using event_hook = std::function<void(const fw_event&)>;
+
+    probe_hal(dsp::hal& inner, timeline& events) : m_inner(inner), m_events(events) {}
+
+    // Called once on the CPU thread before the firmware starts.
+    void start();
+    // Called by report() before the event is recorded (scoreboard checks).
+    void set_event_hook(event_hook hook) { m_hook = std::move(hook); }
+
+    void charge_cycles(dsp::stage s, uint64_t cycles) override;
+    void stage_begin(dsp::stage s) override;
+    void stage_end(dsp::stage s) override;
+    uint32_t read32(uint32_t address) override;
+    void write32(uint32_t address, uint32_t value) override;
+    uint8_t* memory(uint32_t address, uint32_t bytes) override;
+    void set_interrupt_enable(uint32_t ier) override;
+    uint32_t interrupt_flags() override;
+    void clear_interrupt_flags(uint32_t mask) override;
+    int wait_for_interrupt() override;
+    void report(const dsp::event_record& e) override;
+    void report_result(const dsp::frame_output& out) override;
+    bool stop_requested() override;
+
+    const std::vector<charge_record>& charges() const { return m_charges; }
+    // Intervals the CPU was asleep in wait_for_interrupt.
+    const std::vector<tick_interval>& sleeps() const { return m_sleeps; }
+    // Tick the CPU went to sleep if it is asleep now, else -1.
+    simtime::ticks asleep_since() const { return m_asleep_since; }
+    const std::vector<fw_event>& fw_events() const { return m_fw_events; }
+    const std::vector<fw_result>& results() const { return m_results; }
+    uint64_t stage_cycles(dsp::stage s) const { return m_stage_cycles[static_cast<int>(s)]; }
+    double firmware_wall_s() const { return m_firmware_wall_s; }
+    // The stage the firmware is in (between stage_begin and stage_end), -1 none.
+    int open_stage() const { return m_open_stage; }
+
+  private:
+    // Host time bookkeeping around every call into the HAL.
+    void enter();
+    void leave();
+    static simtime::ticks now();
+
+    dsp::hal& m_inner;
+    timeline& m_events;
+    event_hook m_hook;
+    std::vector<charge_record> m_charges;
+    std::vector<tick_interval> m_sleeps;
+    std::vector<fw_event> m_fw_events;
+    std::vector<fw_result> m_results;
+    uint64_t m_stage_cycles[dsp::stage_count] = {};
+    uint64_t m_open_cycles = 0;
+    int m_open_stage = -1;
+    simtime::ticks m_asleep_since = -1;
+    bool m_started = false;
+    std::chrono::steady_clock::time_point m_left;
+    double m_firmware_wall_s = 0.0;
+};
+
+}  // namespace platform

@@ -1,0 +1,203 @@
+#include "tb/platform/scoreboard.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "model/sensor/truth.h"
+
+namespace platform {
+
+const char* card_verdict_name(card_verdict v) {
+    switch (v) {
+        case card_verdict::none:
+            return "none";
+        case card_verdict::frame_ready:
+            return "frame_ready";
+        case card_verdict::sync_error:
+            return "sync_error";
+    }
+    return "?";
+}
+
+namespace {
+
+constexpr simtime::ticks never = INT64_MAX;
+
+double ticks_to_ms(simtime::ticks t) {
+    return static_cast<double>(t) / (static_cast<double>(simtime::ticks_per_ns) * 1e6);
+}
+
+// First frame of the sensor that started in (from, to), or -1.
+int64_t first_frame_between(const std::vector<sensor::frame_truth>& truth, simtime::ticks from,
+                            simtime::ticks to) {
+    for (size_t i = 0; i < truth.size(); ++i) {
+        if (truth[i].start_tick > from && truth[i].start_tick < to) return static_cast<int64_t>(i);
+    }
+    return -1;
+}
+
+// DESIGN.md's rule (sensor::pair_in_step), with "show the same scene frame"
+// read as "were rendered at the same scene time": each sensor numbers its own
+// scene frames, and after an OE restart the two numberings can differ by the
+// frames one sensor began and the other did not (docs/platform.md).
+bool in_step(const sensor::frame_truth& l, const sensor::frame_truth& r,
+             simtime::rational_ticks pclk, const recording_source& source) {
+    sensor::frame_truth right = r;
+    const double tl = source.scene_time_s(0, l.scene_frame);
+    const double tr = source.scene_time_s(1, r.scene_frame);
+    if (tl >= 0.0 && tl == tr) right.scene_frame = l.scene_frame;
+    return sensor::pair_in_step(l, right, pclk);
+}
+
+simtime::ticks first_rise_between(const std::vector<simtime::ticks>& rises, simtime::ticks from,
+                                  simtime::ticks to) {
+    for (simtime::ticks t : rises)
+        if (t > from && t < to) return t;
+    return never;
+}
+
+}  // namespace
+
+scoreboard_report score(const platform_top& top) {
+    scoreboard_report r;
+    const island& isl = top.cycle_island();
+    const std::vector<sensor::frame_truth>* truth[2] = {&isl.sensor(0).truth(),
+                                                        &isl.sensor(1).truth()};
+    const simtime::rational_ticks pclk = top.config().profile.pclk_period();
+
+    // ---- per OE start: timing truth against the card's first verdict --------------------
+    std::vector<simtime::ticks> oe_rises;
+    for (const timeline_event& e : top.events().events())
+        if (e.kind == event_kind::oe && e.a == 1) oe_rises.push_back(e.tick);
+    r.oe_restarts = oe_rises.empty() ? 0 : static_cast<int>(oe_rises.size()) - 1;
+    for (size_t s = 0; s < oe_rises.size(); ++s) {
+        start_check c;
+        c.oe_rise = oe_rises[s];
+        const simtime::ticks next = s + 1 < oe_rises.size() ? oe_rises[s + 1] : never;
+        for (int cam = 0; cam < 2; ++cam)
+            c.frame[cam] = first_frame_between(*truth[cam], c.oe_rise, next);
+        c.truth_in_step = c.frame[0] >= 0 && c.frame[1] >= 0 &&
+                          in_step((*truth[0])[static_cast<size_t>(c.frame[0])],
+                                  (*truth[1])[static_cast<size_t>(c.frame[1])], pclk, top.source());
+        const simtime::ticks ready = first_rise_between(isl.irq_rises(0), c.oe_rise, next);
+        const simtime::ticks error = first_rise_between(isl.irq_rises(1), c.oe_rise, next);
+        if (ready != never || error != never) {
+            c.card = ready < error ? card_verdict::frame_ready : card_verdict::sync_error;
+            c.verdict_tick = std::min(ready, error);
+        }
+        r.starts_agreeing += c.agree();
+        r.starts.push_back(c);
+    }
+
+    // ---- per forwarded pair --------------------------------------------------------------
+    const std::vector<simtime::ticks>& ready = isl.irq_rises(0);
+    const std::vector<fw_result>& results = top.probe().results();
+    const scene::scenario& scenario = top.config().scenario;
+    std::vector<host::frame_record> records;
+    for (size_t n = 0; n < ready.size(); ++n) {
+        pair_check p;
+        p.pair = static_cast<uint32_t>(n + 1);
+        p.ready = ready[n];
+        for (int cam = 0; cam < 2; ++cam) p.frame[cam] = top.frame_before(cam, p.ready);
+        if (p.frame[0] >= 0 && p.frame[1] >= 0) {
+            const sensor::frame_truth& l = (*truth[0])[static_cast<size_t>(p.frame[0])];
+            const sensor::frame_truth& rt = (*truth[1])[static_cast<size_t>(p.frame[1])];
+            p.truth_in_step = in_step(l, rt, pclk, top.source());
+            p.scene_frame = rt.scene_frame;
+            p.first_active = std::min(l.first_active_tick, rt.first_active_tick);
+            p.last_active = std::max(l.last_active_tick, rt.last_active_tick);
+        }
+        if (!p.truth_in_step) ++r.forwarded_out_of_step;
+        if (r.first_in_step_ready < 0) {
+            r.first_in_step_ready = p.ready;
+            r.first_in_step_frame = p.frame[0];
+        }
+        for (const captured_pair& c : top.captured()) p.captured |= c.pair == p.pair;
+        for (const fw_event& e : top.probe().fw_events()) {
+            p.rejected |=
+                e.event.kind == dsp::firmware_event::pair_rejected && e.event.pair == p.pair;
+        }
+        for (const fw_result& res : results) {
+            if (res.pair != p.pair) continue;
+            p.processed = true;
+            p.result_tick = res.tick;
+            p.used_after_verdict = res.tick > p.ready && p.ready > p.last_active;
+            p.latency_ms = ticks_to_ms(res.tick - p.first_active);
+            p.record.index = static_cast<int>(p.scene_frame);
+            p.record.time_s = top.source().scene_time_s(1, p.scene_frame);
+            p.record.out = res.out;
+            if (!scenario.scene.balls.empty() && p.record.time_s >= 0.0) {
+                p.record.has_truth = true;
+                p.record.truth = scene::ball_truth_at(scenario.scene.rig, scenario.scene.balls[0],
+                                                      p.record.time_s);
+            }
+            p.errors = host::score_frame(p.record);
+            records.push_back(p.record);
+        }
+        if (p.processed) {
+            r.used_before_verdict += !p.used_after_verdict;
+            r.used_out_of_step += !p.truth_in_step;
+            if (r.latency_ms_min == 0.0 || p.latency_ms < r.latency_ms_min)
+                r.latency_ms_min = p.latency_ms;
+            r.latency_ms_max = std::max(r.latency_ms_max, p.latency_ms);
+        }
+        r.pairs.push_back(p);
+    }
+
+    // ---- the firmware's verdicts ------------------------------------------------------------
+    r.card_sync_errors = static_cast<int>(isl.irq_rises(1).size());
+    for (const fw_event& e : top.probe().fw_events()) {
+        if (e.event.kind == dsp::firmware_event::sync_error) ++r.firmware_sync_errors;
+        if (e.event.kind == dsp::firmware_event::in_step && r.firmware_in_step_pair < 0)
+            r.firmware_in_step_pair = e.event.pair;
+    }
+
+    // ---- data path integrity ---------------------------------------------------------------
+    for (const captured_pair& c : top.captured()) {
+        ++r.integrity_checked;
+        bool equal = true;
+        for (int cam = 0; cam < 2; ++cam)
+            equal &=
+                c.sensor_checksum_known[cam] && c.sensor_checksum[cam] == c.memory_checksum[cam];
+        r.integrity_equal += equal;
+    }
+
+    // ---- tracking and 3D ---------------------------------------------------------------------
+    if (!scenario.scene.balls.empty()) {
+        const scene::ball_desc& ball = scenario.scene.balls[0];
+        for (uint64_t k = 1;; ++k) {
+            const double t0 = top.source().scene_time_s(1, k - 1);
+            const double t1 = top.source().scene_time_s(1, k);
+            if (t1 < 0.0) break;
+            if (t0 < 0.0) continue;
+            const scene::vec3 a = scene::ball_truth_at(scenario.scene.rig, ball, t0).centre_m;
+            const scene::vec3 b = scene::ball_truth_at(scenario.scene.rig, ball, t1).centre_m;
+            if (a.x != b.x || a.y != b.y || a.z != b.z) {
+                r.first_motion_frame = static_cast<int>(k);
+                break;
+            }
+        }
+    }
+    for (const pair_check& p : r.pairs) {
+        if (!p.processed) continue;
+        if (r.detection_frame < 0) {
+            if (p.record.out.detected) r.detection_frame = static_cast<int>(p.scene_frame);
+            continue;
+        }
+        ++r.frames_after_detection;
+        if (p.errors.box_scored && p.errors.box_centre_err_px <= 3.0) ++r.box_within_3px;
+        if (p.errors.box_scored)
+            r.max_box_err_px = std::max(r.max_box_err_px, p.errors.box_centre_err_px);
+        const double visible_m = p.errors.visible_z_mm / 1000.0;
+        if (p.errors.point_scored && visible_m >= 1.0 && visible_m <= 3.0) {
+            ++r.depth_scored_1_3m;
+            const double pct = std::fabs(p.errors.depth_err_pct);
+            r.depth_within_2pct += pct <= 2.0;
+            r.max_depth_err_pct = std::max(r.max_depth_err_pct, pct);
+        }
+    }
+    r.summary = host::summarize(records, r.first_motion_frame);
+    return r;
+}
+
+}  // namespace platform

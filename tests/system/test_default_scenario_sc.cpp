@@ -1,0 +1,219 @@
+// The default scenario on the whole platform (issue 5; docs/platform.md):
+// VGA, DSK v1, the default rig and 5 cm ball (three still frames, then the
+// throw), overlapped mode, seed 3, 12 sync periods. One simulation for the
+// whole executable; each test reads one aspect of it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "tests/system/system_run.h"
+
+namespace {
+
+using system_test::system_run;
+
+system_run& run() {
+    static system_run r = system_test::simulate(platform::platform_config{});
+    return r;
+}
+
+// Sync: the seed's first OE start is out of step, the card sees it and
+// restarts OE; the sensors are in step within the first 5 frames; every
+// verdict agrees with the sensors' timing truth; a pair is used only after
+// the verdict covering its last line; the raw frames land in DSP memory
+// exactly as the sensors drove them.
+TEST(default_scenario, restart_then_in_step_pairs_used_after_their_verdict_reach_memory_intact) {
+    system_run& r = run();
+    const platform::scoreboard_report& s = r.score;
+
+    ASSERT_GE(s.starts.size(), 2u);
+    EXPECT_GE(s.oe_restarts, 1);
+    EXPECT_FALSE(s.starts[0].truth_in_step) << "seed 3: the first start must be out of step";
+    EXPECT_EQ(s.starts[0].card, platform::card_verdict::sync_error);
+    int with_verdict = 0;
+    for (const platform::start_check& c : s.starts) {
+        if (c.card == platform::card_verdict::none) continue;
+        ++with_verdict;
+        EXPECT_TRUE(c.agree()) << "OE start at " << system_test::ticks_to_ms(c.oe_rise) << " ms";
+    }
+    EXPECT_EQ(s.starts_agreeing, with_verdict);
+
+    // The firmware saw the same: one sync_error report per SYNC_ERROR pulse,
+    // and its in_step report names the first pair the card forwarded.
+    EXPECT_GE(s.card_sync_errors, 1);
+    EXPECT_EQ(s.firmware_sync_errors, s.card_sync_errors);
+    EXPECT_EQ(s.firmware_in_step_pair, 1);
+
+    ASSERT_GE(s.first_in_step_frame, 0);
+    EXPECT_LE(s.first_in_step_frame, 4) << "in step within the first 5 frames";
+    EXPECT_LE(s.first_in_step_ready, 5 * platform::period_24_5_ms);
+
+    EXPECT_EQ(s.forwarded_out_of_step, 0);
+    int processed = 0;
+    for (const platform::pair_check& p : s.pairs) {
+        if (!p.processed) continue;
+        ++processed;
+        EXPECT_TRUE(p.truth_in_step) << "pair " << p.pair;
+        EXPECT_GT(p.ready, p.last_active) << "pair " << p.pair << ": verdict before its last pixel";
+        EXPECT_GT(p.result_tick, p.ready) << "pair " << p.pair << ": used before its verdict";
+    }
+    EXPECT_GE(processed, 8);
+    EXPECT_EQ(s.used_before_verdict, 0);
+    EXPECT_EQ(s.used_out_of_step, 0);
+
+    ASSERT_GE(r.top->captured().size(), 8u);
+    for (const platform::captured_pair& c : r.top->captured()) {
+        EXPECT_EQ(c.verdict & 0xFFu, 0u) << "pair " << c.pair << " captured with a cause";
+        for (int cam = 0; cam < 2; ++cam) {
+            ASSERT_TRUE(c.sensor_checksum_known[cam]) << "pair " << c.pair;
+            EXPECT_EQ(c.memory_checksum[cam], c.sensor_checksum[cam])
+                << "pair " << c.pair << " cam " << cam;
+            EXPECT_EQ(c.differing_pixels[cam], 0u) << "pair " << c.pair << " cam " << cam;
+        }
+    }
+    EXPECT_EQ(s.integrity_equal, s.integrity_checked);
+    std::printf(
+        "restarts %d, first in-step sensor frame %lld at %.3f ms, %d/%d starts agree, %d pairs "
+        "processed, %d/%d captured pairs intact\n",
+        s.oe_restarts, static_cast<long long>(s.first_in_step_frame),
+        system_test::ticks_to_ms(s.first_in_step_ready), s.starts_agreeing, with_verdict, processed,
+        s.integrity_equal, s.integrity_checked);
+}
+
+// The firmware's track against the scene: detected within 3 frames of the
+// ball's first motion (and not before it); after that the box centre within
+// 3 px of the ball's image centre in >= 95 % of the pairs; depth within 2 %
+// of the visible-surface depth at 1-3 m.
+TEST(default_scenario, ball_detected_within_3_frames_then_tracked_in_3d) {
+    const platform::scoreboard_report& s = run().score;
+    ASSERT_GE(s.first_motion_frame, 1);
+    ASSERT_GE(s.detection_frame, 0) << "never detected";
+    EXPECT_GT(s.detection_frame, s.first_motion_frame);
+    EXPECT_LE(s.detection_frame - s.first_motion_frame, 3);
+    for (const platform::pair_check& p : s.pairs) {
+        if (p.processed && static_cast<int>(p.scene_frame) < s.first_motion_frame) {
+            EXPECT_FALSE(p.record.out.motion_found)
+                << "motion found in still scene frame " << p.scene_frame;
+        }
+    }
+    ASSERT_GE(s.frames_after_detection, 4);
+    EXPECT_GE(s.box_within_3px, std::ceil(0.95 * s.frames_after_detection));
+    ASSERT_GE(s.depth_scored_1_3m, 4);
+    EXPECT_EQ(s.depth_within_2pct, s.depth_scored_1_3m);
+    std::printf(
+        "motion at scene frame %d, detected at %d; %d/%d boxes within 3 px (max %.2f px); %d/%d "
+        "depths within 2 %% (max %.2f %%); RMSE X %.1f Y %.1f Z %.1f mm\n",
+        s.first_motion_frame, s.detection_frame, s.box_within_3px, s.frames_after_detection,
+        s.max_box_err_px, s.depth_within_2pct, s.depth_scored_1_3m, s.max_depth_err_pct,
+        s.summary.rmse_x_mm, s.summary.rmse_y_mm, s.summary.rmse_z_mm);
+}
+
+// Timing against the closed forms of docs/budget.md: each pair's capture
+// time (FRAME_READY to its last EDMA burst) within 2 % of the figure from
+// the EMIF timing; the verdict of each pair after its last active pixel by
+// the sensor readout's figure; the overlapped mode within budget, as the
+// closed-form estimate (capture + the host harness's processing time) says.
+TEST(default_scenario, capture_and_budget_agree_with_the_closed_forms) {
+    system_run& r = run();
+    const platform::capture_figures cf = system_test::closed_form_capture(*r.top);
+    // docs/budget.md: 160 words x 14 ECLK + TA 2 + SDRAM (7 + 80) + TA 2 per line.
+    EXPECT_EQ(cf.line_eclk, 2331u);
+    EXPECT_EQ(cf.header_eclk, 82u);
+    EXPECT_NEAR(cf.total_ms(), 22.54, 0.01);
+
+    int judged = 0;
+    for (const platform::pair_budget& p : r.budget.pairs) {
+        if (!p.judged || p.capture_ms <= 0.0) continue;
+        ++judged;
+        EXPECT_NEAR(p.capture_ms, cf.total_ms(), 0.02 * cf.total_ms()) << "pair " << p.pair;
+    }
+    EXPECT_GE(judged, 6);
+
+    // FRAME_READY comes after the frame's last clock: from the last active
+    // pixel (driven at its falling edge) to the frame's end is F - last - 1/2
+    // pixel clocks (readout figures of the profile); the card samples a clock
+    // one pixel clock after it is driven and publishes the verdict within
+    // 4 pclk + 12 eclk (docs/card.md).
+    const platform::readout_figures rf = platform::readout(r.top->config().profile);
+    const double to_frame_end_ms = (rf.frame_pclks - rf.last_active_pclk - 0.5) * rf.pclk_ns * 1e-6;
+    const double verdict_bound_ms = (5 * rf.pclk_ns + 12 * cf.eclk_ns) * 1e-6;
+    for (const platform::pair_check& p : r.score.pairs) {
+        const double gap = system_test::ticks_to_ms(p.ready - p.last_active);
+        EXPECT_GE(gap, to_frame_end_ms) << "pair " << p.pair;
+        EXPECT_LE(gap, to_frame_end_ms + verdict_bound_ms) << "pair " << p.pair;
+        if (&p == &r.score.pairs.front())
+            std::printf(
+                "last active pixel to FRAME_READY %.6f ms (frame end %.6f + card %.6f ms)\n", gap,
+                to_frame_end_ms, gap - to_frame_end_ms);
+    }
+
+    const double processing_ms = system_test::host_max_processing_ms(r.top->config(), 12);
+    const platform::mode_estimate ovl =
+        platform::estimate_overlapped(cf.total_ms(), processing_ms, r.budget.period_ms);
+    const platform::mode_estimate seq =
+        platform::estimate_sequential(cf.total_ms(), processing_ms, r.budget.period_ms);
+    EXPECT_TRUE(ovl.fits);
+    EXPECT_FALSE(seq.fits);
+    EXPECT_EQ(r.budget.fits, ovl.fits);
+    EXPECT_TRUE(r.budget.overruns.empty());
+    EXPECT_GE(r.budget.judged_periods, 8);
+    EXPECT_LT(r.budget.max_cpu_busy_ms, r.budget.period_ms);
+    EXPECT_LT(r.budget.max_emif_busy_ms, r.budget.period_ms);
+    EXPECT_EQ(r.budget.drops, 0);
+    EXPECT_EQ(r.budget.overflows, 0);
+    // The platform's own largest pair against the host harness's: the same
+    // firmware on nearly the same images (exposure times differ a little).
+    EXPECT_NEAR(r.budget.max_processing_ms, processing_ms, 0.1 * processing_ms);
+    std::printf(
+        "capture closed form %.3f ms, measured mean %.3f max %.3f ms; processing host %.3f "
+        "platform %.3f ms; sequential needs %.3f ms, overlapped %.3f ms of %.1f; CPU busy max "
+        "%.3f, EMIF busy max %.3f ms; FIFO peak L %u R %u words; latency max %.3f ms\n",
+        cf.total_ms(), r.budget.mean_capture_ms, r.budget.max_capture_ms, processing_ms,
+        r.budget.max_processing_ms, seq.need_ms, ovl.need_ms, r.budget.period_ms,
+        r.budget.max_cpu_busy_ms, r.budget.max_emif_busy_ms, r.budget.fifo_peak_words[0],
+        r.budget.fifo_peak_words[1], r.budget.latency_ms_max);
+}
+
+// Golden per-stage cycle totals (cost model c64x-op-model-v1) of this run:
+// any change to the firmware, the cost model, the scene or the sensors that
+// moves the timing results shows here. Update them only for a change that is
+// meant to move them, and say so.
+TEST(default_scenario, golden_stage_cycles_and_one_timeline) {
+    system_run& r = run();
+    ASSERT_STREQ(dsp::cost::model().id(), "c64x-op-model-v1");
+    constexpr uint64_t golden[dsp::stage_count] = {
+        6000,      // capture: 10 pairs x 600
+        51625350,  // preprocess
+        6484670,   // detect
+        2051687,   // track
+        223599,    // stereo_sad
+        1837562,   // stereo_edge
+        1884,      // xyz
+    };
+    for (int s = 0; s < dsp::stage_count; ++s) {
+        EXPECT_EQ(r.budget.stage_cycles_total[s], golden[s])
+            << dsp::stage_name(static_cast<dsp::stage>(s));
+        std::printf("golden %-11s %10llu cycles\n", dsp::stage_name(static_cast<dsp::stage>(s)),
+                    static_cast<unsigned long long>(r.budget.stage_cycles_total[s]));
+    }
+
+    // Pins and firmware on one timeline, in time order.
+    const platform::timeline& t = r.top->events();
+    EXPECT_TRUE(t.in_time_order());
+    EXPECT_GE(t.count(platform::event_kind::oe), 3u);  // rise, restart fall, rise
+    EXPECT_GE(t.count(platform::event_kind::irq), 2 * r.score.pairs.size());
+    // Every stage begun ends, but the one running when the run stops.
+    EXPECT_LE(t.count(platform::event_kind::stage_begin) - t.count(platform::event_kind::stage_end),
+              1u);
+    EXPECT_GE(t.count(platform::event_kind::stage_begin), 8u * 2);
+    EXPECT_GE(t.count(platform::event_kind::result), 8u);
+    EXPECT_GE(t.count(platform::event_kind::sensor_frame), 2u * 10);
+    EXPECT_GT(r.top->cycle_island().stats().pin_changes, 1000000u);
+    std::printf("timeline %zu events (hash %016llx), pin hash %016llx over %llu changes\n",
+                t.events().size(), static_cast<unsigned long long>(t.hash()),
+                static_cast<unsigned long long>(r.top->cycle_island().pin_hash()),
+                static_cast<unsigned long long>(r.top->cycle_island().stats().pin_changes));
+}
+
+}  // namespace
