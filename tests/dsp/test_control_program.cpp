@@ -12,8 +12,8 @@
 // the test knows which sensor frame each processed buffer holds.
 //
 // The real card RTL and the SystemC model replace the stand-in in the
-// platform task. This file also replaces operator new / delete to prove the
-// frame loop allocates nothing.
+// platform task. tests/support/heap_counter proves the frame loop allocates
+// nothing.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -30,73 +30,8 @@
 #include "tb/host/counting_hal.h"
 #include "tb/host/scenarios.h"
 #include "tb/host/stereo_runner.h"
+#include "tests/support/heap_counter.h"
 
-// ---- heap counting (as tests/dsp/test_firmware_rules.cpp) ---------------------------------
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-
-void* counted_malloc(std::size_t size) {
-    if (g_counting.load(std::memory_order_relaxed)) ++g_allocations;
-    return std::malloc(size ? size : 1);
-}
-void* counted_aligned(std::size_t size, std::align_val_t align) {
-    if (g_counting.load(std::memory_order_relaxed)) ++g_allocations;
-    const std::size_t a = static_cast<std::size_t>(align);
-    return std::aligned_alloc(a, (size + a - 1) / a * a);
-}
-// Out of line, so the compiler does not pair std::free with a new in view.
-__attribute__((noinline)) void release(void* p) {
-    std::free(p);
-}
-void* or_throw(void* p) {
-    if (!p) throw std::bad_alloc();
-    return p;
-}
-}  // namespace
-
-void* operator new(std::size_t size) {
-    return or_throw(counted_malloc(size));
-}
-void* operator new[](std::size_t size) {
-    return or_throw(counted_malloc(size));
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-    return counted_malloc(size);
-}
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
-    return counted_malloc(size);
-}
-void* operator new(std::size_t size, std::align_val_t a) {
-    return or_throw(counted_aligned(size, a));
-}
-void* operator new[](std::size_t size, std::align_val_t a) {
-    return or_throw(counted_aligned(size, a));
-}
-void operator delete(void* p) noexcept {
-    release(p);
-}
-void operator delete[](void* p) noexcept {
-    release(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-    release(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-    release(p);
-}
-void operator delete(void* p, std::align_val_t) noexcept {
-    release(p);
-}
-void operator delete[](void* p, std::align_val_t) noexcept {
-    release(p);
-}
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
-    release(p);
-}
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
-    release(p);
-}
 
 namespace {
 
@@ -1117,11 +1052,9 @@ TEST(ControlProgramRules, RunAllocatesNothingAfterInit) {
     config.max_pairs = 8;
     ASSERT_TRUE(program.init(config, p));
     p.program = &program;
-    g_allocations = 0;
-    g_counting = true;
+    const test_support::heap_counter heap;
     program.run();
-    g_counting = false;
-    const long allocations = g_allocations;
+    const long allocations = heap.allocations();
     expect_sound_run(p);
     EXPECT_EQ(program.stats().pairs_processed, 8u);
     EXPECT_GT(program.stats().pairs_dropped, 0u);

@@ -2,7 +2,7 @@
 // loop allocates nothing; and the cycles it reports per stage are non-zero
 // exactly for the stages that ran, equal to what it charged to the HAL.
 //
-// This file replaces the global operator new / delete to count heap calls.
+// Heap calls are counted by tests/support/heap_counter.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -18,91 +18,9 @@
 #include "tb/host/counting_hal.h"
 #include "tb/host/scenarios.h"
 #include "tb/host/stereo_runner.h"
+#include "tests/support/heap_counter.h"
 
-namespace {
-
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-std::atomic<long> g_deallocations{0};
-
-void* counted_malloc(std::size_t size) {
-    if (g_counting.load(std::memory_order_relaxed)) ++g_allocations;
-    return std::malloc(size ? size : 1);
-}
-
-void* counted_aligned(std::size_t size, std::align_val_t align) {
-    if (g_counting.load(std::memory_order_relaxed)) ++g_allocations;
-    const std::size_t a = static_cast<std::size_t>(align);
-    return std::aligned_alloc(a, (size + a - 1) / a * a);
-}
-
-void counted_free(void* p) {
-    if (p && g_counting.load(std::memory_order_relaxed)) ++g_deallocations;
-    std::free(p);
-}
-
-void* or_throw(void* p) {
-    if (!p) throw std::bad_alloc();
-    return p;
-}
-
-// Counts heap calls made between construction and destruction.
-class heap_counter {
-  public:
-    heap_counter() {
-        g_allocations = 0;
-        g_deallocations = 0;
-        g_counting = true;
-    }
-    ~heap_counter() { g_counting = false; }
-    long allocations() const { return g_allocations; }
-    long deallocations() const { return g_deallocations; }
-};
-
-}  // namespace
-
-void* operator new(std::size_t size) {
-    return or_throw(counted_malloc(size));
-}
-void* operator new[](std::size_t size) {
-    return or_throw(counted_malloc(size));
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-    return counted_malloc(size);
-}
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
-    return counted_malloc(size);
-}
-void* operator new(std::size_t size, std::align_val_t a) {
-    return or_throw(counted_aligned(size, a));
-}
-void* operator new[](std::size_t size, std::align_val_t a) {
-    return or_throw(counted_aligned(size, a));
-}
-void operator delete(void* p) noexcept {
-    counted_free(p);
-}
-void operator delete[](void* p) noexcept {
-    counted_free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-    counted_free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-    counted_free(p);
-}
-void operator delete(void* p, std::align_val_t) noexcept {
-    counted_free(p);
-}
-void operator delete[](void* p, std::align_val_t) noexcept {
-    counted_free(p);
-}
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
-    counted_free(p);
-}
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
-    counted_free(p);
-}
+using test_support::heap_counter;
 
 namespace {
 

@@ -12,11 +12,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <initializer_list>
-#include <new>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -27,36 +25,8 @@
 
 #include "dsp/motion_detect.h"
 #include "tests/support/data_path.h"
+#include "tests/support/heap_counter.h"
 
-// Every allocation in this process is counted, so a test can prove that a
-// call allocated nothing. (GCC cannot see that the replaced new and delete
-// below pair malloc with free.)
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-namespace {
-std::atomic<long> g_allocations{0};
-}
-void* operator new(std::size_t size) {
-    ++g_allocations;
-    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-    throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-    ++g_allocations;
-    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-    throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-    std::free(p);
-}
 
 namespace {
 
@@ -371,10 +341,10 @@ TEST_F(vtest_frames, detector_equals_opencv_pipeline) {
     dsp::motion_detector detector;
     detector.init(frame(0).cols, frame(0).rows);
     const dsp::detect_params params{};  // threshold 20, open 1, close 2, min_area 30
-    const long before = g_allocations.load();
+    const test_support::heap_counter heap;
     const dsp::detection found =
         detector.detect(view(frame(0)), view(frame(1)), view(frame(2)), params);
-    const long allocations = g_allocations.load() - before;
+    const long allocations = heap.allocations();
 
     cv::Mat expected = cv_three_frame(frame(0), frame(1), frame(2), params.threshold);
     expected = cv_dilate(cv_erode(expected));

@@ -7,44 +7,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cstdio>
 #include <cstdlib>
-#include <new>
 #include <random>
 #include <vector>
 
 #include "dsp/tracker.h"
+#include "tests/support/heap_counter.h"
 
-// Every allocation in this process is counted, so a test can prove that
-// update() allocated nothing. (GCC cannot see that the replaced new and
-// delete below pair malloc with free.)
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-namespace {
-std::atomic<long> g_allocations{0};
-}
-void* operator new(std::size_t size) {
-    ++g_allocations;
-    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-    throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-    ++g_allocations;
-    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-    throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-    std::free(p);
-}
 
 namespace {
 
@@ -108,9 +78,9 @@ TEST(sad_tracker, follows_known_shifts_exactly) {
         x += s[0];
         y += s[1];
         const gray_image frame = compose(background, object, x, y);
-        const long before = g_allocations.load();
+        const test_support::heap_counter heap;
         const dsp::track_status status = tracker.update(frame.view());
-        allocations += g_allocations.load() - before;
+        allocations += heap.allocations();
         ASSERT_EQ(status, dsp::track_status::tracking) << "frame " << frames;
         EXPECT_EQ(tracker.position().x, x) << "frame " << frames;
         EXPECT_EQ(tracker.position().y, y) << "frame " << frames;
