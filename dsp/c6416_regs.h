@@ -87,27 +87,7 @@ enum class mtype : uint8_t {
     sync64 = 0xE,
 };
 
-// The asynchronous cycle a CECTL value programs (what the EMIF model needs).
-struct async_timing {
-    uint32_t read_setup, read_strobe, read_hold;
-    uint32_t write_setup, write_strobe, write_hold;  // write_hold includes WRHLDMSB
-    uint32_t turnaround;
-    mtype memory_type;
-};
-
-constexpr async_timing decode_cectl(uint32_t v) {
-    return async_timing{
-        (v & cectl_rdsetup_mask) >> cectl_rdsetup_shift,
-        (v & cectl_rdstrb_mask) >> cectl_rdstrb_shift,
-        (v & cectl_rdhld_mask) >> cectl_rdhld_shift,
-        (v & cectl_wrsetup_mask) >> cectl_wrsetup_shift,
-        (v & cectl_wrstrb_mask) >> cectl_wrstrb_shift,
-        ((v & cectl_wrhld_mask) >> cectl_wrhld_shift) |
-            (((v & cectl_wrhldmsb_mask) >> cectl_wrhldmsb_shift) << 2),
-        (v & cectl_ta_mask) >> cectl_ta_shift,
-        static_cast<mtype>((v & cectl_mtype_mask) >> cectl_mtype_shift),
-    };
-}
+// The EMIF model decodes CECTL with these fields (model/emif/cectl.h).
 
 // The DSK's settings [GEL init_emif(); BSL]. v1 = 100 MHz EMIF, v2/v3 = 120/125 MHz.
 constexpr uint32_t dsk_gblctl = 0x00012070u;         // EK2EN=1, ECLKOUT2 = EMIF clock

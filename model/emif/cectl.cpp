@@ -13,15 +13,19 @@ bool is_async(memory_type t) {
 }
 
 cectl_fields cectl_unpack(uint32_t v) {
+    namespace r = dsp::c6416::emifa;
+    const auto field = [v](uint32_t mask, uint32_t shift) { return (v & mask) >> shift; };
     cectl_fields f;
-    f.wrsetup = (v >> 28) & 0xF;
-    f.wrstrb = (v >> 22) & 0x3F;
-    f.wrhld = ((v >> 20) & 0x3) | (((v >> 3) & 1) << 2);  // WRHLDMSB is the hold's bit 2
-    f.rdsetup = (v >> 16) & 0xF;
-    f.ta = (v >> 14) & 0x3;
-    f.rdstrb = (v >> 8) & 0x3F;
-    f.mtype = (v >> 4) & 0xF;
-    f.rdhld = v & 0x7;
+    f.wrsetup = field(r::cectl_wrsetup_mask, r::cectl_wrsetup_shift);
+    f.wrstrb = field(r::cectl_wrstrb_mask, r::cectl_wrstrb_shift);
+    // WRHLDMSB is the hold's bit 2
+    f.wrhld = field(r::cectl_wrhld_mask, r::cectl_wrhld_shift) |
+              (field(r::cectl_wrhldmsb_mask, r::cectl_wrhldmsb_shift) << 2);
+    f.rdsetup = field(r::cectl_rdsetup_mask, r::cectl_rdsetup_shift);
+    f.ta = field(r::cectl_ta_mask, r::cectl_ta_shift);
+    f.rdstrb = field(r::cectl_rdstrb_mask, r::cectl_rdstrb_shift);
+    f.mtype = field(r::cectl_mtype_mask, r::cectl_mtype_shift);
+    f.rdhld = field(r::cectl_rdhld_mask, r::cectl_rdhld_shift);
     return f;
 }
 

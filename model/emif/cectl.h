@@ -13,23 +13,13 @@
 
 #include <cstdint>
 
+#include "dsp/c6416_regs.h"
+
 namespace emif {
 
-// MTYPE values (hardware-facts.md section 3).
-enum class memory_type : uint8_t {
-    async8 = 0x0,
-    async16 = 0x1,
-    async32 = 0x2,
-    sdram32 = 0x3,
-    sync32 = 0x4,
-    sdram8 = 0x8,
-    sdram16 = 0x9,
-    sync8 = 0xA,
-    sync16 = 0xB,
-    async64 = 0xC,
-    sdram64 = 0xD,
-    sync64 = 0xE,
-};
+// MTYPE values (hardware-facts.md section 3), one definition with the
+// firmware's register header.
+using memory_type = dsp::c6416::emifa::mtype;
 
 bool is_sdram(memory_type t);
 bool is_async(memory_type t);
