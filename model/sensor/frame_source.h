@@ -15,8 +15,12 @@ namespace sensor {
 
 struct frame_request {
     scene::camera_id camera = scene::camera_id::left;
-    // Which scene frame: advances by one per frame period of the sensor, also
-    // across OE restarts and dropped frames; an extra frame repeats it.
+    // Which scene frame: the frame-period time slot the frame starts in,
+    // round((frame_start - scene_origin) / frame period) (docs/sensor.md
+    // "Scene frames"), so sensors in step ask for the same one whatever their
+    // OE restarts. A frame that follows one cut short by OE inside the same
+    // period asks for the same scene frame again (with its own timing); an
+    // extra frame repeats the previous one without asking.
     uint64_t scene_frame = 0;
     // True timing of this frame on the sensor's own clock: the exposure of the
     // whole frame is taken as [exposure_start, exposure_start + exposure),

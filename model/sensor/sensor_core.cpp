@@ -126,6 +126,17 @@ sensor_core::sensor_core(const sensor_profile& profile, scene::camera_id camera,
     enter_const_phase(phase::idle, never);
 }
 
+uint64_t sensor_core::scene_slot_of(simtime::ticks start_tick) const {
+    // P = frame_pclks * N / D ticks, so floor((x + P/2) / P) =
+    // floor((2 D x + F N) / (2 F N)) in integers (128-bit: x up to 2^62).
+    const simtime::rational_ticks pclk = m_profile.pclk_period();
+    const __int128 fn = static_cast<__int128>(m_profile.frame_pclks()) * pclk.num;
+    const __int128 x = static_cast<__int128>(start_tick) - m_config.scene_origin;
+    const __int128 num = 2 * static_cast<__int128>(pclk.den) * x + fn;
+    if (num < 0) return 0;
+    return static_cast<uint64_t>(num / (2 * fn));
+}
+
 void sensor_core::set_gain_q8(int gain_q8) {
     if (gain_q8 <= 0) throw std::invalid_argument("gain_q8 must be > 0");
     m_config.gain_q8 = gain_q8;
@@ -261,7 +272,10 @@ void sensor_core::begin_frame() {
         t.faults |= fault_bit(fault_kind::extra_frame);
         m_next_is_extra = false;
     } else {
-        t.scene_frame = m_scene_next++;
+        // The time slot, not a count of this sensor's frames: two sensors'
+        // counts stay apart after an OE stop that came when one had begun a
+        // frame and the other had not.
+        t.scene_frame = scene_slot_of(t.start_tick);
     }
     m_extra_after = false;
     m_frame_dropped = false;
@@ -285,7 +299,11 @@ void sensor_core::begin_frame() {
             t.faults |= fault_bit(g.bit == pin_word::vsync_bit ? fault_kind::vsync_glitch
                                                                : fault_kind::href_glitch);
 
-    if (!m_frame_dropped && (!m_have_image || m_image_scene_frame != t.scene_frame)) {
+    // Only a repeated frame reuses the held image. A new frame in the slot of
+    // one cut short by OE asks again: a time-based source (the renderer) then
+    // renders its own exposure window, the same as an in-step partner's.
+    const bool reuse = t.repeated && m_have_image && m_image_scene_frame == t.scene_frame;
+    if (!m_frame_dropped && !reuse) {
         const int64_t line = m_profile.line_pclks;
         const uint64_t first_active =
             m_cycle +

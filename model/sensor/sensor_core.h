@@ -57,6 +57,10 @@ struct sensor_config {
     int gain_q8 = 256;                   // analogue gain, Q8 (256 = 1.0)
     int exposure_lines = 0;              // 0 = the profile's exposure_lines
     simtime::ticks clock_origin = 0;     // tick of cycle 0's rising edge
+    // Time origin of the scene frame numbering: scene frame k is the frame
+    // period slot centred on scene_origin + k * frame period. Give every sensor
+    // of a rig the same origin (the default, 0 = simulation start, does).
+    simtime::ticks scene_origin = 0;
 };
 
 // One OE start: when OE was sampled high and how long the start-up took.
@@ -101,6 +105,14 @@ class sensor_core {
     const std::vector<frame_truth>& truth() const { return m_truth; }
     const std::vector<start_record>& starts() const { return m_starts; }
     bool running() const { return m_phase != phase::idle; }
+
+    // The scene frame a frame starting (line 0, column 0 rising edge) at
+    // start_tick shows: the profile's nominal frame period slot the start falls
+    // in, rounded to the nearest slot, floor((start - scene_origin + P/2) / P),
+    // exact rational arithmetic; 0 for a start more than P/2 before the origin.
+    // Derived from time, not counted, so sensors in step show the same scene
+    // frame whatever their restart history (docs/sensor.md "Scene frames").
+    uint64_t scene_slot_of(simtime::ticks start_tick) const;
 
     // Take effect from the next frame.
     void set_gain_q8(int gain_q8);
@@ -198,7 +210,6 @@ class sensor_core {
 
     // Current frame.
     uint64_t m_frames_started = 0;
-    uint64_t m_scene_next = 0;
     uint64_t m_frame_start_cycle = 0;
     int m_line = 0;
     bool m_frame_dropped = false;

@@ -11,7 +11,7 @@ namespace sensor {
 
 struct frame_truth {
     uint64_t index = 0;             // frame number: frames started since power-on
-    uint64_t scene_frame = 0;       // which scene image it shows (frame_request)
+    uint64_t scene_frame = 0;       // its time slot, or the repeated frame's (frame_request)
     uint64_t start_cycle = 0;       // pixel clock of line 0, column 0
     simtime::ticks start_tick = 0;  // rising edge of that clock (the true start)
     simtime::ticks vsync_tick = 0;  // falling edge of that clock: VSYNC goes high

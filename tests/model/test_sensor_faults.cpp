@@ -163,13 +163,20 @@ TEST(SensorFaults, ExtraFrameRepeatsTheFrameAndDelaysTheRestByOnePeriod) {
                                [&](uint64_t n) -> uint16_t {
                                    if (n < start(2)) return ref.rec[n].pins.bits;
                                    if (n < start(3)) return ref.rec[n - frame].pins.bits;  // repeat
-                                   return ref.rec[n - frame].pins.bits;
+                                   // One period late on a periodic timing, showing the
+                                   // scene frame of its own time slot: the reference.
+                                   return ref.rec[n].pins.bits;
                                }),
               0u);
     ASSERT_GE(out.truth.size(), 4u);
     EXPECT_TRUE(out.truth[2].repeated);
     EXPECT_EQ(out.truth[2].scene_frame, 1u);
-    EXPECT_EQ(out.truth[3].scene_frame, 2u);
+    EXPECT_EQ(out.truth[3].scene_frame, 3u) << "slot 3: scene frame 2 is never shown";
+    EXPECT_EQ(out.truth[3].index, 3u);
+    EXPECT_TRUE(pair_in_step(out.truth[3], ref.truth[3], {1050, 1}));
+    // The repeat is the held image: no request for it.
+    ASSERT_EQ(out.requests.size(), 4u);
+    EXPECT_EQ(out.requests[2].scene_frame, 3u);
     EXPECT_EQ(rises(out.rec, pin_word::vsync_bit).size(),
               rises(ref.rec, pin_word::vsync_bit).size())
         << "same count in the window: one more pulse, the last one pushed out";
