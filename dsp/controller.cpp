@@ -112,7 +112,8 @@ box object_core(box object) {
 }
 
 // stage_begin / stage_end around a scope; the cycles charged inside go to
-// the HAL (once, at the end) and to the frame's record.
+// the HAL (once, at the end, with the SDRAM traffic of its kernels) and to
+// the frame's record.
 class stage_scope {
   public:
     stage_scope(hal& hardware, stage s, frame_output& out)
@@ -120,7 +121,7 @@ class stage_scope {
         m_hal.stage_begin(m_stage);
     }
     ~stage_scope() {
-        m_hal.charge_cycles(m_stage, m_cycles);
+        m_hal.charge_with_traffic(m_stage, m_cycles, m_traffic);
         m_out.stage_cycles[static_cast<int>(m_stage)] += m_cycles;
         m_hal.stage_end(m_stage);
     }
@@ -128,12 +129,17 @@ class stage_scope {
     stage_scope& operator=(const stage_scope&) = delete;
 
     void charge(uint64_t cycles) { m_cycles += cycles; }
+    void charge(uint64_t cycles, const sdram_traffic& traffic) {
+        m_cycles += cycles;
+        m_traffic += traffic;
+    }
 
   private:
     hal& m_hal;
     stage m_stage;
     frame_output& m_out;
     uint64_t m_cycles = 0;
+    sdram_traffic m_traffic;
 };
 
 }  // namespace
@@ -183,7 +189,7 @@ struct controller::impl {
     // Each returns whether an object box is known after it.
     bool detect(frame_output& out);
     bool track(frame_output& out);
-    box refit_box(box last, box found, uint64_t* cycles);
+    box refit_box(box last, box found, uint64_t* cycles, sdram_traffic* traffic);
     void stereo_sad(box object, frame_output& out);
     void stereo_edge(box object, frame_output& out);
     bool choose_disparity(frame_output& out) const;
@@ -317,9 +323,13 @@ void controller::impl::preprocess(gray_cplane raw_left, gray_cplane raw_right, f
                            .gain_q8;
     if (frames_in_history < history_frames) ++frames_in_history;
     uint64_t per_image = cost::demosaic_gray_cycles(width, height, config.frame_memory);
-    if (config.brightness.enabled)
+    sdram_traffic traffic = cost::demosaic_gray_traffic(width, height, config.frame_memory);
+    if (config.brightness.enabled) {
         per_image += cost::brightness_cycles(width, height, config.frame_memory);
-    scope.charge(2 * per_image);
+        traffic += cost::brightness_traffic(width, height, config.frame_memory);
+    }
+    traffic += traffic;  // both images
+    scope.charge(2 * per_image, traffic);
 }
 
 // Stage detect: three-frame differencing gives object(t-1) in the middle
@@ -332,8 +342,9 @@ bool controller::impl::detect(frame_output& out) {
     const int morphology_passes = 2 * (config.detect.open_passes + config.detect.close_passes);
     scope.charge(
         cost::three_frame_difference_cycles(width, height, config.frame_memory) +
-        cost::morphology_cycles(width, height, morphology_passes) +
-        cost::connected_components_cycles(width, height, detector.last_foreground_pixels()));
+            cost::morphology_cycles(width, height, morphology_passes) +
+            cost::connected_components_cycles(width, height, detector.last_foreground_pixels()),
+        cost::three_frame_difference_traffic(width, height, config.frame_memory));
     if (!found.found) return false;
     out.motion_found = true;
     out.motion_box = found.bbox;
@@ -380,8 +391,9 @@ bool controller::impl::track(frame_output& out) {
 
     uint64_t cycles = 0;
     const box found = tracker.position();
-    const box resized = refit_box(last, found, &cycles);
-    scope.charge(cycles);
+    sdram_traffic traffic;
+    const box resized = refit_box(last, found, &cycles, &traffic);
+    scope.charge(cycles, traffic);
     if (resized.x != found.x || resized.y != found.y || resized.width != found.width ||
         resized.height != found.height) {
         tracker.start(history(0), resized);
@@ -399,7 +411,7 @@ bool controller::impl::track(frame_output& out) {
 // makes the box drift by the rounding of the object's motion (0.3 px per
 // frame at 0.7 px/frame, measured 9 px after 30 frames without it). Too few
 // moving pixels (the object stopped): the SAD box is kept.
-box controller::impl::refit_box(box last, box found, uint64_t* cycles) {
+box controller::impl::refit_box(box last, box found, uint64_t* cycles, sdram_traffic* traffic) {
     const box region = size_rule_region(last, width, height);
     const gray_plane mask{size_mask, region.width, region.height, region.width};
     auto in_region = [&](gray_cplane frame) {
@@ -436,6 +448,8 @@ box controller::impl::refit_box(box last, box found, uint64_t* cycles) {
     *cycles =
         cost::three_frame_difference_cycles(region.width, region.height, config.frame_memory) +
         2 * cost::pattern_copy_cycles(region.width, region.height);
+    *traffic =
+        cost::three_frame_difference_traffic(region.width, region.height, config.frame_memory);
     if (count * 8 < last.width * last.height) return found;
 
     const track_params& p = config.track;

@@ -90,6 +90,22 @@ struct event_record {
     uint32_t detail = 0;
 };
 
+// Bytes a stage's kernels move between the L2 cache and the DSK's SDRAM on
+// EMIFA CE0 (the cost model's SDRAM streams, dsp/kernel_costs.h). The
+// platform puts them on the EMIF bus as L2 line transfers, where they take
+// bus time and compete with the card's capture (docs/c6416.md).
+struct sdram_traffic {
+    uint64_t bytes_read = 0;
+    uint64_t bytes_written = 0;
+
+    bool empty() const { return bytes_read == 0 && bytes_written == 0; }
+    sdram_traffic& operator+=(const sdram_traffic& other) {
+        bytes_read += other.bytes_read;
+        bytes_written += other.bytes_written;
+        return *this;
+    }
+};
+
 class hal {
   public:
     virtual ~hal() = default;
@@ -101,6 +117,13 @@ class hal {
     // CPU time spent on a stage, in C64x cycles from the cost model
     // (dsp/c64x_cost_model.h). The platform advances simulated time by it.
     virtual void charge_cycles(stage s, uint64_t cycles) = 0;
+    // The same charge, for kernels whose data lives in SDRAM: `traffic` is
+    // what those cycles' memory stalls moved over EMIFA. A HAL with a bus
+    // model replays it on the bus during the charge; the default ignores it.
+    virtual void charge_with_traffic(stage s, uint64_t cycles, const sdram_traffic& traffic) {
+        (void)traffic;
+        charge_cycles(s, cycles);
+    }
 
     // The firmware enters / leaves a stage (for the timeline and waveforms).
     virtual void stage_begin(stage) {}

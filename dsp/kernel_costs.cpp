@@ -343,6 +343,29 @@ kernel_profile triangulate_profile() {
     return p;
 }
 
+sdram_traffic sdram_traffic_of(const kernel_profile& kernel) {
+    sdram_traffic t;
+    for (int i = 0; i < kernel.traffic_count; ++i) {
+        const memory_traffic& stream = kernel.traffic[i];
+        if (stream.where != placement::sdram) continue;
+        t.bytes_read += stream.bytes_read;
+        t.bytes_written += stream.bytes_written;
+    }
+    return t;
+}
+
+sdram_traffic demosaic_gray_traffic(int width, int height, memory where) {
+    return sdram_traffic_of(demosaic_gray_profile(width, height, where));
+}
+
+sdram_traffic brightness_traffic(int width, int height, memory where) {
+    return sdram_traffic_of(brightness_profile(width, height, where));
+}
+
+sdram_traffic three_frame_difference_traffic(int width, int height, memory where) {
+    return sdram_traffic_of(three_frame_difference_profile(width, height, where));
+}
+
 uint64_t demosaic_gray_cycles(int width, int height, memory where) {
     return g_model.cycles(demosaic_gray_profile(width, height, where));
 }

@@ -16,6 +16,7 @@
 #include <cstdint>
 
 #include "dsp/c64x_cost_model.h"
+#include "dsp/hal.h"
 
 namespace dsp::cost {
 
@@ -51,6 +52,15 @@ uint64_t sobel_cycles(int width, int rows);
 uint64_t edge_match_cycles(int width, int lines, int max_disparity, int min_disparity = 0);
 // Triangulation: depth and X, Y (64-bit divisions in software).
 uint64_t triangulate_cycles();
+
+// SDRAM traffic of a kernel call: the bytes of its streams that live in
+// SDRAM (dsp::hal::charge_with_traffic). The memory stall cycles of the
+// figures above already include the CPU's wait for exactly these bytes
+// (cost_model::memory_cycles); the platform replays them on the EMIF bus.
+sdram_traffic sdram_traffic_of(const c64x::kernel_profile& kernel);
+sdram_traffic demosaic_gray_traffic(int width, int height, memory where = memory::l2);
+sdram_traffic brightness_traffic(int width, int height, memory where = memory::l2);
+sdram_traffic three_frame_difference_traffic(int width, int height, memory where = memory::l2);
 
 // The op profiles behind the figures above (same arguments).
 c64x::kernel_profile demosaic_gray_profile(int width, int height, memory where = memory::l2);

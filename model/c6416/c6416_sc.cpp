@@ -26,7 +26,11 @@ class c6416_sc::firmware_hal final : public dsp::hal {
   public:
     explicit firmware_hal(c6416_sc& chip) : m_chip(chip) {}
 
-    void charge_cycles(dsp::stage s, uint64_t cycles) override { m_chip.charge(s, cycles); }
+    void charge_cycles(dsp::stage s, uint64_t cycles) override { m_chip.charge(s, cycles, {}); }
+    void charge_with_traffic(dsp::stage s, uint64_t cycles,
+                             const dsp::sdram_traffic& traffic) override {
+        m_chip.charge(s, cycles, traffic);
+    }
     void stage_begin(dsp::stage s) override {
         if (m_chip.m_stage_observer) m_chip.m_stage_observer(sc_core::sc_time_stamp(), s, true);
     }
@@ -69,7 +73,8 @@ c6416_sc::c6416_sc(sc_core::sc_module_name name, const c6416_config& config)
       m_timer_event("timer_event"),
       m_edma_kick("edma_kick"),
       m_irq_event("irq_event"),
-      m_firmware_returned_event("firmware_returned_event") {
+      m_firmware_returned_event("firmware_returned_event"),
+      m_line_buffer(config.l2_line_bytes < 4 ? 4 : config.l2_line_bytes, 0) {
     if (sc_core::sc_get_time_resolution() != sc_time(1, sc_core::SC_FS)) {
         SC_REPORT_ERROR(this->name(), "the C6416 model needs a 1 fs time resolution");
     }
@@ -129,7 +134,7 @@ void c6416_sc::cpu_thread() {
     if (m_config.stop_when_firmware_returns) sc_core::sc_stop();
 }
 
-void c6416_sc::charge(dsp::stage s, uint64_t cycles) {
+void c6416_sc::charge(dsp::stage s, uint64_t cycles, const dsp::sdram_traffic& traffic) {
     const uint64_t k0 = cpu_cycle_at_or_after(sc_core::sc_time_stamp());
     uint64_t scaled = cycles;
     if (m_scale_num != m_scale_den) {
@@ -142,8 +147,52 @@ void c6416_sc::charge(dsp::stage s, uint64_t cycles) {
     m_stage_cycles[static_cast<int>(s)] += scaled;
     const sc_time start = time_of_cpu_cycle(k0);
     const sc_time target = time_of_cpu_cycle(k0 + scaled);
+    replay_traffic(k0, scaled, traffic);
+    const sc_time now = sc_core::sc_time_stamp();
+    if (now > target) {  // the bus held the last line back: the CPU waited for it
+        m_sdram_late += now - target;
+        m_cpu_busy += now - start;
+        return;
+    }
     m_cpu_busy += target - start;
-    if (target > sc_core::sc_time_stamp()) sc_core::wait(target - sc_core::sc_time_stamp());
+    if (target > now) sc_core::wait(target - now);
+}
+
+// The charge's SDRAM traffic as L2 line transfers on emifa_cpu, spread over
+// its CPU cycles [first_cycle, first_cycle + cycles): transfer k of T waits
+// for CPU cycle first_cycle + cycles k / T (or goes at once if the previous
+// one ended later). Write-backs are interleaved evenly among the reads
+// (Bresenham), each after at least one fetch.
+void c6416_sc::replay_traffic(uint64_t first_cycle, uint64_t cycles,
+                              const dsp::sdram_traffic& traffic) {
+    if (traffic.empty() || !m_config.sdram_over_emifa || !m_config.replay_sdram_traffic ||
+        emifa_cpu.size() == 0) {
+        return;
+    }
+    const uint64_t line = m_line_buffer.size();
+    const uint64_t written = (traffic.bytes_written + line - 1) / line;
+    const uint64_t fetched = (traffic.bytes_read + line - 1) / line + written;
+    const uint64_t transfers = fetched + written;
+    const uint64_t window_lines = std::max<uint64_t>(1, m_config.sdram_traffic_bytes / line);
+    for (uint64_t k = 0; k < transfers; ++k) {
+        const uint64_t slot_cycle =
+            first_cycle +
+            static_cast<uint64_t>(static_cast<unsigned __int128>(cycles) * k / transfers);
+        const sc_time slot = time_of_cpu_cycle(slot_cycle);
+        if (slot > sc_core::sc_time_stamp()) sc_core::wait(slot - sc_core::sc_time_stamp());
+        const bool write_back = (k + 1) * written / transfers > k * written / transfers;
+        const uint32_t address = m_config.sdram_traffic_base +
+                                 static_cast<uint32_t>((m_traffic_cursor++ % window_lines) * line);
+        const sc_time issued = sc_core::sc_time_stamp();
+        bus_access(emifa_cpu, write_back ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND, address,
+                   m_line_buffer.data(), static_cast<uint32_t>(line), static_cast<uint32_t>(line));
+        m_sdram_transfer += sc_core::sc_time_stamp() - issued;
+        if (write_back) {
+            ++m_sdram_lines_written;
+        } else {
+            ++m_sdram_lines_read;
+        }
+    }
 }
 
 void c6416_sc::wait_cpu_cycles(uint64_t cycles) {

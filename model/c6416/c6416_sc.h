@@ -34,6 +34,18 @@
 // (tb/sc_test_main.cpp).
 // "CPU too slow" fault: set_cycle_scale(num, den, from): cycles charged
 // after `from` are multiplied by num / den (rounded up).
+//
+// The firmware's own SDRAM traffic (dsp::hal::charge_with_traffic): the
+// bytes a charge's kernels stream from / to SDRAM go out on emifa_cpu as L2
+// line transfers (one 128-byte burst per line read; a line written is
+// fetched (write-allocate) and later written back: two), spread evenly over
+// the charge's CPU cycles (transfer k issued at CPU cycle k0 + n k / T), so
+// they take EMIF bus time and compete with the EDMA's capture in parallel
+// with the CPU's work. The charged cycles stay the cost model's (whose
+// memory stalls already count the CPU's wait for these lines); only if the
+// bus is so busy that the last transfer completes after the charged end
+// does the CPU wait for it (sdram_late_time()). The transfers read and write
+// a reserved SDRAM window (config), not the firmware's buffers.
 #pragma once
 
 #include <tlm_utils/simple_initiator_socket.h>
@@ -63,6 +75,18 @@ struct c6416_config {
     // CPU cycles one access to a C6416 peripheral register costs (ASSUMED 0:
     // the C64x peripheral bus latency was not at hand).
     uint32_t peripheral_access_cycles = 0;
+    // The firmware's SDRAM traffic goes out on emifa_cpu (see the top comment;
+    // only with sdram_over_emifa). false: it is ignored (the cost model's
+    // stall cycles are all it costs, as before issue 5).
+    bool replay_sdram_traffic = true;
+    // L2 cache line: the unit of the replayed transfers (ASSUMED 128 bytes,
+    // as dsp::c64x::model_params::l2_line_bytes; NOT FOUND in the sheet).
+    uint32_t l2_line_bytes = 128;
+    // SDRAM window the replayed transfers read and write (line after line,
+    // wrapping): the top 4 MB of the DSK's 16 MB, which the firmware's pair
+    // buffers (from 0x80000000, ~1.2 MB) never reach. Its bytes are garbage.
+    uint32_t sdram_traffic_base = 0x80C00000u;
+    uint32_t sdram_traffic_bytes = 4u << 20;
     // Stack of the CPU thread that runs the firmware (DESIGN.md, "Known traps").
     std::size_t cpu_stack_bytes = std::size_t{64} << 20;
     // sc_stop() when the firmware's entry returns.
@@ -138,6 +162,14 @@ class c6416_sc : public sc_core::sc_module {
     sc_core::sc_time edma_busy_time() const { return m_edma_busy; }
     uint64_t edma_bytes() const { return m_edma_bytes; }
     uint64_t bus_errors() const { return m_bus_errors; }
+    // The firmware's SDRAM traffic replayed on emifa_cpu: L2 lines read
+    // (reads and write-allocate fetches) and written back, the time the
+    // transfers took (queue + bus, summed), and the time the CPU waited past
+    // a charge's end for its last transfer.
+    uint64_t sdram_lines_read() const { return m_sdram_lines_read; }
+    uint64_t sdram_lines_written() const { return m_sdram_lines_written; }
+    sc_core::sc_time sdram_transfer_time() const { return m_sdram_transfer; }
+    sc_core::sc_time sdram_late_time() const { return m_sdram_late; }
 
   private:
     class firmware_hal;
@@ -149,7 +181,8 @@ class c6416_sc : public sc_core::sc_module {
     void timer_method();
 
     // CPU side (called on the CPU thread through firmware_hal).
-    void charge(dsp::stage s, uint64_t cycles);
+    void charge(dsp::stage s, uint64_t cycles, const dsp::sdram_traffic& traffic);
+    void replay_traffic(uint64_t first_cycle, uint64_t cycles, const dsp::sdram_traffic& traffic);
     void wait_cpu_cycles(uint64_t cycles);
     uint32_t cpu_read32(uint32_t address);
     void cpu_write32(uint32_t address, uint32_t value);
@@ -217,6 +250,10 @@ class c6416_sc : public sc_core::sc_module {
     sc_core::sc_time m_cpu_busy, m_cpu_bus, m_edma_busy;
     uint64_t m_edma_bytes = 0;
     uint64_t m_bus_errors = 0;
+    std::vector<uint8_t> m_line_buffer;  // data of the replayed line transfers
+    uint64_t m_traffic_cursor = 0;       // next line of the SDRAM window
+    uint64_t m_sdram_lines_read = 0, m_sdram_lines_written = 0;
+    sc_core::sc_time m_sdram_transfer, m_sdram_late;
 };
 
 // Ticks (1/18 ns) of the earliest tick whose femtosecond time is >= fs.

@@ -115,6 +115,7 @@ budget_report check_budget(const platform_top& top, const scoreboard_report& sco
             asleep += overlap(probe.asleep_since(), run_end, p.begin, p.end);
         p.cpu_busy_ms = ticks_to_ms(config.period - asleep);
         p.emif_busy_ms = 1e-6 * eclk_ns * static_cast<double>(samples[k].emif_busy_edges);
+        p.cpu_words = samples[k].cpu_words;
         for (int c = 0; c < 2; ++c) p.fifo_peak_words[c] = samples[k].fifo_peak_words[c];
         p.overflow = samples[k].fifo_overflow[0] || samples[k].fifo_overflow[1];
         for (const charge_record& c : probe.charges())

@@ -46,7 +46,8 @@ struct period_budget {
     simtime::ticks begin = 0, end = 0;
     bool judged = false;
     double cpu_busy_ms = 0.0;
-    double emif_busy_ms = 0.0;
+    double emif_busy_ms = 0.0;  // every requester: capture, CPU registers, firmware SDRAM
+    uint64_t cpu_words = 0;     // words the CPU moved on the bus (SDRAM lines, registers)
     uint32_t fifo_peak_words[2] = {};
     bool overflow = false;
     int drops = 0;

@@ -389,6 +389,9 @@ void island::close_period() {
     const uint64_t busy = m_engine.stats().busy_edges;
     m_current.emif_busy_edges = busy - m_busy_at_boundary;
     m_busy_at_boundary = busy;
+    const uint64_t cpu_words = m_engine.stats().words[static_cast<int>(emif::requester::cpu)];
+    m_current.cpu_words = cpu_words - m_cpu_words_at_boundary;
+    m_cpu_words_at_boundary = cpu_words;
     for (int c = 0; c < 2; ++c) {
         if (m_current.fifo_peak_words[c] > m_fifo_peak_run[c])
             m_fifo_peak_run[c] = m_current.fifo_peak_words[c];

@@ -70,6 +70,7 @@ struct island_config {
 struct period_sample {
     uint64_t eclk_edges = 0;
     uint64_t emif_busy_edges = 0;      // engine: bus in use or turning around
+    uint64_t cpu_words = 0;            // engine: words the CPU moved (SDRAM lines, registers)
     uint32_t fifo_peak_words[2] = {};  // card FIFO write-side level, maximum
     bool fifo_overflow[2] = {};        // the card's sticky overflow flag rose in the period
 };
@@ -192,6 +193,7 @@ class island : public sc_core::sc_module {
     period_sample m_current;
     simtime::ticks m_next_boundary = 0;
     uint64_t m_busy_at_boundary = 0;
+    uint64_t m_cpu_words_at_boundary = 0;
     uint64_t m_eclk_at_boundary = 0;
     uint32_t m_fifo_peak_run[2] = {};
     bool m_fifo_overflow_seen[2] = {};

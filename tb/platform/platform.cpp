@@ -22,6 +22,7 @@ c6416::c6416_config cpu_config(const platform_config& config) {
     c6416::c6416_config c;
     c.dsk = config.dsk;
     c.sdram_over_emifa = true;
+    c.replay_sdram_traffic = config.sdram_traffic_on_bus;
     return c;
 }
 

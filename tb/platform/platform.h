@@ -62,6 +62,7 @@ class platform_top {
     island& cycle_island() { return *m_island; }
     const island& cycle_island() const { return *m_island; }
     c6416::c6416_sc& cpu() { return *m_cpu; }
+    const c6416::c6416_sc& cpu() const { return *m_cpu; }
     const emif::emif_async_master& engine() const { return m_engine; }
     const probe_hal& probe() const { return *m_probe; }
     bool firmware_started() const { return m_probe != nullptr; }

@@ -8,6 +8,7 @@ dsp::controller_config pipeline_config(const platform_config& config) {
     dsp::controller_config c = host::controller_config_for(config.scenario.scene.rig);
     c.cfa = config.profile.cfa;
     if (config.track_search_radius > 0) c.track.search_radius = config.track_search_radius;
+    c.frame_memory = config.frame_memory;
     return c;
 }
 

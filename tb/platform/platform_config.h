@@ -57,6 +57,12 @@ struct platform_config {
     // Applied to the controller configuration made for the scenario's rig.
     int track_search_radius = 0;  // 0: the firmware default (dsp::track_params)
     uint32_t capture_cycles = 600;
+    // Where the firmware's frame-scale buffers live (the cost model's SDRAM
+    // stalls, dsp::controller_config::frame_memory), and whether the SDRAM
+    // traffic of its kernels goes out on EMIFA as L2 line transfers
+    // (docs/c6416.md): bus time that competes with the capture (issue 5).
+    dsp::cost::memory frame_memory = dsp::cost::memory::sdram;
+    bool sdram_traffic_on_bus = true;
     // The firmware's card watchdog (timer 1): every period it reads the card's
     // event counters over the EMIF; 0: none.
     uint32_t watchdog_ms = 500;

@@ -27,6 +27,8 @@ void usage(std::FILE* out) {
                  "  --still-frames N    still frames at the start of the default scenario (3)\n"
                  "  --quantum-ns Q      island sync quantum (default 46667: one line)\n"
                  "  --watchdog-ms W     the firmware's card watchdog period (default 500, 0 off)\n"
+                 "  --frame-memory M    l2 | sdram: where the firmware's frames live (sdram)\n"
+                 "  --no-sdram-bus      keep the firmware's SDRAM traffic off the EMIF bus\n"
                  "  --no-noise          sensors without noise\n"
                  "  --no-pin-hash       do not hash pin changes\n"
                  "  --timeline PATH     write the timeline of pins and firmware as CSV\n"
@@ -80,6 +82,18 @@ int sc_main(int argc, char* argv[]) {
             config.quantum = v * simtime::ticks_per_ns;
         } else if (arg == "--watchdog-ms" && has_value && parse_int(argv[++i], &v) && v >= 0) {
             config.watchdog_ms = static_cast<uint32_t>(v);
+        } else if (arg == "--frame-memory" && has_value) {
+            const std::string m = argv[++i];
+            if (m == "l2")
+                config.frame_memory = dsp::cost::memory::l2;
+            else if (m == "sdram")
+                config.frame_memory = dsp::cost::memory::sdram;
+            else {
+                std::fprintf(stderr, "unknown frame memory '%s'\n", m.c_str());
+                return 2;
+            }
+        } else if (arg == "--no-sdram-bus") {
+            config.sdram_traffic_on_bus = false;
         } else if (arg == "--no-noise") {
             config.sensor_noise = false;
         } else if (arg == "--no-pin-hash") {

@@ -29,8 +29,20 @@ void probe_hal::charge_cycles(dsp::stage s, uint64_t cycles) {
     enter();
     const simtime::ticks begin = now();
     m_inner.charge_cycles(s, cycles);
-    m_charges.push_back({begin, now(), s, cycles});
+    m_charges.push_back({begin, now(), s, cycles, {}});
     m_stage_cycles[static_cast<int>(s)] += cycles;
+    m_open_cycles += cycles;
+    leave();
+}
+
+void probe_hal::charge_with_traffic(dsp::stage s, uint64_t cycles,
+                                    const dsp::sdram_traffic& traffic) {
+    enter();
+    const simtime::ticks begin = now();
+    m_inner.charge_with_traffic(s, cycles, traffic);
+    m_charges.push_back({begin, now(), s, cycles, traffic});
+    m_stage_cycles[static_cast<int>(s)] += cycles;
+    m_stage_traffic[static_cast<int>(s)] += traffic;
     m_open_cycles += cycles;
     leave();
 }

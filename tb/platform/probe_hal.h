@@ -23,6 +23,7 @@ struct charge_record {
     simtime::ticks begin = 0, end = 0;  // simulated interval the CPU spent on it
     dsp::stage stage = dsp::stage::capture;
     uint64_t cycles = 0;
+    dsp::sdram_traffic traffic;  // SDRAM bytes its kernels moved (replayed on the EMIF)
 };
 
 struct tick_interval {
@@ -52,6 +53,8 @@ class probe_hal final : public dsp::hal {
     void set_event_hook(event_hook hook) { m_hook = std::move(hook); }
 
     void charge_cycles(dsp::stage s, uint64_t cycles) override;
+    void charge_with_traffic(dsp::stage s, uint64_t cycles,
+                             const dsp::sdram_traffic& traffic) override;
     void stage_begin(dsp::stage s) override;
     void stage_end(dsp::stage s) override;
     uint32_t read32(uint32_t address) override;
@@ -73,6 +76,10 @@ class probe_hal final : public dsp::hal {
     const std::vector<fw_event>& fw_events() const { return m_fw_events; }
     const std::vector<fw_result>& results() const { return m_results; }
     uint64_t stage_cycles(dsp::stage s) const { return m_stage_cycles[static_cast<int>(s)]; }
+    // SDRAM bytes charged per stage (dsp::hal::charge_with_traffic), whole run.
+    const dsp::sdram_traffic& stage_traffic(dsp::stage s) const {
+        return m_stage_traffic[static_cast<int>(s)];
+    }
     double firmware_wall_s() const { return m_firmware_wall_s; }
     // The stage the firmware is in (between stage_begin and stage_end), -1 none.
     int open_stage() const { return m_open_stage; }
@@ -91,6 +98,7 @@ class probe_hal final : public dsp::hal {
     std::vector<fw_event> m_fw_events;
     std::vector<fw_result> m_results;
     uint64_t m_stage_cycles[dsp::stage_count] = {};
+    dsp::sdram_traffic m_stage_traffic[dsp::stage_count];
     uint64_t m_open_cycles = 0;
     int m_open_stage = -1;
     simtime::ticks m_asleep_since = -1;

@@ -185,16 +185,40 @@ void print_report(std::FILE* out, const platform_top& top, const scoreboard_repo
                  budget.max_processing_ms, seq.need_ms, seq.fits ? "fits" : "over", ovl.need_ms,
                  ovl.fits ? "fits" : "over");
 
+    // ---- the firmware's SDRAM traffic on the bus
+    // ---------------------------------------------------
+    const c6416::c6416_sc& chip = top.cpu();
+    std::fprintf(out,
+                 "\n-- firmware SDRAM traffic (frames in %s, %s): L2 lines read %llu, written back "
+                 "%llu; transfer time %.3f ms; CPU waited past its charges %.3f ms\n",
+                 config.frame_memory == dsp::cost::memory::sdram ? "SDRAM" : "L2",
+                 config.sdram_traffic_on_bus ? "on the EMIF bus" : "off the bus",
+                 static_cast<unsigned long long>(chip.sdram_lines_read()),
+                 static_cast<unsigned long long>(chip.sdram_lines_written()),
+                 chip.sdram_transfer_time().to_seconds() * 1e3,
+                 chip.sdram_late_time().to_seconds() * 1e3);
+    if (top.firmware_started()) {
+        for (int s = 0; s < dsp::stage_count; ++s) {
+            const dsp::sdram_traffic& t = top.probe().stage_traffic(static_cast<dsp::stage>(s));
+            if (t.empty()) continue;
+            std::fprintf(out, "   %-11s read %llu B, written %llu B\n",
+                         dsp::stage_name(static_cast<dsp::stage>(s)),
+                         static_cast<unsigned long long>(t.bytes_read),
+                         static_cast<unsigned long long>(t.bytes_written));
+        }
+    }
+
     // ---- budget ---------------------------------------------------------------------------------
     std::fprintf(
         out,
         "\n-- budget per %.1f ms period (judged from the first forwarded pair): cpu_busy emif_busy "
-        "fifo_peak_L fifo_peak_R overflow drops | stage ms\n",
+        "cpu_words fifo_peak_L fifo_peak_R overflow drops | stage ms\n",
         budget.period_ms);
     for (const period_budget& p : budget.periods) {
-        std::fprintf(out, "  %2d %s %7.3f %7.3f %6u %6u %d %d |", p.index, p.judged ? "*" : " ",
-                     p.cpu_busy_ms, p.emif_busy_ms, p.fifo_peak_words[0], p.fifo_peak_words[1],
-                     p.overflow ? 1 : 0, p.drops);
+        std::fprintf(out, "  %2d %s %7.3f %7.3f %7llu %6u %6u %d %d |", p.index,
+                     p.judged ? "*" : " ", p.cpu_busy_ms, p.emif_busy_ms,
+                     static_cast<unsigned long long>(p.cpu_words), p.fifo_peak_words[0],
+                     p.fifo_peak_words[1], p.overflow ? 1 : 0, p.drops);
         for (int s = 0; s < dsp::stage_count; ++s) std::fprintf(out, " %6.3f", p.stage_ms[s]);
         std::fprintf(out, "\n");
     }

@@ -15,6 +15,10 @@ namespace {
 TEST(over_budget, large_search_window_at_low_cpu_clock_is_reported_naming_the_stage) {
     platform::platform_config config;
     config.dsk = c6416::dsk_custom(300000000, 100000000);
+    // The firmware's SDRAM traffic stays off the EMIF bus here (the model
+    // before issue 5): with it the default scenario is over budget
+    // (test_sdram_traffic_sc, docs/budget.md), and this test checks the rest.
+    config.sdram_traffic_on_bus = false;
     config.dsk.version = 1;  // the DSK v1 EMIF settings
     config.track_search_radius = 96;
     const system_test::system_run r = system_test::simulate(config);

@@ -3,7 +3,8 @@
 // process's next activity and stops at every bus completion and interrupt
 // pin change. Here the firmware's card watchdog (30 ms, not a multiple of
 // anything the island knows) reads card registers over the EMIF at times set
-// by the C6416 timer, racing the EDMA's capture bursts. The same run with a
+// by the C6416 timer, racing the EDMA's capture bursts and the firmware's own
+// SDRAM line transfers (issue 5: on the bus by default). The same run with a
 // 1 us and a 1 ms quantum must give the same pins, timeline and results.
 // Negative control (checked by hand, docs/platform.md): an island that runs
 // a whole quantum ahead regardless gives a different pin hash per quantum.
@@ -106,7 +107,10 @@ TEST(quantum_invariance, one_microsecond_and_one_millisecond_quanta_give_identic
     // Boot makes 24 card accesses; the watchdog reads 3 counters every 30 ms.
     EXPECT_GE(fine.cpu_bus_reads, 24u + 3 * 4);
     EXPECT_GE(fine.captured, 2u);
-    EXPECT_GT(fine.syncs, 10 * coarse.syncs);
+    // Bus completions (the firmware's SDRAM lines and the capture bursts) stop
+    // the island in both runs; the 1 us quantum adds about one sync per
+    // microsecond the island would otherwise run ahead (122.5 ms simulated).
+    EXPECT_GT(fine.syncs, coarse.syncs + 50000);
     std::printf(
         "1 us quantum: %llu syncs, 1 ms: %llu syncs; pin hash %016llx over %llu changes; "
         "timeline %llu events; %llu CPU bus accesses; %llu pairs captured\n",
