@@ -452,20 +452,28 @@ void c6416_sc::execute(const transfer_request& r) {
     }
 }
 
+// One EDMA run of `elements` elements of `es` bytes on EMIFA: a whole burst
+// when the addresses increment by the element size, a fixed-address stream
+// when they do not move (a FIFO port), else one access per element.
+void c6416_sc::bus_run(tlm::tlm_command command, uint32_t address, int64_t step,
+                       uint32_t elements, uint32_t es, uint8_t* data) {
+    const uint32_t length = elements * es;
+    if (step == es) {
+        bus_access(emifa_edma, command, address, data, length, length);
+    } else if (step == 0) {
+        bus_access(emifa_edma, command, address, data, length, es);
+    } else {
+        for (uint32_t i = 0; i < elements; ++i) {
+            bus_access(emifa_edma, command, static_cast<uint32_t>(address + step * i),
+                       data + i * es, es, es);
+        }
+    }
+}
+
 void c6416_sc::read_run(uint32_t address, int64_t step, uint32_t elements, uint32_t es,
                         uint8_t* out) {
     if (regs::in_emifa(address) && !local_memory(address)) {
-        const uint32_t length = elements * es;
-        if (step == es) {
-            bus_access(emifa_edma, tlm::TLM_READ_COMMAND, address, out, length, length);
-        } else if (step == 0) {
-            bus_access(emifa_edma, tlm::TLM_READ_COMMAND, address, out, length, es);
-        } else {
-            for (uint32_t i = 0; i < elements; ++i) {
-                bus_access(emifa_edma, tlm::TLM_READ_COMMAND,
-                           static_cast<uint32_t>(address + step * i), out + i * es, es, es);
-            }
-        }
+        bus_run(tlm::TLM_READ_COMMAND, address, step, elements, es, out);
         return;
     }
     for (uint32_t i = 0; i < elements; ++i) {
@@ -486,18 +494,8 @@ void c6416_sc::read_run(uint32_t address, int64_t step, uint32_t elements, uint3
 void c6416_sc::write_run(uint32_t address, int64_t step, uint32_t elements, uint32_t es,
                          const uint8_t* in) {
     if (regs::in_emifa(address) && !local_memory(address)) {
-        const uint32_t length = elements * es;
-        uint8_t* data = const_cast<uint8_t*>(in);  // TLM payloads carry a non-const pointer
-        if (step == es) {
-            bus_access(emifa_edma, tlm::TLM_WRITE_COMMAND, address, data, length, length);
-        } else if (step == 0) {
-            bus_access(emifa_edma, tlm::TLM_WRITE_COMMAND, address, data, length, es);
-        } else {
-            for (uint32_t i = 0; i < elements; ++i) {
-                bus_access(emifa_edma, tlm::TLM_WRITE_COMMAND,
-                           static_cast<uint32_t>(address + step * i), data + i * es, es, es);
-            }
-        }
+        // TLM payloads carry a non-const pointer; a write only reads it.
+        bus_run(tlm::TLM_WRITE_COMMAND, address, step, elements, es, const_cast<uint8_t*>(in));
         return;
     }
     for (uint32_t i = 0; i < elements; ++i) {

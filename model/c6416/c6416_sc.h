@@ -203,6 +203,8 @@ class c6416_sc : public sc_core::sc_module {
 
     // Transfers.
     void execute(const transfer_request& r);
+    void bus_run(tlm::tlm_command command, uint32_t address, int64_t step, uint32_t elements,
+                 uint32_t element_bytes, uint8_t* data);
     void read_run(uint32_t address, int64_t step, uint32_t elements, uint32_t element_bytes,
                   uint8_t* out);
     void write_run(uint32_t address, int64_t step, uint32_t elements, uint32_t element_bytes,
