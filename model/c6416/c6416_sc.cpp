@@ -455,8 +455,8 @@ void c6416_sc::execute(const transfer_request& r) {
 // One EDMA run of `elements` elements of `es` bytes on EMIFA: a whole burst
 // when the addresses increment by the element size, a fixed-address stream
 // when they do not move (a FIFO port), else one access per element.
-void c6416_sc::bus_run(tlm::tlm_command command, uint32_t address, int64_t step,
-                       uint32_t elements, uint32_t es, uint8_t* data) {
+void c6416_sc::bus_run(tlm::tlm_command command, uint32_t address, int64_t step, uint32_t elements,
+                       uint32_t es, uint8_t* data) {
     const uint32_t length = elements * es;
     if (step == es) {
         bus_access(emifa_edma, command, address, data, length, length);
