@@ -157,7 +157,10 @@ struct model_params {
     uint32_t l1d_line_bytes = 64;
     uint32_t l1d_miss_l2_cycles = 6;  // ASSUMED: stall per L1D read miss served by L2 SRAM
     uint32_t l2_line_bytes = 128;     // ASSUMED: C64x L2 cache line (NOT FOUND in the sheet)
-    uint32_t sdram_access_eclk = 6;   // ASSUMED: ACTV + tRCD 2 + CAS latency 3 per line burst
+    // ASSUMED, = the EMIF engine's sdram_timing::access_cycles (ACTV + tRCD 2 + CAS
+    // latency 3 + precharge 2): a line burst that finds its row closed, the
+    // case whenever any other bus op came between two lines (docs/c6416.md).
+    uint32_t sdram_access_eclk = 7;
     uint32_t emif_bus_bytes = 8;      // EMIFA data bus 64 bits (fact)
     uint64_t cpu_hz = dsk_v1_cpu_hz;  // only to turn EMIF time into CPU stall cycles
     uint64_t emif_hz = dsk_v1_emif_hz;

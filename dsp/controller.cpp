@@ -35,6 +35,16 @@ namespace {
 
 constexpr int history_frames = 3;  // paper eq. 2-4 needs f(t-2), f(t-1), f(t)
 
+// Rows of the Sobel bands: the tracker never holds a pattern taller than
+// track.max_size; one input row more on each side.
+int band_capacity_rows(const controller_config& config) {
+    return config.track.max_size < config.max_height ? config.track.max_size : config.max_height;
+}
+
+int size_rule_side(const controller_config& config) {
+    return 3 * (config.track.max_size > 2 ? config.track.max_size : 2);
+}
+
 int max_int(int a, int b) {
     return a > b ? a : b;
 }
@@ -147,54 +157,85 @@ class stage_scope {
 struct controller::impl {
     controller_config config;
     hal* hardware = nullptr;
+    memory_plan plan;
 
-    rgb8* line_scratch = nullptr;                 // one demosaiced row
-    uint8_t* right_history[history_frames] = {};  // ring of right gray frames
-    uint8_t* left_gray = nullptr;                 // the current left gray frame
-    uint8_t* size_mask = nullptr;                 // object(t-1) around the last box
-    int32_t* size_columns = nullptr;              // its set pixels per column and per row
+    rgb8* line_scratch = nullptr;     // one demosaiced row
+    uint8_t* right_gray[2] = {};      // f(t) and f(t-1); roles swap every pair
+    uint8_t* left_gray = nullptr;     // the current left gray frame
+    uint8_t* motion_mask = nullptr;   // packed Dif(t-2,t-1), then Dif(t-1,t)
+    uint8_t* refit_row = nullptr;     // one row of object(t-1) around the last box
+    int32_t* size_columns = nullptr;  // its set pixels per column and per row
     int32_t* size_rows = nullptr;
-    uint8_t* edge_band_right = nullptr;  // Sobel of the pattern's rows, +1 row each side
-    uint8_t* edge_band_left = nullptr;
-    int band_capacity_rows = 0;
+    uint8_t* edge_band_storage = nullptr;  // own Sobel bands, or null: inside f(t-1)
+    int band_rows = 0;
 
     motion_detector detector;
     sad_tracker tracker;
 
     int width = 0, height = 0;  // size of the pairs in the history
-    int newest = history_frames - 1;
-    int frames_in_history = 0;
+    int newest = 1;             // right_gray[newest] = f(t)
+    int frames_in_history = 0;  // right frames seen, at most 3
     int lost_pairs = 0;
     uint32_t frame_index = 0;
 
     ~impl() {
         delete[] line_scratch;
-        for (auto* frame : right_history) delete[] frame;
+        for (auto* frame : right_gray) delete[] frame;
         delete[] left_gray;
-        delete[] size_mask;
+        delete[] motion_mask;
+        delete[] refit_row;
         delete[] size_columns;
         delete[] size_rows;
-        delete[] edge_band_right;
-        delete[] edge_band_left;
+        delete[] edge_band_storage;
     }
 
     gray_plane frame_plane(uint8_t* data) const { return gray_plane{data, width, height, width}; }
-    gray_cplane history(int age) const {  // age 0 = newest
-        const int slot = (newest - age + history_frames) % history_frames;
-        return frame_plane(right_history[slot]).as_const();
+    gray_cplane history(int age) const {  // age 0 = f(t), 1 = f(t-1)
+        return frame_plane(right_gray[age == 0 ? newest : 1 - newest]).as_const();
     }
     gray_cplane left() const { return frame_plane(left_gray).as_const(); }
 
-    void preprocess(gray_cplane raw_left, gray_cplane raw_right, frame_output& out);
+    void preprocess(gray_cplane raw_left, gray_cplane raw_right, tracker_state state,
+                    frame_output& out);
+    // Dif(t-1,t) into the packed mask for the next pair (not in DETECT,
+    // whose three-frame pass makes it).
+    void update_motion_mask(uint64_t* cycles, sdram_traffic* traffic);
     // Each returns whether an object box is known after it.
     bool detect(frame_output& out);
     bool track(frame_output& out);
+    bool track_object(uint64_t* cycles, sdram_traffic* traffic);
     box refit_box(box last, box found, uint64_t* cycles, sdram_traffic* traffic);
     void stereo_sad(box object, frame_output& out);
     void stereo_edge(box object, frame_output& out);
     bool choose_disparity(frame_output& out) const;
     void xyz(box object, frame_output& out);
 };
+
+memory_plan plan_memory(const controller_config& config) {
+    memory_plan plan;
+    const size_t w = static_cast<size_t>(config.max_width);
+    const size_t frame = w * static_cast<size_t>(config.max_height);
+    plan.right_gray = 2 * frame;
+    plan.left_gray = frame;
+    plan.motion_mask = packed_mask_bytes(config.max_width, config.max_height);
+    plan.line_scratch = w * sizeof(rgb8);
+    plan.detector = motion_detector::workspace_bytes(config.max_width, config.max_height,
+                                                     config.max_motion_labels, false);
+    const size_t side = static_cast<size_t>(max_int(config.track.max_size, 1));
+    plan.tracker = side * side;
+    const size_t region = static_cast<size_t>(size_rule_side(config));
+    plan.refit = region + 2 * region * sizeof(int32_t);
+    const size_t bands = 2 * w * static_cast<size_t>(band_capacity_rows(config) + 2);
+    // By stereo_edge f(t-1) is dead (the next pair's Dif is made), so the
+    // bands borrow its buffer when they fit in it.
+    if (bands <= frame) {
+        plan.edge_bands_overlaid = bands;
+    } else {
+        plan.edge_bands = bands;
+    }
+    plan.raw_pair_sdram = 2 * frame;
+    return plan;
+}
 
 controller::~controller() {
     delete m_impl;
@@ -208,25 +249,20 @@ void controller::init(const controller_config& config, hal& hardware) {
     s.hardware = &hardware;
     m_state = tracker_state::detect;
 
+    s.plan = plan_memory(config);
     const size_t frame_pixels = static_cast<size_t>(config.max_width) * config.max_height;
     s.line_scratch = new rgb8[config.max_width];
-    for (auto& frame : s.right_history) frame = new uint8_t[frame_pixels];
+    for (auto& frame : s.right_gray) frame = new uint8_t[frame_pixels];
     s.left_gray = new uint8_t[frame_pixels];
-    // The size rule's region: a box of at most track.max_size, grown.
-    const int region_side = 3 * max_int(2, config.track.max_size);
-    const size_t region_pixels = static_cast<size_t>(region_side) * region_side;
-    s.size_mask = new uint8_t[region_pixels];
+    s.motion_mask = new uint8_t[s.plan.motion_mask]();
+    const int region_side = size_rule_side(config);
+    s.refit_row = new uint8_t[region_side];
     s.size_columns = new int32_t[region_side];
     s.size_rows = new int32_t[region_side];
-    // The tracker never holds a pattern taller than track.max_size.
-    s.band_capacity_rows = min_int(config.track.max_size, config.max_height);
-    const size_t band_pixels = static_cast<size_t>(config.max_width) * (s.band_capacity_rows + 2);
-    s.edge_band_right = new uint8_t[band_pixels];
-    s.edge_band_left = new uint8_t[band_pixels];
-    std::memset(s.edge_band_right, 0, band_pixels);
-    std::memset(s.edge_band_left, 0, band_pixels);
+    s.band_rows = band_capacity_rows(config);
+    if (s.plan.edge_bands != 0) s.edge_band_storage = new uint8_t[s.plan.edge_bands]();
 
-    s.detector.init(config.max_width, config.max_height);
+    s.detector.init(config.max_width, config.max_height, config.max_motion_labels, false);
     s.tracker.init(config.track);
 
     if (config.disparity_from_rig) {
@@ -243,6 +279,10 @@ void controller::init(const controller_config& config, hal& hardware) {
 
 const controller_config& controller::config() const {
     return m_impl->config;
+}
+
+const uint8_t* controller::motion_mask() const {
+    return m_impl ? m_impl->motion_mask : nullptr;
 }
 
 gray_cplane controller::gray_left() const {
@@ -279,7 +319,7 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
         m_state = tracker_state::detect;
     }
 
-    s.preprocess(raw_left, raw_right, out);
+    s.preprocess(raw_left, raw_right, m_state, out);
 
     bool has_object = false;
     switch (m_state) {
@@ -310,26 +350,49 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
     return out;
 }
 
-// Stage preprocess: both images to gray; the right one straight into the
-// history ring (the oldest frame is overwritten).
-void controller::impl::preprocess(gray_cplane raw_left, gray_cplane raw_right, frame_output& out) {
+// Stage preprocess: both images to gray. The right one overwrites the last
+// pair's f(t-1) (this pair's f(t-2), which lives on only as the packed mask);
+// the last pair's f(t) becomes f(t-1). Brightness compensation is an L2 pass over
+// the gray frame (exact, dsp/preprocess.h): no SDRAM traffic besides the raw
+// read. Outside DETECT the packed mask is brought up to date here (LOST, and
+// the second frame of a history); TRACK does it after its refit, DETECT in
+// its three-frame pass.
+void controller::impl::preprocess(gray_cplane raw_left, gray_cplane raw_right, tracker_state state,
+                                  frame_output& out) {
     stage_scope scope(*hardware, stage::preprocess, out);
-    newest = (newest + 1) % history_frames;
+    newest = 1 - newest;
     out.gain_q8_right = preprocess_raw_to_gray(raw_right, config.cfa, config.brightness,
-                                               line_scratch, frame_plane(right_history[newest]))
+                                               line_scratch, frame_plane(right_gray[newest]))
                             .gain_q8;
     out.gain_q8_left = preprocess_raw_to_gray(raw_left, config.cfa, config.brightness, line_scratch,
                                               frame_plane(left_gray))
                            .gain_q8;
     if (frames_in_history < history_frames) ++frames_in_history;
-    uint64_t per_image = cost::demosaic_gray_cycles(width, height, config.frame_memory);
-    sdram_traffic traffic = cost::demosaic_gray_traffic(width, height, config.frame_memory);
+    uint64_t per_image =
+        cost::demosaic_gray_cycles(width, height, config.frame_memory, config.raw_memory);
+    sdram_traffic traffic =
+        cost::demosaic_gray_traffic(width, height, config.frame_memory, config.raw_memory);
     if (config.brightness.enabled) {
         per_image += cost::brightness_cycles(width, height, config.frame_memory);
         traffic += cost::brightness_traffic(width, height, config.frame_memory);
     }
     traffic += traffic;  // both images
     scope.charge(2 * per_image, traffic);
+
+    const bool detect_makes_it = state == tracker_state::detect && frames_in_history >= 3;
+    if (state != tracker_state::track && !detect_makes_it) {
+        uint64_t cycles = 0;
+        sdram_traffic mask_traffic;
+        update_motion_mask(&cycles, &mask_traffic);
+        scope.charge(cycles, mask_traffic);
+    }
+}
+
+void controller::impl::update_motion_mask(uint64_t* cycles, sdram_traffic* traffic) {
+    if (frames_in_history < 2) return;
+    difference_packed(history(1), history(0), config.detect.threshold, motion_mask);
+    *cycles += cost::difference_packed_cycles(width, height, config.frame_memory);
+    *traffic += cost::difference_packed_traffic(width, height, config.frame_memory);
 }
 
 // Stage detect: three-frame differencing gives object(t-1) in the middle
@@ -338,13 +401,14 @@ void controller::impl::preprocess(gray_cplane raw_left, gray_cplane raw_right, f
 bool controller::impl::detect(frame_output& out) {
     if (frames_in_history < history_frames) return false;
     stage_scope scope(*hardware, stage::detect, out);
-    const detection found = detector.detect(history(2), history(1), history(0), config.detect);
+    const detection found =
+        detector.detect_packed(history(1), history(0), motion_mask, config.detect);
     const int morphology_passes = 2 * (config.detect.open_passes + config.detect.close_passes);
     scope.charge(
-        cost::three_frame_difference_cycles(width, height, config.frame_memory) +
+        cost::three_frame_difference_packed_cycles(width, height, config.frame_memory) +
             cost::morphology_cycles(width, height, morphology_passes) +
             cost::connected_components_cycles(width, height, detector.last_foreground_pixels()),
-        cost::three_frame_difference_traffic(width, height, config.frame_memory));
+        cost::three_frame_difference_packed_traffic(width, height, config.frame_memory));
     if (!found.found) return false;
     out.motion_found = true;
     out.motion_box = found.bbox;
@@ -383,21 +447,32 @@ bool controller::impl::detect(frame_output& out) {
 // the tracker with start(), which re-takes the pattern there.
 bool controller::impl::track(frame_output& out) {
     stage_scope scope(*hardware, stage::track, out);
+    uint64_t cycles = 0;
+    sdram_traffic traffic;
+    const bool tracking = track_object(&cycles, &traffic);
+    // The refit has used Dif(t-2,t-1); now Dif(t-1,t) for the next pair.
+    update_motion_mask(&cycles, &traffic);
+    scope.charge(cycles, traffic);
+    return tracking;
+}
+
+bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic) {
     const box last = tracker.position();
     const track_status status = tracker.update(history(0));
-    scope.charge(cost::sad_search_cycles(last.width, last.height, tracker.last_match().positions));
+    *cycles += cost::sad_search_cycles(last.width, last.height, tracker.last_match().positions);
     if (status != track_status::tracking) return false;
-    scope.charge(cost::pattern_copy_cycles(last.width, last.height));
+    *cycles += cost::pattern_copy_cycles(last.width, last.height);
 
-    uint64_t cycles = 0;
+    uint64_t refit_cycles = 0;
     const box found = tracker.position();
-    sdram_traffic traffic;
-    const box resized = refit_box(last, found, &cycles, &traffic);
-    scope.charge(cycles, traffic);
+    sdram_traffic refit_traffic;
+    const box resized = refit_box(last, found, &refit_cycles, &refit_traffic);
+    *cycles += refit_cycles;
+    *traffic += refit_traffic;
     if (resized.x != found.x || resized.y != found.y || resized.width != found.width ||
         resized.height != found.height) {
         tracker.start(history(0), resized);
-        scope.charge(cost::pattern_copy_cycles(resized.width, resized.height));
+        *cycles += cost::pattern_copy_cycles(resized.width, resized.height);
     }
     return true;
 }
@@ -413,24 +488,26 @@ bool controller::impl::track(frame_output& out) {
 // moving pixels (the object stopped): the SAD box is kept.
 box controller::impl::refit_box(box last, box found, uint64_t* cycles, sdram_traffic* traffic) {
     const box region = size_rule_region(last, width, height);
-    const gray_plane mask{size_mask, region.width, region.height, region.width};
-    auto in_region = [&](gray_cplane frame) {
-        return frame.sub(region.x, region.y, region.width, region.height);
-    };
-    three_frame_difference(in_region(history(2)), in_region(history(1)), in_region(history(0)),
-                           config.detect.threshold, mask);
+    // object(t-1) = Dif(t-2,t-1) (the packed mask) AND Dif(t-1,t), row by row
+    // (eq. 4, as three_frame_difference_packed_row, without updating the mask).
     // Projections instead of an opening: an opening (as the detector uses)
     // erases the thin crescents the object's slowly moving sides leave in the
     // mask, and measured boxes 30-40 % narrower than the ball; a column or
     // row counts as the object's only with >= 2 set pixels, so a lone
     // noise pixel does not stretch the box.
     std::memset(size_columns, 0, sizeof(int32_t) * region.width);
+    const uint8_t threshold = config.detect.threshold;
     int count = 0;
     for (int y = 0; y < region.height; ++y) {
-        const uint8_t* row = mask.row(y);
+        const int frame_y = region.y + y;
+        const uint8_t* f_tm1 = history(1).row(frame_y) + region.x;
+        const uint8_t* f_t = history(0).row(frame_y) + region.x;
         int in_row = 0;
         for (int x = 0; x < region.width; ++x) {
-            const int set = row[x] ? 1 : 0;
+            const int diff = f_tm1[x] > f_t[x] ? f_tm1[x] - f_t[x] : f_t[x] - f_tm1[x];
+            const int set =
+                (diff > threshold && packed_bit(motion_mask, width, region.x + x, frame_y)) ? 1 : 0;
+            refit_row[x] = static_cast<uint8_t>(set);
             size_columns[x] += set;
             in_row += set;
         }
@@ -445,11 +522,11 @@ box controller::impl::refit_box(box last, box found, uint64_t* cycles, sdram_tra
     // The projection pass (column and row sums, SIMD-able) is modelled as two
     // copies of the region (~area / 8 cycles each): an estimate, no kernel
     // formula of its own.
-    *cycles =
-        cost::three_frame_difference_cycles(region.width, region.height, config.frame_memory) +
-        2 * cost::pattern_copy_cycles(region.width, region.height);
-    *traffic =
-        cost::three_frame_difference_traffic(region.width, region.height, config.frame_memory);
+    *cycles = cost::three_frame_difference_packed_cycles(region.width, region.height,
+                                                         config.frame_memory) +
+              2 * cost::pattern_copy_cycles(region.width, region.height);
+    *traffic = cost::three_frame_difference_packed_traffic(region.width, region.height,
+                                                           config.frame_memory);
     if (count * 8 < last.width * last.height) return found;
 
     const track_params& p = config.track;
@@ -479,14 +556,18 @@ void controller::impl::stereo_sad(box object, frame_output& out) {
 void controller::impl::stereo_edge(box object, frame_output& out) {
     stage_scope scope(*hardware, stage::stereo_edge, out);
     box pattern = object;
-    if (pattern.height > band_capacity_rows) {  // keep the central rows
-        pattern.y += (pattern.height - band_capacity_rows) / 2;
-        pattern.height = band_capacity_rows;
+    if (pattern.height > band_rows) {  // keep the central rows
+        pattern.y += (pattern.height - band_rows) / 2;
+        pattern.height = band_rows;
     }
     const int in_y0 = max_int(0, pattern.y - 1);
     const int in_rows = min_int(height, pattern.bottom() + 1) - in_y0;
-    const gray_plane right_band{edge_band_right, width, in_rows, width};
-    const gray_plane left_band{edge_band_left, width, in_rows, width};
+    // The bands live in f(t-1)'s buffer (memory plan), dead by now: the next
+    // pair's Dif(t-1,t) is already in the packed mask.
+    uint8_t* band_base = edge_band_storage ? edge_band_storage : right_gray[1 - newest];
+    const size_t band_bytes = static_cast<size_t>(width) * static_cast<size_t>(in_rows);
+    const gray_plane right_band{band_base, width, in_rows, width};
+    const gray_plane left_band{band_base + band_bytes, width, in_rows, width};
     const int out_y0 = pattern.y - in_y0, out_y1 = out_y0 + pattern.height;
     // At the image's top or bottom row the band's edge is the image's edge,
     // where sobel_3x3 also writes 0: the band equals the whole-image Sobel.

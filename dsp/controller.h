@@ -8,9 +8,17 @@
 //
 // Per pair, by state at the start of the pair:
 //   all states: preprocess both images (stage preprocess). The right gray
-//     image goes straight into a ring of three history frames (no copy), so
-//     the history stays consecutive whatever the state.
+//     image goes into the older of the two right gray buffers (f(t-2)'s
+//     place: the buffers swap roles, no copy). f(t-2) itself is not kept:
+//     eq. 4 needs it only through Dif(t-2,t-1), which the previous pair left
+//     as a bit-packed mask. Every pair, whatever the state, replaces that
+//     mask by Dif(t-1,t) for the next pair (DETECT fuses it into its
+//     three-frame pass, TRACK runs it after the refit, LOST and the second
+//     pair of a history in stage preprocess), so the history stays
+//     consecutive.
 //   DETECT: with three frames in the history, three-frame differencing
+//     (f(t-1), f(t) and the packed Dif(t-2,t-1); identical to the formula on
+//     three full frames, tests/dsp/test_memory_plan.cpp)
 //     gives object(t-1), the object in the MIDDLE frame (paper eq. 4). It is
 //     turned into the current frame's pattern by starting the SAD tracker on
 //     the middle frame at the detected box and letting it find that pattern
@@ -39,17 +47,34 @@
 // charges it.
 //
 // Costs: the sum of the modelled cycles of the kernels each stage runs
-// (dsp/kernel_costs.h), charged once per stage and pair. With cost model
-// c64x-op-model-v1 at 600 MHz on VGA pairs (tb/host demo, default scenario):
-// preprocess 9.56 ms (two frames, SDRAM), detect up to 5.8 ms (full-frame
-// differencing, morphology, labelling), track <= 1.9 ms, stereo_sad
-// <= 0.15 ms, stereo_edge <= 0.64 ms, xyz ~300 cycles; largest pair 16 ms.
+// (dsp/kernel_costs.h), charged once per stage and pair, with the SDRAM
+// bytes of their streams (hal::charge_with_traffic). Figures: docs/firmware.md.
 //
 // Firmware rules: all buffers are allocated in init() from the maximum image
 // size; process_pair allocates nothing and uses integer arithmetic per pixel.
-// Memory: four gray frames (3 right history + left) of VGA are 1.2 MB, more
-// than the C6416's 1 MB L2 (hardware-facts.md section 1), so frame-scale
-// passes are charged as SDRAM passes by default (config.frame_memory).
+//
+// Memory plan (DESIGN.md "DSP memory"; L2 = 1 MB, hardware-facts.md section
+// 1). The raw Bayer pairs stay in SDRAM where the EDMA writes them; the
+// preprocess reads each raw byte once (line by line: three raw rows -> one
+// RGB row -> one gray row, the rows stay in L1D). Everything else is in L2:
+//
+//   buffer                                  bytes              VGA (640 x 480)
+//   right gray f(t), f(t-1)                 2 W H                  614,400
+//   left gray                               W H                    307,200
+//   packed Dif(t-2,t-1)                     W H / 8                 38,400
+//   demosaic line (one RGB row)             3 W                      1,920
+//   detector: 8 pass rings + 1 row, 2 label motion_detector::       32,384
+//     rows, 256-label tables                  workspace_bytes
+//   tracker pattern                         max_size^2               9,216
+//   refit row + projections                 3 max_size x 9           2,592
+//   Sobel bands 2 W (max_size + 2)          inside f(t-1)'s buffer       0
+//                                           (dead by stereo_edge)  (125,440)
+//   total                                                        1,006,112
+// of 1,048,576: 42,464 bytes (4.0 %) left for code, stack and the control
+// program's few words; 9,696 if 32 KB of the L2 is configured as cache for
+// the raw reads (plan_memory computes it; tests/dsp/test_memory_plan.cpp
+// checks it). SDRAM per pair: the raw pair, 2 W H = 614,400 bytes read =
+// 4,800 L2 lines of 128 bytes, nothing else frame-scale.
 #pragma once
 
 #include <cstdint>
@@ -99,9 +124,39 @@ struct controller_config {
     int32_t max_depth_mm = 6000;
     int disparity_margin_px = 2;
 
-    // Where the frame-scale buffers live, for the cost model (see above).
-    cost::memory frame_memory = cost::memory::sdram;
+    // Labels the motion detector can hand out per mask (its union-find
+    // tables are part of the L2 plan).
+    int max_motion_labels = 256;
+
+    // For the cost model: where the gray frames and the packed mask live
+    // (frame_memory: L2 in the plan above; sdram charges every gray-frame
+    // pass as SDRAM traffic, what the plan would cost if they did not fit)
+    // and where the raw pairs are (the EDMA writes them to SDRAM).
+    cost::memory frame_memory = cost::memory::l2;
+    cost::memory raw_memory = cost::memory::sdram;
 };
+
+// The buffers of the memory plan above for a configuration, in bytes (what
+// init() allocates; the raw pair is the control program's, in SDRAM).
+struct memory_plan {
+    size_t right_gray = 0;           // f(t) and f(t-1)
+    size_t left_gray = 0;            // the current left frame
+    size_t motion_mask = 0;          // packed Dif(t-2,t-1)
+    size_t line_scratch = 0;         // one demosaiced RGB row
+    size_t detector = 0;             // motion_detector::workspace_bytes (no kept mask)
+    size_t tracker = 0;              // the SAD pattern
+    size_t refit = 0;                // object(t-1) row + projections of the refit region
+    size_t edge_bands = 0;           // own Sobel bands (0 when they overlay f(t-1))
+    size_t edge_bands_overlaid = 0;  // band bytes placed inside f(t-1)'s buffer
+    size_t raw_pair_sdram = 0;       // one raw Bayer pair, in SDRAM: 2 W H
+
+    size_t l2_bytes() const {
+        return right_gray + left_gray + motion_mask + line_scratch + detector + tracker + refit +
+               edge_bands;
+    }
+};
+memory_plan plan_memory(const controller_config& config);
+constexpr size_t c6416_l2_bytes = 1'048'576;  // hardware-facts.md section 1
 
 struct frame_output {
     uint32_t frame_index = 0;
@@ -138,8 +193,8 @@ class controller {
     controller(const controller&) = delete;
     controller& operator=(const controller&) = delete;
 
-    // Allocates every buffer (gray history, left gray, line scratch, Sobel
-    // bands, detector, tracker). May be called again to re-initialise.
+    // Allocates every buffer of the memory plan (plan_memory). May be called
+    // again to re-initialise.
     void init(const controller_config& config, hal& hardware);
 
     // One raw Bayer stereo pair (both images the same size, <= the maximum,
@@ -152,6 +207,10 @@ class controller {
     gray_cplane gray_right() const;
     // The configuration in use (with the disparity range init() derived).
     const controller_config& config() const;
+    // The packed difference mask after the last pair: Dif(t-1,t) of the two
+    // newest right frames once two are in the history (dsp/motion_detect.h
+    // layout, width of the pairs); for tests.
+    const uint8_t* motion_mask() const;
 
   private:
     struct impl;

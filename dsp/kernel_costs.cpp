@@ -66,6 +66,10 @@ void set_model(const c64x::cost_model& m) {
 }
 
 kernel_profile demosaic_gray_profile(int width, int height, memory where) {
+    return demosaic_gray_profile(width, height, where, where);
+}
+
+kernel_profile demosaic_gray_profile(int width, int height, memory gray_where, memory raw_where) {
     // Fused bilinear demosaic + gray + mean, 4 output pixels of a row (two
     // Bayer pairs) per iteration, exact rounding as dsp/bayer_demosaic.h:
     //   d 4:  LDNDW of rows y-1, y, y+1 at x-1 (8 bytes each), STW of 4 gray
@@ -94,7 +98,13 @@ kernel_profile demosaic_gray_profile(int width, int height, memory where) {
     p.add(block("row set-up, border columns", op_mix{0, /*s*/ 2, /*m*/ 6, /*d*/ 6, 0, /*lsd*/ 12},
                 latency_load + 3 * latency_alu + latency_mpy16 + 3 * latency_alu + latency_store,
                 h));
-    p.add(stream(w * h, w * h, placed(where)));
+    // Raw read (each byte 3 times; L1D serves all but the first), gray written.
+    if (gray_where == raw_where) {
+        p.add(stream(w * h, w * h, placed(raw_where)));
+    } else {
+        p.add(stream(w * h, 0, placed(raw_where)));
+        p.add(stream(0, w * h, placed(gray_where)));
+    }
     return p;
 }
 
@@ -134,6 +144,42 @@ kernel_profile three_frame_difference_profile(int width, int height, memory wher
                ceil_div(w, 8),
                latency_load + 3 * latency_alu + latency_mpy16 + latency_alu + latency_store, h));
     p.add(stream(3 * w * h, w * h, placed(where)));
+    return p;
+}
+
+kernel_profile three_frame_difference_packed_profile(int width, int height, memory where) {
+    // object = Dif(t-2,t-1) & (|f1-f2| > th), Dif(t-1,t) stored back packed,
+    // 8 pixels per iteration:
+    //   d 5: 2 LDDW, LDBU (stored bits), STB (new bits), STDW (object bytes)
+    //   l 2: 2 SUBABS4     s 4: 2 CMPGTU4, SHL (high nibble), B
+    //   m 2: 2 XPND4 (object bits -> 0/255 bytes)
+    //   lsd 3: OR (new byte), AND (object), counter
+    // -> II 3 (.D / .L bound), 0.375 cycles/pixel; 2 1/8 bytes read and
+    // 1/8 written per pixel besides the object row (which stays in L1D: the
+    // detector's row pipeline consumes it at once).
+    const uint64_t w = non_negative(width), h = non_negative(height);
+    const uint64_t packed = ceil_div(w, 8) * h;
+    kernel_profile p("three_frame_difference_packed");
+    p.add(loop("8 pixels", op_mix{/*l*/ 2, /*s*/ 4, /*m*/ 2, /*d*/ 5, /*ls*/ 0, /*lsd*/ 3},
+               ceil_div(w, 8),
+               latency_load + latency_alu + latency_alu + latency_alu + latency_alu +
+                   latency_mpy16 + latency_store,
+               h));
+    p.add(stream(2 * w * h + packed, packed, placed(where)));
+    return p;
+}
+
+kernel_profile difference_packed_profile(int width, int height, memory where) {
+    // Dif(a, b) packed, 8 pixels per iteration:
+    //   d 3: 2 LDDW, STB      l 2: 2 SUBABS4
+    //   s 4: 2 CMPGTU4, SHL, B      lsd 2: OR, counter
+    // -> II 2 (.S / .D bound), 0.25 cycles/pixel.
+    const uint64_t w = non_negative(width), h = non_negative(height);
+    const uint64_t packed = ceil_div(w, 8) * h;
+    kernel_profile p("difference_packed");
+    p.add(loop("8 pixels", op_mix{/*l*/ 2, /*s*/ 4, /*m*/ 0, /*d*/ 3, /*ls*/ 0, /*lsd*/ 2},
+               ceil_div(w, 8), latency_load + 3 * latency_alu + latency_store, h));
+    p.add(stream(2 * w * h, packed, placed(where)));
     return p;
 }
 
@@ -358,6 +404,18 @@ sdram_traffic demosaic_gray_traffic(int width, int height, memory where) {
     return sdram_traffic_of(demosaic_gray_profile(width, height, where));
 }
 
+sdram_traffic demosaic_gray_traffic(int width, int height, memory gray_where, memory raw_where) {
+    return sdram_traffic_of(demosaic_gray_profile(width, height, gray_where, raw_where));
+}
+
+sdram_traffic three_frame_difference_packed_traffic(int width, int height, memory where) {
+    return sdram_traffic_of(three_frame_difference_packed_profile(width, height, where));
+}
+
+sdram_traffic difference_packed_traffic(int width, int height, memory where) {
+    return sdram_traffic_of(difference_packed_profile(width, height, where));
+}
+
 sdram_traffic brightness_traffic(int width, int height, memory where) {
     return sdram_traffic_of(brightness_profile(width, height, where));
 }
@@ -368,6 +426,18 @@ sdram_traffic three_frame_difference_traffic(int width, int height, memory where
 
 uint64_t demosaic_gray_cycles(int width, int height, memory where) {
     return g_model.cycles(demosaic_gray_profile(width, height, where));
+}
+
+uint64_t demosaic_gray_cycles(int width, int height, memory gray_where, memory raw_where) {
+    return g_model.cycles(demosaic_gray_profile(width, height, gray_where, raw_where));
+}
+
+uint64_t three_frame_difference_packed_cycles(int width, int height, memory where) {
+    return g_model.cycles(three_frame_difference_packed_profile(width, height, where));
+}
+
+uint64_t difference_packed_cycles(int width, int height, memory where) {
+    return g_model.cycles(difference_packed_profile(width, height, where));
 }
 
 uint64_t brightness_cycles(int width, int height, memory where) {

@@ -27,12 +27,20 @@ enum class memory : uint8_t { l2, sdram };
 const c64x::cost_model& model();
 void set_model(const c64x::cost_model& m);
 
-// Fused Bayer bilinear demosaic + gray + brightness mean, one frame.
+// Fused Bayer bilinear demosaic + gray + brightness mean, one frame; `where`
+// places both the raw input and the gray output, the four-argument form each
+// on its own (the firmware's plan: raw in SDRAM, gray in L2).
 uint64_t demosaic_gray_cycles(int width, int height, memory where = memory::l2);
+uint64_t demosaic_gray_cycles(int width, int height, memory gray_where, memory raw_where);
 // Brightness gain lookup table build + apply, one frame.
 uint64_t brightness_cycles(int width, int height, memory where = memory::l2);
 // Three-frame difference (two absdiff + threshold + and), fused, one frame.
 uint64_t three_frame_difference_cycles(int width, int height, memory where = memory::l2);
+// The same from f(t-1), f(t) and the packed Dif(t-2,t-1), which it replaces
+// by Dif(t-1,t) (dsp/motion_detect.h three_frame_difference_packed_row).
+uint64_t three_frame_difference_packed_cycles(int width, int height, memory where = memory::l2);
+// Dif(a, b) into a packed mask (dsp/motion_detect.h difference_packed).
+uint64_t difference_packed_cycles(int width, int height, memory where = memory::l2);
 // Binary 3x3 erosion or dilation, `passes` passes over width x height.
 uint64_t morphology_cycles(int width, int height, int passes);
 // Connected components with `foreground` set pixels in width x height.
@@ -59,14 +67,23 @@ uint64_t triangulate_cycles();
 // (cost_model::memory_cycles); the platform replays them on the EMIF bus.
 sdram_traffic sdram_traffic_of(const c64x::kernel_profile& kernel);
 sdram_traffic demosaic_gray_traffic(int width, int height, memory where = memory::l2);
+sdram_traffic demosaic_gray_traffic(int width, int height, memory gray_where, memory raw_where);
 sdram_traffic brightness_traffic(int width, int height, memory where = memory::l2);
 sdram_traffic three_frame_difference_traffic(int width, int height, memory where = memory::l2);
+sdram_traffic three_frame_difference_packed_traffic(int width, int height,
+                                                    memory where = memory::l2);
+sdram_traffic difference_packed_traffic(int width, int height, memory where = memory::l2);
 
 // The op profiles behind the figures above (same arguments).
 c64x::kernel_profile demosaic_gray_profile(int width, int height, memory where = memory::l2);
+c64x::kernel_profile demosaic_gray_profile(int width, int height, memory gray_where,
+                                           memory raw_where);
 c64x::kernel_profile brightness_profile(int width, int height, memory where = memory::l2);
 c64x::kernel_profile three_frame_difference_profile(int width, int height,
                                                     memory where = memory::l2);
+c64x::kernel_profile three_frame_difference_packed_profile(int width, int height,
+                                                           memory where = memory::l2);
+c64x::kernel_profile difference_packed_profile(int width, int height, memory where = memory::l2);
 c64x::kernel_profile morphology_profile(int width, int height, int passes);
 c64x::kernel_profile connected_components_profile(int width, int height, int foreground);
 c64x::kernel_profile sad_search_profile(int pattern_w, int pattern_h, int positions);

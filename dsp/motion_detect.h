@@ -50,6 +50,41 @@ void mask_and(gray_cplane a, gray_cplane b, gray_plane out);
 void three_frame_difference(gray_cplane f_tm2, gray_cplane f_tm1, gray_cplane f_t,
                             uint8_t threshold, gray_plane object_mask);
 
+// ---- Bit-packed difference masks (the firmware's L2 plan, dsp/controller.h) ----
+// The controller keeps Dif(t-2,t-1) of eq. 2 as ONE BIT per pixel instead of
+// the third gray frame f(t-2): eq. 4 needs f(t-2) only through that mask.
+// Layout: row y starts at byte y * packed_row_bytes(width); pixel x is bit
+// (x % 8) of byte x / 8 (LSB first). VGA: 38,400 bytes, an eighth of a frame.
+int packed_row_bytes(int width);
+size_t packed_mask_bytes(int width, int height);
+inline bool packed_bit(const uint8_t* packed, int width, int x, int y) {
+    return (packed[static_cast<size_t>(y) * static_cast<size_t>(packed_row_bytes(width)) +
+                   static_cast<size_t>(x >> 3)] >>
+            (x & 7)) &
+           1u;
+}
+
+// packed = Dif(a, b): the bit of a pixel is set where |a - b| > threshold.
+// Costs (C64x): dsp::cost::difference_packed_cycles: per 8 pixels 2 LDDW, 2
+// SUBABS4, 2 CMPGTU4 (4-bit masks), SHL + OR into a byte, STB: II 2, 0.25
+// cycles/pixel; reads 2 bytes and writes 1/8 byte per pixel.
+void difference_packed(gray_cplane a, gray_cplane b, uint8_t threshold, uint8_t* packed);
+
+// Eq. 2-4 with the older difference stored packed, one row: for every x
+//   object_row[x] = (bit x of packed_row) && |f_tm1[x] - f_t[x]| > threshold ? 255 : 0
+// and packed_row becomes Dif(t-1,t) of the row (in place: it is the next
+// pair's Dif(t-2,t-1)). With packed_row = Dif(f(t-2), f(t-1)) this is exactly
+// three_frame_difference(f(t-2), f(t-1), f(t)) (tests prove it on real video).
+// Costs (C64x): dsp::cost::three_frame_difference_packed_cycles: per 8 pixels
+// 2 LDDW + LDBU + STB + STDW, 2 SUBABS4, 2 CMPGTU4, SHL + OR + AND, 2 XPND4:
+// II 3 (.D / .L bound), 0.375 cycles/pixel, as the three-frame kernel, but it
+// reads 2 1/8 instead of 3 bytes per pixel.
+void three_frame_difference_packed_row(const uint8_t* f_tm1, const uint8_t* f_t, int width,
+                                       uint8_t threshold, uint8_t* packed_row, uint8_t* object_row);
+// The same over whole frames (object_mask: width x height bytes).
+void three_frame_difference_packed(gray_cplane f_tm1, gray_cplane f_t, uint8_t threshold,
+                                   uint8_t* packed, gray_plane object_mask);
+
 // Binary 3x3 erosion / dilation of a 0/255 mask with a square structuring
 // element: out = AND (erosion) / OR (dilation) of the 3x3 neighbourhood,
 // which on 0/255 bytes is its minimum / maximum. Pixels outside the image
@@ -69,6 +104,29 @@ void dilate_3x3(gray_cplane in, gray_plane out);
 struct component {
     box bbox;
     int area = 0;  // pixels
+};
+
+// Connected components, one row at a time (what connected_components and
+// the detector's row pipeline run): begin(), add_row() for rows 0, 1, ... in
+// order, finish(). Same workspaces, limits and results as
+// connected_components below; nothing allocated.
+class component_labeller {
+  public:
+    void begin(int width, int32_t* labels, int32_t* parent, component* stats, int max_labels);
+    // Returns false once the rows needed more than max_labels labels (the
+    // later rows are then ignored and finish() returns -1).
+    bool add_row(const uint8_t* row, int y);
+    int finish(component* out, int max_out);
+
+  private:
+    int m_width = 0;
+    int32_t* m_above = nullptr;
+    int32_t* m_current = nullptr;
+    int32_t* m_parent = nullptr;
+    component* m_stats = nullptr;
+    int m_max_labels = 0;
+    int32_t m_label_count = 0;
+    bool m_overflow = false;
 };
 
 // Connected components (8-connectivity) of a mask (any non-zero byte is
@@ -116,8 +174,17 @@ struct detection {
 // min_area. Because the border counts as background, the closing's
 // erosions also clear the image's outermost close_passes rows and columns
 // (an object cut by the image edge loses that rim).
-// Memory: 2 masks of max_width * max_height bytes, 2 * max_width labels,
-// 3 tables of max_components entries (parent, stats, sorted components).
+// The passes run as a ROW PIPELINE: the difference makes one mask row, each
+// 3x3 pass keeps a ring of its last 3 input rows and emits its output row as
+// soon as the row below it is in, and the labeller takes the last pass's
+// rows in order. No full-frame mask is needed (the firmware's L2 plan has no
+// room for one); the result equals the whole-frame passes exactly (a pass's
+// row y depends on its input rows y-1..y+1 only).
+// Memory: 3 rows per pass (at most max_passes passes) + 1 row, 2 * max_width
+// labels, 3 tables of max_components entries (parent, stats, sorted
+// components), and with keep_mask a max_width * max_height copy of the
+// cleaned mask for last_mask() (tests, waveforms; the firmware does not keep
+// it). workspace_bytes() gives the total.
 class motion_detector {
   public:
     motion_detector() = default;
@@ -125,16 +192,31 @@ class motion_detector {
     motion_detector(const motion_detector&) = delete;
     motion_detector& operator=(const motion_detector&) = delete;
 
+    // 3x3 passes the row pipeline can hold: 2 * (open_passes + close_passes)
+    // must not exceed it (otherwise detect finds nothing).
+    static constexpr int max_passes = 8;
+
     // Size the buffers for images up to max_width x max_height;
-    // max_components bounds the provisional labels of one mask.
-    void init(int max_width, int max_height, int max_components = 4096);
+    // max_components bounds the provisional labels of one mask; keep_mask
+    // keeps a full copy of the cleaned mask for last_mask().
+    void init(int max_width, int max_height, int max_components = 4096, bool keep_mask = true);
+    // Bytes init allocates for these arguments (the L2 plan counts them).
+    static size_t workspace_bytes(int max_width, int max_height, int max_components,
+                                  bool keep_mask);
 
     // The moving object at time t-1 from three consecutive gray frames of the
     // same size (at most the init size; larger frames give found = false).
     detection detect(gray_cplane f_tm2, gray_cplane f_tm1, gray_cplane f_t,
                      const detect_params& params);
+    // The same from f(t-1), f(t) and packed = Dif(t-2,t-1) (packed layout
+    // above, width of f_tm1): three_frame_difference_packed_row per row, so
+    // packed becomes Dif(t-1,t) for the next call. Same result as detect()
+    // on f(t-2), f(t-1), f(t). packed is left unchanged if the size is refused.
+    detection detect_packed(gray_cplane f_tm1, gray_cplane f_t, uint8_t* packed,
+                            const detect_params& params);
 
-    // The cleaned mask of the last detect() call (for tests and waveforms).
+    // The cleaned mask of the last detect() call (for tests and waveforms);
+    // empty unless init's keep_mask.
     gray_cplane last_mask() const;
 
     // The components of the last detect() call, largest first (all sizes,
@@ -146,10 +228,24 @@ class motion_detector {
     int last_foreground_pixels() const { return m_last_foreground; }
 
   private:
+    // Makes object row y into out (width bytes).
+    using row_source = void (*)(void* context, int y, uint8_t* out);
+    detection run(int width, int height, const detect_params& params, row_source source,
+                  void* context);
+    uint8_t* ring_row(int pass, int y) const;
+    void push_row(int pass, int y);
+    void flush(int pass);
+    void emit_row(const uint8_t* row, int y);
+    void release();
+
     int m_max_width = 0, m_max_height = 0, m_max_components = 0;
-    uint8_t* m_mask = nullptr;
-    uint8_t* m_scratch = nullptr;
-    const uint8_t* m_result = nullptr;  // m_mask or m_scratch, whichever holds the cleaned mask
+    uint8_t* m_mask = nullptr;   // kept cleaned mask (keep_mask), else null
+    uint8_t* m_rings = nullptr;  // max_passes x 3 rows
+    uint8_t* m_out_row = nullptr;
+    bool m_pass_erodes[max_passes] = {};
+    int m_passes = 0;
+    int m_width = 0, m_height = 0;
+    component_labeller m_labeller;
     int32_t* m_labels = nullptr;
     component* m_components = nullptr;
     component* m_stats = nullptr;

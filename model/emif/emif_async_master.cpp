@@ -133,6 +133,11 @@ bool emif_async_master::arbitrates_at_next_edge() const {
     }
 }
 
+uint64_t emif_async_master::sdram_row(uint32_t address) const {
+    const uint32_t offset = address - ce_base(0);
+    return offset / std::max(1u, m_config.sdram.row_bytes);
+}
+
 uint32_t emif_async_master::word_address(const emif_access& a) const {
     return a.increment ? a.address + 4u * a.words_done : a.address;
 }
@@ -295,9 +300,17 @@ void emif_async_master::start_op(uint64_t e) {
             break;
         }
         case op_kind::sdram_chunk: {
-            const bool row_open = m_sdram_open == op.access && m_last.kind == op_kind::sdram_chunk;
+            // Row accesses: one if the first word's row is not the open one,
+            // one more per row boundary inside the chunk.
+            const emif_access& a = *op.access;
+            const uint32_t first = word_address(a);
+            const uint32_t last = a.increment ? first + 4u * (op.words - 1) : first;
+            const uint64_t first_row = sdram_row(first), last_row = sdram_row(last);
+            const bool row_open =
+                m_last.kind == op_kind::sdram_chunk && m_sdram_open_row == first_row;
+            const uint64_t row_accesses = (row_open ? 0 : 1) + (last_row - first_row);
             m_phase = phase::sdram;
-            m_phase_end = e + (row_open ? 0 : m_config.sdram.access_cycles) + (op.words + 1) / 2;
+            m_phase_end = e + row_accesses * m_config.sdram.access_cycles + (op.words + 1) / 2;
             m_pins.be_n = 0xF;
             break;
         }
@@ -347,14 +360,15 @@ void emif_async_master::finish_op(uint64_t e) {
     const bus_op op = m_op;
     m_last = op;
     m_bus_free_edge = e;
-    m_sdram_open = nullptr;
+    m_sdram_open_row = no_row;
     if (op.kind == op_kind::refresh) {
         ++m_stats.refreshes;
         return;
     }
     emif_access& a = *op.access;
     if (op.kind == op_kind::sdram_chunk) {
-        m_sdram_open = &a;
+        m_sdram_open_row =
+            sdram_row(a.increment ? word_address(a) + 4u * (op.words - 1) : word_address(a));
         if (m_sdram && m_sdram_size >= 4) {
             for (uint32_t k = 0; k < op.words; ++k) {
                 const uint32_t address = word_address(a);

@@ -46,10 +46,18 @@ struct sdram_timing {
     // 2 + CAS latency 3) plus closing it (precharge 2).
     uint32_t access_cycles = 7;
     // An SDRAM burst is arbitrated in chunks of this many 32-bit words; a
-    // chunk moves 2 words per ECLK (SDRAM64 on the 64-bit EMIFA). A chunk
-    // that directly continues the previous chunk of the same burst pays no
-    // access_cycles (the row is still open).
+    // chunk moves 2 words per ECLK (SDRAM64 on the 64-bit EMIFA).
     uint32_t chunk_words = 32;
+    // The open row: a chunk pays no access_cycles when the op right before it
+    // on the bus was an SDRAM chunk that left the same row (bank and row) of
+    // the SDRAM open; any other op (a card word, a refresh) closes it, and a
+    // chunk pays access_cycles again for every row boundary it crosses.
+    // Geometry (ASSUMED from the DSK's 16 MB = 2 x 64 Mbit parts, 32 bits
+    // each, on the 64-bit bus: 4 banks x 2048 rows x 256 columns of 8 bytes,
+    // hardware-facts.md section 3): one row of one bank = 2 KB of
+    // consecutive addresses, column address in the low bits, then the bank,
+    // then the row. A row is identified by offset / row_bytes.
+    uint32_t row_bytes = 2048;
 };
 
 struct emif_config {
@@ -190,7 +198,11 @@ class emif_async_master {
     uint64_t m_ce_accesses[ce_count] = {};
     uint64_t m_next_refresh = 0;
     uint32_t m_refresh_pending = 0;
-    const emif_access* m_sdram_open = nullptr;  // burst whose row is still open
+    // SDRAM row (offset / row_bytes) left open by the last chunk; no_row when
+    // the op before was not an SDRAM chunk.
+    static constexpr uint64_t no_row = UINT64_MAX;
+    uint64_t m_sdram_open_row = no_row;
+    uint64_t sdram_row(uint32_t address) const;
     bool m_ardy_history[16] = {};
     emif_pins m_pins;
     emif_stats m_stats;

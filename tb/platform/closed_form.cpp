@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "dsp/control_program.h"
 #include "model/emif/cectl.h"
 
 namespace platform {
@@ -33,6 +34,21 @@ capture_figures capture(int cols, int rows, uint32_t card_cectl, const emif::emi
     c.header_eclk = status_words * card.read_cycles() + ta + sdram_write(status_words);
     c.line_eclk = ta + words_per_line * card.read_cycles() + ta + sdram_write(words_per_line);
     c.pair_eclk = c.header_eclk + 2 * static_cast<uint64_t>(rows) * c.line_eclk;
+    // An SDRAM line burst that crosses a 2 KB row boundary pays the row
+    // access again there (docs/emif.md). The pair buffer (4 KB aligned)
+    // holds the 64-byte header, then the left frame, then the right, each
+    // line after line (dsp/control_program.h).
+    const uint64_t line_bytes = static_cast<uint64_t>(cols);
+    const uint64_t frame_bytes = line_bytes * static_cast<uint64_t>(rows);
+    for (uint64_t frame = 0; sd.row_bytes > 0 && frame < 2; ++frame) {
+        for (uint64_t k = 0; k < static_cast<uint64_t>(rows); ++k) {
+            const uint64_t first =
+                dsp::control_program_edma::header_bytes + frame * frame_bytes + k * line_bytes;
+            const uint64_t last = first + line_bytes - 1;
+            c.row_crossings += last / sd.row_bytes - first / sd.row_bytes;
+        }
+    }
+    c.pair_eclk += c.row_crossings * sd.access_cycles;
     // Refresh: one every refresh_period ECLK. Inside a card burst it costs
     // TA + refresh + TA, next to SDRAM data only the refresh (docs/emif.md).
     const double async_share =
@@ -47,6 +63,31 @@ capture_figures capture(int cols, int rows, uint32_t card_cectl, const emif::emi
     c.eclk_ns = static_cast<double>(eclk.period_num()) / static_cast<double>(eclk.period_den()) /
                 static_cast<double>(simtime::ticks_per_ns);
     return c;
+}
+
+traffic_figures firmware_traffic(int cols, int rows, uint32_t card_cectl,
+                                 const emif::emif_config& emif, uint32_t l2_line_bytes) {
+    traffic_figures t;
+    const uint64_t bytes = 2ull * static_cast<uint64_t>(cols) * static_cast<uint64_t>(rows);
+    t.lines = (bytes + l2_line_bytes - 1) / l2_line_bytes;
+    const uint64_t ta = emif::decode_cectl(card_cectl).turnaround;
+    t.line_eclk = ta + emif.sdram.access_cycles + (l2_line_bytes / 4 + 1) / 2 + ta;
+    t.eclk = t.lines * t.line_eclk;
+    t.eclk_ns = static_cast<double>(emif.eclk.period_num()) /
+                static_cast<double>(emif.eclk.period_den()) /
+                static_cast<double>(simtime::ticks_per_ns);
+    return t;
+}
+
+mode_estimate estimate_overlapped(double capture_ms, double traffic_ms, double processing_ms,
+                                  double period_ms) {
+    return estimate_overlapped(capture_ms + traffic_ms, processing_ms, period_ms);
+}
+
+mode_estimate estimate_sequential(double capture_ms, double traffic_ms, double processing_ms,
+                                  double period_ms) {
+    (void)traffic_ms;  // inside the processing time
+    return estimate_sequential(capture_ms, processing_ms, period_ms);
 }
 
 mode_estimate estimate_sequential(double capture_ms, double processing_ms, double period_ms) {

@@ -35,7 +35,8 @@ readout_figures readout(const sensor::sensor_profile& p);
 struct capture_figures {
     uint64_t header_eclk = 0;       // status registers + header write
     uint64_t line_eclk = 0;         // one line: card read + SDRAM write + turnarounds
-    uint64_t pair_eclk = 0;         // header + 2 x rows x line, without refresh
+    uint64_t row_crossings = 0;     // SDRAM row boundaries inside the pair's line bursts
+    uint64_t pair_eclk = 0;         // header + 2 x rows x line + row crossings, without refresh
     double refresh_fraction = 0.0;  // bus time refresh adds (fraction of pair_eclk)
     uint64_t total_eclk = 0;        // with refresh
     double eclk_ns = 0.0;
@@ -44,6 +45,23 @@ struct capture_figures {
 // cols x rows active pixels (4 per 32-bit word); card_cectl = CECTL2/3; the
 // SDRAM numbers and the ECLK period of the engine's configuration.
 capture_figures capture(int cols, int rows, uint32_t card_cectl, const emif::emif_config& emif);
+
+// The firmware's own SDRAM traffic per pair on EMIFA (dsp/controller.h memory
+// plan: the raw pair read once through the L2 cache, 2 cols rows bytes in
+// line transfers of l2_line_bytes; nothing else frame-scale). In overlapped
+// mode the lines run while the next pair is captured: a line inside a card
+// burst costs the burst TA + row access + data + TA ECLK (the row is closed
+// by the card words before it). line_eclk is that worst case; eclk = lines
+// x line_eclk, the bus time the traffic can add to one period.
+struct traffic_figures {
+    uint64_t lines = 0;
+    uint64_t line_eclk = 0;
+    uint64_t eclk = 0;
+    double eclk_ns = 0.0;
+    double ms() const { return eclk * eclk_ns * 1e-6; }
+};
+traffic_figures firmware_traffic(int cols, int rows, uint32_t card_cectl,
+                                 const emif::emif_config& emif, uint32_t l2_line_bytes = 128);
 
 // DESIGN.md "What the budget means", with the paper's two modes:
 //   sequential: the pair is read, then processed, before the next can be
@@ -57,5 +75,14 @@ struct mode_estimate {
 };
 mode_estimate estimate_sequential(double capture_ms, double processing_ms, double period_ms);
 mode_estimate estimate_overlapped(double capture_ms, double processing_ms, double period_ms);
+// With the firmware's SDRAM traffic on the bus (traffic_figures::ms()):
+// overlapped, the bus must carry capture + traffic in a period (need =
+// max(capture + traffic, processing)); sequential, the traffic runs inside
+// the processing time (its stalls are in the charged cycles), so need =
+// capture + processing as above.
+mode_estimate estimate_overlapped(double capture_ms, double traffic_ms, double processing_ms,
+                                  double period_ms);
+mode_estimate estimate_sequential(double capture_ms, double traffic_ms, double processing_ms,
+                                  double period_ms);
 
 }  // namespace platform

@@ -175,10 +175,24 @@ void print_report(std::FILE* out, const platform_top& top, const scoreboard_repo
                  "   readout: first active pixel %.3f ms after frame start, active span %.3f ms, "
                  "frame %.3f ms\n",
                  rf.first_active_ms(), rf.active_span_ms(), rf.frame_ms());
+    // The firmware's SDRAM lines on the bus (docs/budget.md): only when they
+    // are replayed there.
+    const traffic_figures tf =
+        firmware_traffic(config.profile.active_cols, config.profile.active_rows,
+                         config.dsk.version >= 2 ? dsp::c6416::emifa::dsk_cectl_card_v2
+                                                 : dsp::c6416::emifa::dsk_cectl_card_v1,
+                         top.engine().config());
+    const double traffic_ms = config.sdram_traffic_on_bus ? tf.ms() : 0.0;
+    std::fprintf(out,
+                 "   firmware SDRAM lines per pair %llu x %llu ECLK (inside a card burst) = %.3f "
+                 "ms%s\n",
+                 static_cast<unsigned long long>(tf.lines),
+                 static_cast<unsigned long long>(tf.line_eclk), tf.ms(),
+                 config.sdram_traffic_on_bus ? "" : " (off the bus: not counted)");
     const mode_estimate seq =
-        estimate_sequential(cf.total_ms(), budget.max_processing_ms, budget.period_ms);
+        estimate_sequential(cf.total_ms(), traffic_ms, budget.max_processing_ms, budget.period_ms);
     const mode_estimate ovl =
-        estimate_overlapped(cf.total_ms(), budget.max_processing_ms, budget.period_ms);
+        estimate_overlapped(cf.total_ms(), traffic_ms, budget.max_processing_ms, budget.period_ms);
     std::fprintf(out,
                  "   estimate with max processing %.3f ms: sequential needs %.3f ms (%s), "
                  "overlapped %.3f ms (%s)\n",

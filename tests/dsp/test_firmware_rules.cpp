@@ -126,10 +126,18 @@ TEST(FirmwareRules, StageCyclesAreNonZeroExactlyForTheStagesThatRan) {
             EXPECT_EQ(hal.frame_cycles(s), out.stage_cycles[i]) << "frame " << n;
             EXPECT_LE(hal.frame_entries(s), 1) << "frame " << n << " " << dsp::stage_name(s);
         }
-        // The preprocess charge is the cost model's for two VGA frames in SDRAM.
-        const uint64_t per_image = dsp::cost::demosaic_gray_cycles(640, 480, config.frame_memory) +
-                                   dsp::cost::brightness_cycles(640, 480, config.frame_memory);
-        EXPECT_EQ(out.stage_cycles[stage_index(stage::preprocess)], 2 * per_image);
+        // The preprocess charge is the cost model's for two VGA frames (raw
+        // from SDRAM, gray and brightness in L2: the memory plan), plus the
+        // packed Dif(t-1,t) where neither detect nor track makes it (the
+        // second pair of the history, and LOST).
+        const uint64_t per_image =
+            dsp::cost::demosaic_gray_cycles(640, 480, config.frame_memory, config.raw_memory) +
+            dsp::cost::brightness_cycles(640, 480, config.frame_memory);
+        const bool mask_in_preprocess = n == 1 || previous == tracker_state::lost;
+        const uint64_t mask =
+            mask_in_preprocess ? dsp::cost::difference_packed_cycles(640, 480, config.frame_memory)
+                               : 0;
+        EXPECT_EQ(out.stage_cycles[stage_index(stage::preprocess)], 2 * per_image + mask);
         EXPECT_EQ(out.stage_cycles[stage_index(stage::capture)], 0u);
         previous = out.state;
     }

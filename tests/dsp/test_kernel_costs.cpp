@@ -154,10 +154,10 @@ TEST_F(KernelCosts, SdramPlacementCostsMoreThanL2) {
     const int w = 640, h = 480;
     const uint64_t frame = static_cast<uint64_t>(w) * h;
     // One burst per 128-byte line read, two per line written (fetch +
-    // write-back); 6 + 16 EMIF cycles each at 100 MHz = 132 CPU cycles at 600
+    // write-back); 7 + 16 EMIF cycles each at 100 MHz = 138 CPU cycles at 600
     // MHz.
     auto sdram_extra = [&](uint64_t read, uint64_t written) {
-        return (read / 128 + 2 * (written / 128)) * 22 * 6;
+        return (read / 128 + 2 * (written / 128)) * 23 * 6;
     };
     struct {
         const char* name;
@@ -169,6 +169,16 @@ TEST_F(KernelCosts, SdramPlacementCostsMoreThanL2) {
          sdram_extra(frame, frame)},
         {"three_frame_difference", three_frame_difference_cycles(w, h, memory::l2),
          three_frame_difference_cycles(w, h, memory::sdram), sdram_extra(3 * frame, frame)},
+        // The packed forms read 2 frames + the 1/8-frame mask and write the mask.
+        {"three_frame_diff_packed", three_frame_difference_packed_cycles(w, h, memory::l2),
+         three_frame_difference_packed_cycles(w, h, memory::sdram),
+         sdram_extra(2 * frame + frame / 8, frame / 8)},
+        {"difference_packed", difference_packed_cycles(w, h, memory::l2),
+         difference_packed_cycles(w, h, memory::sdram), sdram_extra(2 * frame, frame / 8)},
+        // The firmware's plan: raw from SDRAM, gray into L2: only the raw read
+        // is an SDRAM stream.
+        {"demosaic raw SDRAM->L2", demosaic_gray_cycles(w, h, memory::l2),
+         demosaic_gray_cycles(w, h, memory::l2, memory::sdram), sdram_extra(frame, 0)},
     };
     for (const auto& c : cases) {
         std::printf("%-24s VGA in L2 %9llu cycles, in SDRAM %9llu (x%.2f)\n", c.name,
@@ -194,10 +204,10 @@ TEST_F(KernelCosts, ClocksTurnCyclesIntoTime) {
     set_model(c64x::cost_model(v3));
     EXPECT_EQ(demosaic_gray_cycles(640, 480, memory::l2), v1_l2);
     const uint64_t v3_sdram = demosaic_gray_cycles(640, 480, memory::sdram);
-    // 7200 bursts x 22 EMIF cycles x 8 ns = 1.267 ms of stall either way of
-    // counting: 1,267,200 CPU cycles at 1 GHz vs 950,400 at 600 MHz / 100 MHz.
-    EXPECT_EQ(v3_sdram - v1_l2, 7200u * 22 * 8);
-    EXPECT_EQ(v1_sdram - v1_l2, 7200u * 22 * 6);
+    // 7200 bursts x 23 EMIF cycles x 8 ns = 1.325 ms of stall at 125 MHz:
+    // 1,324,800 CPU cycles at 1 GHz vs 993,600 at 600 MHz / 100 MHz (1.656 ms).
+    EXPECT_EQ(v3_sdram - v1_l2, 7200u * 23 * 8);
+    EXPECT_EQ(v1_sdram - v1_l2, 7200u * 23 * 6);
     std::printf("demosaic VGA from SDRAM: v1 %.3f ms, v3 %.3f ms\n",
                 ms_at(v1_sdram, c64x::dsk_v1_cpu_hz), ms_at(v3_sdram, c64x::dsk_v3_cpu_hz));
 }
@@ -267,14 +277,15 @@ TEST_F(KernelCosts, PrintsFiguresAgainstThePaper) {
         "(%.0f cycles each)\n",
         4.71e-3 * 600e6 / per_position, per_position);
 
-    // One VGA pair with frames in SDRAM, as the controller charges it.
+    // One VGA pair as the controller charges it (memory plan: raw in SDRAM,
+    // gray frames and the packed mask in L2).
     const int w = 640, h = 480;
     const uint64_t preprocess =
-        2 * (demosaic_gray_cycles(w, h, memory::sdram) + brightness_cycles(w, h, memory::sdram));
-    const uint64_t detect = three_frame_difference_cycles(w, h, memory::sdram) +
+        2 * (demosaic_gray_cycles(w, h, memory::l2, memory::sdram) + brightness_cycles(w, h));
+    const uint64_t detect = three_frame_difference_packed_cycles(w, h) +
                             morphology_cycles(w, h, 6) + connected_components_cycles(w, h, 2000);
-    row("VGA pair: preprocess (2 x demosaic+gain, SDRAM)", preprocess, "");
-    row("VGA: detect (3-frame diff SDRAM, 6 morph, CC)", detect, "");
+    row("VGA pair: preprocess (2 x demosaic raw SDRAM + gain L2)", preprocess, "");
+    row("VGA: detect (3-frame diff packed L2, 6 morph, CC)", detect, "");
     row("VGA pair, tracking: all stages", preprocess + track + stereo + edge + xyz, "24.5ms");
     std::printf(
         "(720 MHz / 1 GHz columns rescale the cycles; the SDRAM stalls in them were "

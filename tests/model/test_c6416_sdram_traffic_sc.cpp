@@ -136,32 +136,39 @@ TEST(C6416SdramTrafficSc, FirmwareSdramLinesTakeBusTimeAndDelayTheCapture) {
     // ---- A: the closed form of the lines, the charge's time unchanged ----------------------
     // Lines read: 100 reads + 50 write-allocate fetches; written back: 50.
     // A line is one SDRAM access: row access 7 + 16 data ECLK = 23. On an
-    // otherwise idle bus the engine keeps the row open from one CPU line to
-    // the next (nothing else used the bus between them: its row-open rule
-    // compares the access object, which emif_tlm_target reuses), so only the
-    // first line pays the row access: 7 + 200 x 16 (see docs/c6416.md).
+    // otherwise idle bus the engine keeps the SDRAM row open from one CPU
+    // line to the next when the next is in the same 2 KB row (docs/emif.md):
+    // the replayed lines go to consecutive addresses of the window
+    // (0x80C00000, row aligned), so a row access only every 16 lines:
+    // 200 lines touch 13 rows: 13 x 7 + 200 x 16 (docs/c6416.md).
     const uint64_t transfers_a = 100 + 2 * 50;
     const uint64_t data_edges = line_bytes / 8;                       // 2 words per ECLK
     const uint64_t line_edges = ec.sdram.access_cycles + data_edges;  // 7 + 16 = 23
+    const uint64_t lines_per_row = ec.sdram.row_bytes / line_bytes;   // 16
+    // Rows touched by `count` consecutive lines from replayed line `first`.
+    auto rows_touched = [&](uint64_t first, uint64_t count) {
+        return (first + count - 1) / lines_per_row - first / lines_per_row + 1;
+    };
     EXPECT_EQ(after_a.lines_read - before_a.lines_read, 150u);
     EXPECT_EQ(after_a.lines_written - before_a.lines_written, 50u);
     EXPECT_EQ(after_a.cpu_words - before_a.cpu_words, transfers_a * line_bytes / 4);
+    EXPECT_EQ(rows_touched(0, transfers_a), 13u);
     EXPECT_EQ(after_a.busy_edges - before_a.busy_edges,
-              ec.sdram.access_cycles + transfers_a * data_edges);
+              rows_touched(0, transfers_a) * ec.sdram.access_cycles + transfers_a * data_edges);
     EXPECT_EQ(fs_of(a_begin), 0);
     EXPECT_EQ(fs_of(a_end), cpu_edge_fs(cycles_a, 600000000));
-    // The cost model's own figure for the same bytes (dsp/c64x_cost_model.h,
-    // 6 + 16 ECLK per line: it assumes no precharge cycle).
+    // The cost model's own figure for the same bytes (dsp/c64x_cost_model.h:
+    // 7 + 16 ECLK per line, the engine's line with its row closed).
     dsp::c64x::memory_traffic stream;
     stream.bytes_read = traffic_a.bytes_read;
     stream.bytes_written = traffic_a.bytes_written;
     stream.where = dsp::c64x::placement::sdram;
     const uint64_t cost_model_ps = dsp::cost::model().emif_busy_ps(stream);
-    EXPECT_EQ(cost_model_ps, transfers_a * 22 * eclk_ps);
+    EXPECT_EQ(cost_model_ps, transfers_a * line_edges * eclk_ps);
     std::printf(
-        "A: %llu transfers, bus busy %llu ECLK (engine: 7 + 16 per line, row kept open) vs cost "
+        "A: %llu transfers, bus busy %llu ECLK (engine: 16 per line, 7 per row opened) vs cost "
         "model %.0f "
-        "ECLK (22 per line); charge %.3f us as charged\n",
+        "ECLK (23 per line); charge %.3f us as charged\n",
         static_cast<unsigned long long>(transfers_a),
         static_cast<unsigned long long>(after_a.busy_edges - before_a.busy_edges),
         static_cast<double>(cost_model_ps) / eclk_ps, a_end.to_seconds() * 1e6);
@@ -188,12 +195,16 @@ TEST(C6416SdramTrafficSc, FirmwareSdramLinesTakeBusTimeAndDelayTheCapture) {
         static_cast<unsigned long long>(ta));
 
     // ---- D: the CPU waits for lines its cycles cannot cover -------------------------------------
-    // Back to back each line is 16 ECLK (row kept open, as in A; the first
-    // pays 7 more) plus the one edge a request made at an edge waits
-    // (docs/emif.md rule 5): 7 + 100 x 17 ECLK = 17.07 us after 4 ms.
+    // Back to back each line is 16 ECLK (row kept open, as in A; 7 more per
+    // row opened: replayed lines 240..339 touch 7 rows) plus the one edge a
+    // request made at an edge waits (docs/emif.md rule 5): 7 x 7 + 100 x 17
+    // ECLK = 17.49 us after 4 ms.
     EXPECT_EQ(fs_of(d_begin), 4000000000000LL);
+    EXPECT_EQ(rows_touched(240, 100), 7u);
     EXPECT_EQ(fs_of(d_end) - fs_of(d_begin),
-              static_cast<int64_t>(ec.sdram.access_cycles + 100 * (data_edges + 1)) * 10000000LL);
+              static_cast<int64_t>(rows_touched(240, 100) * ec.sdram.access_cycles +
+                                   100 * (data_edges + 1)) *
+                  10000000LL);
     const int64_t late_fs = fs_of(d_end) - fs_of(d_begin) - 10000000000LL;  // charged 10 us
     EXPECT_EQ(fs_of(chip.sdram_late_time()), late_fs);
     std::printf("D: 100 lines in a 10 us charge: the CPU took %.3f us (late %.3f us)\n",

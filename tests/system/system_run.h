@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "dsp/c6416_regs.h"
 #include "dsp/kernel_costs.h"
 #include "tb/host/stereo_runner.h"
 #include "tb/platform/budget.h"
@@ -61,6 +62,15 @@ inline double host_max_processing_ms(const platform::platform_config& config, in
 // The closed-form capture time of the configuration (DSK v1 card CECTL).
 inline platform::capture_figures closed_form_capture(const platform::platform_top& top) {
     return platform::capture_closed_form(top);
+}
+
+// The firmware's SDRAM lines per pair on the bus (docs/budget.md).
+inline platform::traffic_figures closed_form_traffic(const platform::platform_top& top) {
+    const platform::platform_config& c = top.config();
+    return platform::firmware_traffic(c.profile.active_cols, c.profile.active_rows,
+                                      c.dsk.version >= 2 ? dsp::c6416::emifa::dsk_cectl_card_v2
+                                                         : dsp::c6416::emifa::dsk_cectl_card_v1,
+                                      top.engine().config());
 }
 
 }  // namespace system_test

@@ -19,7 +19,6 @@ TEST(data_integrity, checksums_match_until_a_stuck_bit_then_differ_by_exactly_th
     // The firmware's SDRAM traffic stays off the EMIF bus here (the model
     // before issue 5): with it the default scenario is over budget
     // (test_sdram_traffic_sc, docs/budget.md), and this test checks the rest.
-    config.sdram_traffic_on_bus = false;
     config.wire.enabled = true;
     config.wire.camera = 0;
     config.wire.bit = 2;

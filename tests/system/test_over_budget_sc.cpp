@@ -15,18 +15,15 @@ namespace {
 TEST(over_budget, large_search_window_at_low_cpu_clock_is_reported_naming_the_stage) {
     platform::platform_config config;
     config.dsk = c6416::dsk_custom(300000000, 100000000);
-    // The firmware's SDRAM traffic stays off the EMIF bus here (the model
-    // before issue 5): with it the default scenario is over budget
-    // (test_sdram_traffic_sc, docs/budget.md), and this test checks the rest.
-    config.sdram_traffic_on_bus = false;
     config.dsk.version = 1;  // the DSK v1 EMIF settings
     config.track_search_radius = 96;
     const system_test::system_run r = system_test::simulate(config);
 
     const platform::capture_figures cf = system_test::closed_form_capture(*r.top);
     const double processing_ms = system_test::host_max_processing_ms(config, 12);
+    const platform::traffic_figures tf = system_test::closed_form_traffic(*r.top);
     const platform::mode_estimate ovl =
-        platform::estimate_overlapped(cf.total_ms(), processing_ms, r.budget.period_ms);
+        platform::estimate_overlapped(cf.total_ms(), tf.ms(), processing_ms, r.budget.period_ms);
     EXPECT_FALSE(ovl.fits);
     EXPECT_FALSE(r.budget.fits);
     EXPECT_EQ(r.budget.fits, ovl.fits);

@@ -15,16 +15,13 @@ namespace {
 TEST(sequential_mode, over_budget_as_the_closed_form_says_naming_the_stage) {
     platform::platform_config config;
     config.mode = dsp::pipeline_mode::sequential;
-    // The firmware's SDRAM traffic stays off the EMIF bus here (the model
-    // before issue 5): with it the default scenario is over budget
-    // (test_sdram_traffic_sc, docs/budget.md), and this test checks the rest.
-    config.sdram_traffic_on_bus = false;
     const system_test::system_run r = system_test::simulate(config);
 
     const platform::capture_figures cf = system_test::closed_form_capture(*r.top);
     const double processing_ms = system_test::host_max_processing_ms(config, 12);
+    const platform::traffic_figures tf = system_test::closed_form_traffic(*r.top);
     const platform::mode_estimate seq =
-        platform::estimate_sequential(cf.total_ms(), processing_ms, r.budget.period_ms);
+        platform::estimate_sequential(cf.total_ms(), tf.ms(), processing_ms, r.budget.period_ms);
     EXPECT_FALSE(seq.fits);
     EXPECT_EQ(r.budget.fits, seq.fits);
     ASSERT_GE(r.budget.judged_periods, 8);
