@@ -20,30 +20,10 @@ namespace {
 
 using simtime::ticks;
 
-// Pin groups of the hash (docs/platform.md, "Pin hash").
-constexpr uint32_t group_sensor_left = 0;
-constexpr uint32_t group_sensor_right = 1;
-constexpr uint32_t group_emif_dsp = 2;
-constexpr uint32_t group_card_out = 3;
-
-uint64_t pack_dsp_pins(const emif::emif_pins& p) {
-    uint64_t v = 0;
-    for (int i = 0; i < emif::ce_count; ++i) v |= static_cast<uint64_t>(p.ce_n[i]) << i;
-    v |= static_cast<uint64_t>(p.aoe_n) << 4 | static_cast<uint64_t>(p.are_n) << 5 |
-         static_cast<uint64_t>(p.awe_n) << 6 | static_cast<uint64_t>(p.ed_oe) << 7 |
-         static_cast<uint64_t>(p.be_n & 0xF) << 8 | static_cast<uint64_t>(p.ea & 0xFFFFF) << 12;
-    // ED as driven by the DSP matters only while it drives.
-    if (p.ed_oe) v ^= static_cast<uint64_t>(p.ed_out) << 32;
-    return v;
-}
-
-// The card's outputs that reach pins: OE, ED (while driven), ARDY, EXT_INT4..6.
-uint64_t pack_card_outputs(const Vcard& d) {
-    uint64_t v = static_cast<uint64_t>(d.sensor_oe) | static_cast<uint64_t>(d.ardy) << 1 |
-                 static_cast<uint64_t>(d.ed_oe) << 2 | static_cast<uint64_t>(d.ext_int4) << 3 |
-                 static_cast<uint64_t>(d.ext_int5) << 4 | static_cast<uint64_t>(d.ext_int6) << 5;
-    if (d.ed_oe) v |= static_cast<uint64_t>(d.ed_out) << 32;
-    return v;
+// The card's outputs as the pin hash packs them (pin_hash.h).
+uint64_t card_outputs_of(const Vcard& d) {
+    return platform::pack_card_outputs(d.sensor_oe, d.ardy, d.ed_oe, d.ext_int4, d.ext_int5,
+                                       d.ext_int6, d.ed_out);
 }
 
 }  // namespace
@@ -66,6 +46,7 @@ island::island(sc_core::sc_module_name name, const island_config& config,
             config.profile, c == 0 ? scene::camera_id::left : scene::camera_id::right, source,
             config.sensor[c]);
         for (const sensor::fault& f : config.faults[c]) m_sensor[c]->add_fault(f);
+        m_core[c] = m_sensor[c].get();
         const size_t bytes = static_cast<size_t>(config.profile.active_cols) *
                              static_cast<size_t>(config.profile.active_rows);
         m_ring[c].assign(static_cast<size_t>(std::max(2, config.frame_ring)),
@@ -76,7 +57,48 @@ island::island(sc_core::sc_module_name name, const island_config& config,
     m_eclk.reset(engine.config().eclk, 2 * engine.next_edge());
     m_next_boundary = config.period;
     reset_card();
+    if (config.trace) {
+        m_trace = config.trace;
+        for (int i = 0; i < trace_pin_count; ++i)
+            m_trace_id[i] = m_trace->declare(trace_pin_signal(static_cast<trace_pin>(i)));
+        // The values before the first edge (tick -1: before any window).
+        for (int c = 0; c < 2; ++c) {
+            const int base = c == 0 ? 0 : static_cast<int>(trace_pin::r_pclk);
+            for (int k = 0; k < 5; ++k) trace_set(-1, static_cast<trace_pin>(base + k), 0);
+        }
+        trace_set(-1, trace_pin::card_pclk, 0);
+        trace_set(-1, trace_pin::eclkout, 0);
+        trace_emif(-1, engine.pins());
+        trace_card(-1);
+        trace_set(-1, trace_pin::irq_taken, 0);
+        trace_set(-1, trace_pin::cpu_asleep, 0);
+        trace_set(-1, trace_pin::fw_stage, stage_idle);
+        trace_set(-1, trace_pin::fw_tracker, 0);
+    }
     SC_THREAD(run);
+}
+
+island::island(sc_core::sc_module_name name, const island_config& config,
+               emif::emif_async_master& engine, timeline& events, observers_only)
+    : sc_core::sc_module(name),
+      ext_int4("ext_int4"),
+      ext_int5("ext_int5"),
+      ext_int6("ext_int6"),
+      m_config(config),
+      m_engine(engine),
+      m_events(events),
+      m_pclk(config.pclk),
+      m_eclk(engine.config().eclk) {
+    for (int c = 0; c < 2; ++c) {
+        const size_t bytes = static_cast<size_t>(config.profile.active_cols) *
+                             static_cast<size_t>(config.profile.active_rows);
+        m_ring[c].assign(static_cast<size_t>(std::max(2, config.frame_ring)),
+                         std::vector<uint8_t>(bytes, 0));
+        m_ring_owner[c].assign(m_ring[c].size(), UINT64_MAX);
+    }
+    m_next_boundary = config.period;
+    m_pins_seen = engine.pins();
+    m_pin_hasher.set_initial(pin_group_emif_dsp, pack_dsp_pins(m_pins_seen));
 }
 
 island::~island() {
@@ -103,7 +125,9 @@ void island::reset_card() {
     d.rst_n = 1;
     d.eval();
     m_pins_seen = p;
-    m_card_out_seen = pack_card_outputs(d);
+    m_card_out_seen = card_outputs_of(d);
+    m_pin_hasher.set_initial(pin_group_emif_dsp, pack_dsp_pins(p));
+    m_pin_hasher.set_initial(pin_group_card_out, m_card_out_seen);
 }
 
 // ---- the SystemC side ------------------------------------------------------------------------
@@ -151,6 +175,9 @@ ticks island::advance(ticks limit, bool* stopped) {
     simtime::clock_cursor eclk = m_eclk;
     ticks last = m_last_tick;
     const bool hash = m_config.hash_pins;
+    const bool trace = m_trace != nullptr;
+    // The firmware's events up to now come before any edge after now.
+    if (trace) trace_firmware();
 
     for (;;) {
         const ticks tp = pclk.tick();
@@ -161,6 +188,7 @@ ticks island::advance(ticks limit, bool* stopped) {
         if (t > limit) break;
         const bool pe = tp == t, ee = te == t;
         while (t >= m_next_boundary) close_period();
+        if (trace) trace_flush(t);
 
         // 1. Every core samples its inputs as they were before the tick.
         emif::emif_inputs in;
@@ -177,6 +205,10 @@ ticks island::advance(ticks limit, bool* stopped) {
         if (pe || ee) d.eval();
         if (tl == t) step_sensor(0, oe_before);
         if (tr == t) step_sensor(1, oe_before);
+        if (trace) {
+            if (tl == t) trace_sensor(0, t);
+            if (tr == t) trace_sensor(1, t);
+        }
 
         // 2. Then the outputs of this tick.
         bool stop = false;
@@ -237,13 +269,22 @@ ticks island::advance(ticks limit, bool* stopped) {
             d.ed_in = p.ed_out;
             if (hash && p != m_pins_seen) {
                 m_pins_seen = p;
-                mix_pin(t, group_emif_dsp, pack_dsp_pins(p));
+                mix_pin(t, pin_group_emif_dsp, pack_dsp_pins(p));
             }
             eclk.advance();
+            if (trace) {
+                trace_set(t, trace_pin::eclkout, 1);
+                trace_defer(eclk.tick(), trace_pin::eclkout, 0);
+                trace_emif(t, p);
+            }
             eclk.advance();
         }
         if (pe) {
             pclk.advance();
+            if (trace) {
+                trace_set(t, trace_pin::card_pclk, 1);
+                trace_defer(pclk.tick(), trace_pin::card_pclk, 0);
+            }
             pclk.advance();
         }
         // A sensor word reaches the card's inputs if its falling edge comes
@@ -260,12 +301,13 @@ ticks island::advance(ticks limit, bool* stopped) {
             d.eclk = 0;
             d.eval();
             if (hash) {
-                const uint64_t out = pack_card_outputs(d);
+                const uint64_t out = card_outputs_of(d);
                 if (out != m_card_out_seen) {
                     m_card_out_seen = out;
-                    mix_pin(t, group_card_out, out);
+                    mix_pin(t, pin_group_card_out, out);
                 }
             }
+            if (trace) trace_card(t);
         }
         last = t;
         if (stop) {
@@ -276,6 +318,11 @@ ticks island::advance(ticks limit, bool* stopped) {
     m_pclk = pclk;
     m_eclk = eclk;
     m_last_tick = last;
+    // Every change still to come is at a later tick (a sensor's word at its
+    // fall after a later rise, other pins at later edges).
+    m_pin_hasher.flush_before(last + 1);
+    // Nothing else can report a change before the time the island waits for.
+    if (trace) trace_flush(*stopped ? last : limit);
     return last;
 }
 
@@ -286,9 +333,13 @@ void island::step_sensor(int c, bool oe) {
     w.bits = bits;
     w.fall = s.last_fall_tick();
     w.applied = false;
+    record_sensor_word(c, bits, w.fall);
+}
+
+void island::record_sensor_word(int c, uint16_t bits, ticks fall) {
     if (m_config.hash_pins && bits != m_word_seen[c]) {
         m_word_seen[c] = bits;
-        mix_pin(w.fall, c == 0 ? group_sensor_left : group_sensor_right, bits);
+        mix_pin(fall, c == 0 ? pin_group_sensor_left : pin_group_sensor_right, bits);
     }
 
     // Record the active pixels as driven (docs/platform.md, "Data path integrity").
@@ -339,7 +390,7 @@ void island::apply_sensor_word(int c, uint16_t bits) {
 
 void island::start_frame(int c) {
     recorder& r = m_rec[c];
-    const sensor::sensor_core& s = *m_sensor[c];
+    const sensor::sensor_core& s = *m_core[c];
     if (s.truth().empty()) return;
     const uint64_t index = s.truth().size() - 1;
     if (index == r.truth_index) return;  // a VSYNC glitch inside the frame
@@ -359,8 +410,8 @@ void island::start_frame(int c) {
     r.pixels = 0;
     r.row = 0;
     r.col = 0;
-    m_events.add(s.truth()[index].start_tick, event_kind::sensor_frame, static_cast<uint8_t>(c),
-                 static_cast<uint32_t>(index));
+    m_events.add_pin_event(s.truth()[index].start_tick, event_kind::sensor_frame,
+                           static_cast<uint8_t>(c), static_cast<uint32_t>(index));
 }
 
 void island::finalize(int c, uint64_t index) {
@@ -404,9 +455,168 @@ void island::close_period() {
 }
 
 void island::finish() {
+    m_pin_hasher.finish();
+    m_stats.pin_changes = m_pin_hasher.changes();
     for (int c = 0; c < 2; ++c) {
         if (m_rec[c].truth_index != UINT64_MAX)
             m_frames[c][m_rec[c].truth_index].pixels = m_rec[c].pixels;
+    }
+    if (m_trace && !m_trace_finished) {
+        trace_firmware();
+        const ticks end = std::min(m_config.end, m_config.trace_window.to);
+        trace_flush(end);
+        // A window that no edge reached still gets its snapshot.
+        if (!m_trace_open && m_config.trace_window.from <= end) trace_open();
+        m_trace->finish(end);
+        m_trace_finished = true;
+    }
+}
+
+// ---- pin trace -------------------------------------------------------------------------------
+void island::trace_set(ticks t, trace_pin pin, uint64_t value) {
+    const tick_window& window = m_config.trace_window;
+    if (t >= window.to || m_trace_finished) return;
+    if (t >= window.from && !m_trace_open) trace_open();
+    const int i = static_cast<int>(pin);
+    if (m_trace_state[i] == 1 && m_trace_value[i] == value) return;
+    m_trace_state[i] = 1;
+    m_trace_value[i] = value;
+    if (t >= window.from) m_trace->change(t, m_trace_id[i], value);
+}
+
+// The snapshot: every signal as the edges before the window left it.
+void island::trace_open() {
+    m_trace_open = true;
+    const ticks from = m_config.trace_window.from;
+    for (int i = 0; i < trace_pin_count; ++i) {
+        if (m_trace_state[i] == 1) m_trace->change(from, m_trace_id[i], m_trace_value[i]);
+        if (m_trace_state[i] == 2) m_trace->release(from, m_trace_id[i]);
+    }
+}
+
+void island::trace_release(ticks t, trace_pin pin) {
+    const int i = static_cast<int>(pin);
+    if (m_trace_state[i] == 2) return;
+    const tick_window& window = m_config.trace_window;
+    if (t >= window.to || m_trace_finished) return;
+    if (t >= window.from && !m_trace_open) trace_open();
+    m_trace_state[i] = 2;
+    if (t >= window.from) m_trace->release(t, m_trace_id[i]);
+}
+
+void island::trace_defer(ticks t, trace_pin pin, uint64_t value) {
+    if (m_deferred_count == static_cast<int>(sizeof m_deferred / sizeof m_deferred[0])) {
+        trace_flush(t);  // cannot happen with 4 clocks (at most 12 pending); keeps order anyway
+    }
+    m_deferred[m_deferred_count++] = {t, pin, value};
+}
+
+void island::trace_flush(ticks upto) {
+    while (m_deferred_count > 0) {
+        int first = -1;
+        for (int i = 0; i < m_deferred_count; ++i) {
+            if (m_deferred[i].t <= upto && (first < 0 || m_deferred[i].t < m_deferred[first].t))
+                first = i;
+        }
+        if (first < 0) return;
+        const deferred_change c = m_deferred[first];
+        for (int i = first + 1; i < m_deferred_count; ++i) m_deferred[i - 1] = m_deferred[i];
+        --m_deferred_count;
+        trace_set(c.t, c.pin, c.value);
+    }
+}
+
+void island::trace_sensor(int c, ticks rise) {
+    const int base = c == 0 ? 0 : static_cast<int>(trace_pin::r_pclk);
+    const pending_word& w = m_pending[c];
+    const sensor::pin_word word{w.bits};
+    trace_set(rise, static_cast<trace_pin>(base), 1);
+    // The sensor drives its new pins from its falling edge (docs/sensor.md).
+    trace_defer(w.fall, static_cast<trace_pin>(base), 0);
+    trace_defer(w.fall, static_cast<trace_pin>(base + 1), word.vsync() ? 1 : 0);
+    trace_defer(w.fall, static_cast<trace_pin>(base + 2), word.href() ? 1 : 0);
+    trace_defer(w.fall, static_cast<trace_pin>(base + 3), word.valid() ? 1 : 0);
+    trace_defer(w.fall, static_cast<trace_pin>(base + 4), word.data());
+}
+
+void island::trace_emif(ticks t, const emif::emif_pins& p) {
+    trace_set(t, trace_pin::ce0_n, p.ce_n[0]);
+    trace_set(t, trace_pin::ce2_n, p.ce_n[2]);
+    trace_set(t, trace_pin::ce3_n, p.ce_n[3]);
+    trace_set(t, trace_pin::ea, p.ea & 0xFFFFF);
+    trace_set(t, trace_pin::be_n, p.be_n & 0xF);
+    trace_set(t, trace_pin::aoe_n, p.aoe_n);
+    trace_set(t, trace_pin::are_n, p.are_n);
+    trace_set(t, trace_pin::awe_n, p.awe_n);
+    // The card's register the access names: EA[7:2] while CE2 is selected.
+    if (!p.ce_n[2]) {
+        trace_set(t, trace_pin::slave_register, p.ea & 0x3F);
+    } else {
+        trace_release(t, trace_pin::slave_register);
+    }
+}
+
+void island::trace_card(ticks t) {
+    const Vcard& d = *m_card;
+    const auto& root = *d.rootp;
+    trace_set(t, trace_pin::l_oe, d.sensor_oe);
+    trace_set(t, trace_pin::r_oe, d.sensor_oe);
+    trace_set(t, trace_pin::ext_int4, d.ext_int4);
+    trace_set(t, trace_pin::ext_int5, d.ext_int5);
+    trace_set(t, trace_pin::ext_int6, d.ext_int6);
+    trace_set(t, trace_pin::slave_ardy, d.ardy);
+    trace_set(t, trace_pin::slave_ed_oe, d.ed_oe);
+    if (d.ed_oe) {
+        trace_set(t, trace_pin::slave_ed, d.ed_out);
+    } else {
+        trace_release(t, trace_pin::slave_ed);
+    }
+    // ED on the bus: the DSP's value while it drives (writes), the card's
+    // while it drives (reads), else nobody (z).
+    const emif::emif_pins& p = m_engine.pins();
+    if (p.ed_oe) {
+        trace_set(t, trace_pin::ed, p.ed_out);
+    } else if (d.ed_oe) {
+        trace_set(t, trace_pin::ed, d.ed_out);
+    } else {
+        trace_release(t, trace_pin::ed);
+    }
+    trace_set(t, trace_pin::oe_state, root.card_top__DOT__u_capture__DOT__u_oe__DOT__state_q);
+    trace_set(t, trace_pin::sync_causes,
+              root.card_top__DOT__u_capture__DOT__u_check__DOT__causes_q);
+    trace_set(t, trace_pin::verdict, root.card_top__DOT__p_verdict_causes);
+    trace_set(t, trace_pin::fifo_level_l, root.card_top__DOT__l_wr_level_unused);
+    trace_set(t, trace_pin::fifo_level_r, root.card_top__DOT__r_wr_level_unused);
+    trace_set(t, trace_pin::fifo_overflow_l, root.card_top__DOT__l_overflow);
+    trace_set(t, trace_pin::fifo_overflow_r, root.card_top__DOT__r_overflow);
+}
+
+void island::trace_firmware() {
+    const std::vector<timeline_event>& events = m_events.events();
+    for (; m_timeline_traced < events.size(); ++m_timeline_traced)
+        trace_firmware_event(events[m_timeline_traced]);
+}
+
+void island::trace_firmware_event(const timeline_event& e) {
+    switch (e.kind) {
+        case event_kind::stage_begin:
+            trace_set(e.tick, trace_pin::fw_stage, e.a);
+            break;
+        case event_kind::stage_end:
+            trace_set(e.tick, trace_pin::fw_stage, stage_idle);
+            break;
+        case event_kind::cpu_sleep:
+            trace_set(e.tick, trace_pin::cpu_asleep, 1);
+            break;
+        case event_kind::cpu_wake:
+            trace_set(e.tick, trace_pin::cpu_asleep, 0);
+            trace_set(e.tick, trace_pin::irq_taken, e.a);
+            break;
+        case event_kind::result:
+            trace_set(e.tick, trace_pin::fw_tracker, e.a);
+            break;
+        default:  // the island's own events (pins) are traced where they happen
+            break;
     }
 }
 

@@ -23,7 +23,8 @@
 // never a result (tests/system/test_quantum_invariance_sc.cpp).
 //
 // Observers (no effect on the simulation): the pin hash (every pin change
-// with its tick, hashed in a defined order), a copy of every sensor frame's
+// with its tick, hashed in a defined order), the pin trace (every traced
+// signal's change with its tick to a pin_trace sink, pin_trace.h), a copy of every sensor frame's
 // active pixels as driven on its pins (data path integrity), the card's
 // FIFO write levels and the EMIF's busy edges per sync period (budget), the
 // interrupt and OE edges (timeline).
@@ -41,6 +42,8 @@
 #include "model/emif/emif_async_master.h"
 #include "model/sensor/frame_source.h"
 #include "model/sensor/sensor_core.h"
+#include "tb/platform/pin_hash.h"
+#include "tb/platform/pin_trace.h"
 #include "tb/platform/platform_config.h"
 #include "tb/platform/timeline.h"
 
@@ -63,7 +66,10 @@ struct island_config {
     simtime::ticks end = INT64_MAX;          // the island never steps an edge after this tick
     simtime::ticks period = period_24_5_ms;  // for the per-period samples
     bool hash_pins = true;
-    int frame_ring = 8;  // sensor frames whose pixels are kept (per sensor)
+    int frame_ring = 8;                // sensor frames whose pixels are kept (per sensor)
+    bool test_delay_right_oe = false;  // pins arrangement only (platform_config)
+    pin_trace* trace = nullptr;        // every traced signal's change in `trace_window`
+    tick_window trace_window;
 };
 
 // What happened in one sync period [k P, (k+1) P).
@@ -104,7 +110,7 @@ class island : public sc_core::sc_module {
            emif::emif_async_master& engine, timeline& events);
     ~island() override;
 
-    const sensor::sensor_core& sensor(int camera) const { return *m_sensor[camera]; }
+    const sensor::sensor_core& sensor(int camera) const { return *m_core[camera]; }
     int frame_width() const { return m_config.profile.active_cols; }
     int frame_height() const { return m_config.profile.active_rows; }
     // Active pixels of the sensor's frame `truth_index` as driven on its
@@ -120,14 +126,32 @@ class island : public sc_core::sc_module {
     const std::vector<simtime::ticks>& edma_completions() const { return m_edma_done; }
     const std::vector<period_sample>& periods() const { return m_periods; }
     uint32_t fifo_peak_words(int camera) const { return m_fifo_peak_run[camera]; }
-    uint64_t pin_hash() const { return m_pin_hash; }
+    // Complete after finish() (pin_hash.h: changes are folded in canonical order).
+    uint64_t pin_hash() const { return m_pin_hasher.value(); }
+    // Keep the hashed pin changes of ticks [from, to) (set before the run).
+    void log_pin_changes(simtime::ticks from, simtime::ticks to) {
+        m_pin_hasher.log_window(from, to);
+    }
+    const std::vector<pin_change>& logged_pin_changes() const { return m_pin_hasher.logged(); }
     const island_stats& stats() const { return m_stats; }
     // The tick up to which every edge has been stepped.
     simtime::ticks stepped_to() const { return m_last_tick; }
     // Closes the period in progress (end of run).
-    void finish();
+    virtual void finish();
 
-  private:
+  protected:
+    // For another arrangement of the same cores (tb/pins/pins_island_sc.h):
+    // the observers only; no card, no sensor cores, no stepping thread. The
+    // derived module steps the pins, calls attach_sensor for both cameras
+    // and feeds the observers below exactly as advance() does.
+    struct observers_only {};
+    island(sc_core::sc_module_name name, const island_config& config,
+           emif::emif_async_master& engine, timeline& events, observers_only);
+    void attach_sensor(int camera, const sensor::sensor_core& core) { m_core[camera] = &core; }
+    // A sensor's word of one pixel clock as driven at its falling edge `fall`:
+    // pin hash and the frame recorder (data path integrity).
+    void record_sensor_word(int camera, uint16_t bits, simtime::ticks fall);
+
     struct pending_word {
         uint16_t bits = 0;
         simtime::ticks fall = 0;
@@ -154,13 +178,21 @@ class island : public sc_core::sc_module {
     void start_frame(int camera);
     void finalize(int camera, uint64_t truth_index);
     void close_period();
+    // ---- pin trace (pin_trace.h); only called with a sink attached ----
+    void trace_set(simtime::ticks t, trace_pin pin, uint64_t value);
+    void trace_release(simtime::ticks t, trace_pin pin);
+    void trace_open();  // sends the snapshot at trace_window.from
+    // A change at a later tick than the edge being stepped (a clock's fall,
+    // a sensor's word at its falling edge): held until the loop passes it.
+    void trace_defer(simtime::ticks t, trace_pin pin, uint64_t value);
+    void trace_flush(simtime::ticks upto);  // deferred changes at ticks <= upto, in tick order
+    void trace_sensor(int camera, simtime::ticks rise);
+    void trace_emif(simtime::ticks t, const emif::emif_pins& p);
+    void trace_card(simtime::ticks t);
+    void trace_firmware();  // timeline events the firmware added since the last call
+    void trace_firmware_event(const timeline_event& e);  // one event's firmware signals
     void mix_pin(simtime::ticks t, uint32_t group, uint64_t value) {
-        uint64_t h = m_pin_hash;
-        h = (h ^ static_cast<uint64_t>(t)) * 1099511628211ull;
-        h = (h ^ group) * 1099511628211ull;
-        h = (h ^ value) * 1099511628211ull;
-        m_pin_hash = h;
-        ++m_stats.pin_changes;
+        m_pin_hasher.add(t, group, value);
     }
 
     island_config m_config;
@@ -169,6 +201,8 @@ class island : public sc_core::sc_module {
     std::unique_ptr<VerilatedContext> m_context;
     std::unique_ptr<Vcard> m_card;
     std::unique_ptr<sensor::sensor_core> m_sensor[2];
+    const sensor::sensor_core* m_core[2] =
+        {};  // the sensors observed (owned here or by a derived arrangement)
 
     simtime::clock_cursor m_pclk;  // on the next rising half-edge
     simtime::clock_cursor m_eclk;
@@ -180,7 +214,7 @@ class island : public sc_core::sc_module {
     uint8_t m_irq_written = 0;
     emif::emif_pins m_pins_seen;
     uint64_t m_card_out_seen = 0;
-    uint64_t m_pin_hash = 1469598103934665603ull;
+    canonical_pin_hash m_pin_hasher;  // pin_hash.h: canonical order, both arrangements
 
     recorder m_rec[2];
     std::vector<std::vector<uint8_t>> m_ring[2];
@@ -198,6 +232,21 @@ class island : public sc_core::sc_module {
     uint32_t m_fifo_peak_run[2] = {};
     bool m_fifo_overflow_seen[2] = {};
     island_stats m_stats;
+
+    struct deferred_change {
+        simtime::ticks t = 0;
+        trace_pin pin = trace_pin::l_pclk;
+        uint64_t value = 0;
+    };
+    pin_trace* m_trace = nullptr;
+    trace_id m_trace_id[trace_pin_count] = {};
+    uint64_t m_trace_value[trace_pin_count] = {};
+    uint8_t m_trace_state[trace_pin_count] = {};  // 0 unknown, 1 driven, 2 released
+    bool m_trace_open = false;                    // the snapshot at window.from was sent
+    bool m_trace_finished = false;
+    deferred_change m_deferred[32];
+    int m_deferred_count = 0;
+    size_t m_timeline_traced = 0;  // timeline events looked at for the firmware signals
 };
 
 }  // namespace platform

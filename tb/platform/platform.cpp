@@ -4,6 +4,7 @@
 
 #include "dsp/c6416_regs.h"
 #include "dsp/kernel_costs.h"
+#include "tb/pins/pins_island_sc.h"
 
 namespace platform {
 
@@ -39,6 +40,9 @@ island_config make_island_config(const platform_config& config) {
     c.quantum = config.quantum;
     c.period = config.period;
     c.hash_pins = config.hash_pins;
+    c.test_delay_right_oe = config.test_delay_right_oe;
+    c.trace = config.trace;
+    c.trace_window = config.trace_window;
     c.end = config.period * config.frames;
     return c;
 }
@@ -50,6 +54,13 @@ platform_top::platform_top(const platform_config& config)
       m_sequence(config.scenario),
       m_source(m_sequence.scene_renderer()),
       m_engine(engine_config(config)) {
+    if (!config.replay_manifest.empty()) {
+        // Throws std::runtime_error naming the file for a bad manifest or image.
+        m_replay = std::make_unique<scene::replay>(
+            config.replay_manifest, config.profile.active_cols, config.profile.active_rows);
+        m_replay_source = std::make_unique<sensor::replay_source>(*m_replay);
+        m_source.use_replay(m_replay_source.get());
+    }
     // Kernel cycle figures for this DSK's clocks (SDRAM stalls depend on the
     // CPU / EMIF ratio, dsp/kernel_costs.h).
     dsp::c64x::model_params params;
@@ -59,9 +70,19 @@ platform_top::platform_top(const platform_config& config)
 
     m_cpu = std::make_unique<c6416::c6416_sc>("dsk", cpu_config(config));
     m_target = std::make_unique<emif::emif_tlm_target>("emifa", m_engine);
-    m_island = std::make_unique<island>("island", make_island_config(config), m_source, m_engine,
-                                        m_timeline);
+    if (config.arrangement == arrangement_kind::pins) {
+        m_island = pins::make_pins_island("island", make_island_config(config), m_source, m_engine,
+                                          m_timeline);
+    } else {
+        m_island = std::make_unique<island>("island", make_island_config(config), m_source,
+                                            m_engine, m_timeline);
+    }
     m_engine.set_sdram_storage(m_cpu->sdram_storage(), m_cpu->sdram_storage_bytes());
+    // Injected bus and CPU faults (tb/faults, docs/faults.md).
+    for (const emif::ardy_fault& f : config.ardy_faults) m_engine.set_ardy_fault(f);
+    if (config.cpu_slow_num != config.cpu_slow_den)
+        m_cpu->set_cycle_scale(config.cpu_slow_num, config.cpu_slow_den,
+                               emif::time_of_tick(config.cpu_slow_from));
     m_cpu->emifa_cpu.bind(m_target->cpu);
     m_cpu->emifa_edma.bind(m_target->edma);
     m_cpu->set_emifa_register_observer([this](uint32_t address, uint32_t value) {
@@ -95,7 +116,15 @@ void platform_top::firmware(dsp::hal& hal) {
 void platform_top::run() {
     const auto wall0 = std::chrono::steady_clock::now();
     m_end_tick = m_config.period * m_config.frames;
-    sc_core::sc_start(emif::time_of_tick(m_end_tick));
+    if (!m_progress) {
+        sc_core::sc_start(emif::time_of_tick(m_end_tick));
+    } else {
+        for (int done = 1; done <= m_config.frames; ++done) {
+            sc_core::sc_start(emif::time_of_tick(m_config.period * done) -
+                              sc_core::sc_time_stamp());
+            m_progress(done);
+        }
+    }
     m_island->finish();
     m_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
 }

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <systemc>
 #include <vector>
@@ -20,7 +21,9 @@
 #include "model/c6416/c6416_sc.h"
 #include "model/emif/emif_async_master.h"
 #include "model/emif/emif_tlm_target_sc.h"
+#include "model/scene/replay.h"
 #include "model/scene/sequence.h"
+#include "model/sensor/scene_sources.h"
 #include "tb/platform/island_sc.h"
 #include "tb/platform/platform_config.h"
 #include "tb/platform/probe_hal.h"
@@ -55,6 +58,11 @@ class platform_top {
 
     // Simulates config.frames sync periods (sc_start); then the run is over.
     void run();
+    // Called after each simulated sync period with the periods done (the
+    // stereosim command's progress line); set before run(). With a hook the
+    // run is sc_start'ed period by period, which changes no result (the
+    // island syncs at the pause like at any other process's activity).
+    void set_progress(std::function<void(int periods_done)> hook) { m_progress = std::move(hook); }
 
     const platform_config& config() const { return m_config; }
     const scene::sequence& sequence() const { return m_sequence; }
@@ -69,6 +77,10 @@ class platform_top {
     bool firmware_init_failed() const { return m_init_failed; }
     const dsp::control_program& program() const { return m_program; }
     const timeline& events() const { return m_timeline; }
+    // An injected fault's onset on the timeline (tb/faults, after the run).
+    void mark_fault(simtime::ticks tick, uint8_t index, uint32_t type, uint32_t frame) {
+        m_timeline.insert(tick, event_kind::fault, index, type, frame);
+    }
     const std::vector<captured_pair>& captured() const { return m_captured; }
     // The run's end (config.frames periods) and the host time run() took.
     simtime::ticks end_tick() const { return m_end_tick; }
@@ -98,6 +110,9 @@ class platform_top {
     std::vector<captured_pair> m_captured;
     simtime::ticks m_end_tick = 0;
     double m_wall_s = 0.0;
+    std::function<void(int)> m_progress;
+    std::unique_ptr<scene::replay> m_replay;  // config.replay_manifest
+    std::unique_ptr<sensor::replay_source> m_replay_source;
 };
 
 }  // namespace platform

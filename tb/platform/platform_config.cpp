@@ -8,6 +8,9 @@ dsp::controller_config pipeline_config(const platform_config& config) {
     dsp::controller_config c = host::controller_config_for(config.scenario.scene.rig);
     c.cfa = config.profile.cfa;
     if (config.track_search_radius > 0) c.track.search_radius = config.track_search_radius;
+    if (config.detect_threshold >= 0)
+        c.detect.threshold = static_cast<uint8_t>(config.detect_threshold);
+    if (config.stereo_method >= 0) c.method = static_cast<dsp::stereo_method>(config.stereo_method);
     c.frame_memory = config.frame_memory;
     return c;
 }
@@ -39,6 +42,9 @@ dsp::control_program_config program_config(const platform_config& config) {
     c.mode = config.mode;
     c.capture_cycles = config.capture_cycles;
     c.watchdog_ms = config.watchdog_ms;
+    c.card.retry_limit = config.card_retry_limit;
+    c.hard_error_rearms = config.hard_error_rearms;
+    c.weaken = config.weaken;
     return c;
 }
 

@@ -10,10 +10,12 @@
 #include "dsp/control_program.h"
 #include "dsp/controller.h"
 #include "model/c6416/dsk_profile.h"
+#include "model/emif/emif_async_master.h"
 #include "model/scene/sequence.h"
 #include "model/sensor/fault.h"
 #include "model/sensor/profile.h"
 #include "model/time/ticks.h"
+#include "tb/platform/pin_trace.h"
 
 namespace platform {
 
@@ -32,12 +34,28 @@ struct wire_fault {
     simtime::ticks from_tick = 0;
 };
 
+// Which arrangement of the sensors, the card and the EMIF runs
+// (docs/arrangements.md): the cores stepped in one SystemC thread (fast), or
+// SystemC modules wired with sc_signals, the card verilated with --sc (pins,
+// the literal reference). Same pins, same reports.
+enum class arrangement_kind { fast, pins };
+
 struct platform_config {
+    arrangement_kind arrangement = arrangement_kind::fast;
+    // Test only: the pin-level arrangement delays the right sensor's OE by one
+    // pixel clock, a one-cycle difference the identity test must see.
+    bool test_delay_right_oe = false;
+
     // ---- scene -------------------------------------------------------------------------------
     // default_scenario(3): the default rig, background and 5 cm ball; three
     // still frames instead of six so the ball moves early inside the CI cap of
     // 12 frame pairs (docs/ci.md).
     scene::scenario scenario = scene::default_scenario(3);
+
+    // Replay (model/scene/replay.h): the sensors see the manifest's PNG frames
+    // instead of the renderer's; empty: render the scenario. The scenario
+    // still gives the rig and the scene times (frame k at k periods).
+    std::string replay_manifest;
 
     // ---- sensors -----------------------------------------------------------------------------
     sensor::sensor_profile profile = sensor::default_profile();
@@ -56,16 +74,34 @@ struct platform_config {
     dsp::pipeline_mode mode = dsp::pipeline_mode::overlapped;
     // Applied to the controller configuration made for the scenario's rig.
     int track_search_radius = 0;  // 0: the firmware default (dsp::track_params)
+    // Further firmware tuning (the stereosim config keys firmware.*); -1: the
+    // firmware default (dsp::detect_params::threshold, controller_config::method).
+    int detect_threshold = -1;
+    int stereo_method = -1;  // a dsp::stereo_method value
     uint32_t capture_cycles = 600;
-    // Where the firmware's frame-scale buffers live (the cost model's SDRAM
-    // stalls, dsp::controller_config::frame_memory), and whether the SDRAM
-    // traffic of its kernels goes out on EMIFA as L2 line transfers
+    // Where the firmware's gray frames and packed mask live (the cost model's
+    // SDRAM stalls, dsp::controller_config::frame_memory; L2 = the memory
+    // plan of dsp/controller.h, the raw pairs always in SDRAM), and whether
+    // the SDRAM traffic of its kernels goes out on EMIFA as L2 line transfers
     // (docs/c6416.md): bus time that competes with the capture (issue 5).
-    dsp::cost::memory frame_memory = dsp::cost::memory::sdram;
+    dsp::cost::memory frame_memory = dsp::cost::memory::l2;
     bool sdram_traffic_on_bus = true;
     // The firmware's card watchdog (timer 1): every period it reads the card's
     // event counters over the EMIF; 0: none.
     uint32_t watchdog_ms = 500;
+    // The card's RETRY_LIMIT, the firmware's give-up bound and the weakening
+    // switch that proves the fault campaign can fail (dsp::control_program_config,
+    // docs/fault-contract.md).
+    uint32_t card_retry_limit = 8;
+    uint32_t hard_error_rearms = 1;
+    dsp::firmware_weakening weaken = dsp::firmware_weakening::none;
+
+    // ---- faults beyond the sensors' (tb/faults, docs/faults.md) ------------------------------
+    // Extra ARDY wait states on the card's CE spaces from a time on, and a
+    // slower CPU: cycles charged after cpu_slow_from x num / den.
+    std::vector<emif::ardy_fault> ardy_faults;
+    uint32_t cpu_slow_num = 1, cpu_slow_den = 1;
+    simtime::ticks cpu_slow_from = 0;
 
     // ---- run ---------------------------------------------------------------------------------
     // Simulated time: `frames` sync periods (the sensors deliver at most that
@@ -77,6 +113,10 @@ struct platform_config {
     // completion, interrupt pin change or other process's activity.
     simtime::ticks quantum = 800 * simtime::pclk_default_period;
     bool hash_pins = true;  // fold every pin change into the pin hash
+    // Pin trace (tb/platform/pin_trace.h): every traced signal's change in
+    // [trace_window.from, trace_window.to) ticks goes to this sink; none if null.
+    pin_trace* trace = nullptr;
+    tick_window trace_window;
 
     // Sensor seeds.
     uint64_t left_seed() const { return 2 * seed; }

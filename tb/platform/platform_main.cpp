@@ -30,6 +30,7 @@ void usage(std::FILE* out) {
                  "  --frame-memory M    l2 | sdram: where the firmware's frames live (sdram)\n"
                  "  --no-sdram-bus      keep the firmware's SDRAM traffic off the EMIF bus\n"
                  "  --no-noise          sensors without noise\n"
+                 "  --arrangement A     fast | pins (docs/arrangements.md; default fast)\n"
                  "  --no-pin-hash       do not hash pin changes\n"
                  "  --timeline PATH     write the timeline of pins and firmware as CSV\n"
                  "  --brief             no per-pair table\n");
@@ -96,6 +97,15 @@ int sc_main(int argc, char* argv[]) {
             config.sdram_traffic_on_bus = false;
         } else if (arg == "--no-noise") {
             config.sensor_noise = false;
+        } else if (arg == "--arrangement" && has_value) {
+            const std::string a = argv[++i];
+            if (a == "fast" || a == "pins") {
+                config.arrangement = a == "pins" ? platform::arrangement_kind::pins
+                                                 : platform::arrangement_kind::fast;
+            } else {
+                std::fprintf(stderr, "unknown arrangement '%s'\n", a.c_str());
+                return 2;
+            }
         } else if (arg == "--no-pin-hash") {
             config.hash_pins = false;
         } else if (arg == "--timeline" && has_value) {

@@ -21,8 +21,12 @@ class recording_source final : public sensor::frame_source {
         if (times.size() <= request.scene_frame) times.resize(request.scene_frame + 1, -1.0);
         times[request.scene_frame] = m_source.scene_time_s(request);
         ++m_renders;
-        return m_source.frame(request);
+        return m_replay ? m_replay->frame(request) : m_source.frame(request);
     }
+
+    // Frames from `replay` (e.g. sensor::replay_source) instead of the
+    // renderer; the scene times are still noted (frame k at its time slot).
+    void use_replay(sensor::frame_source* replay) { m_replay = replay; }
 
     // Scene time (s) camera c's scene frame k was rendered at; < 0 if never.
     double scene_time_s(int camera, uint64_t scene_frame) const {
@@ -35,6 +39,7 @@ class recording_source final : public sensor::frame_source {
     sensor::renderer_source m_source;
     std::vector<double> m_times[2];
     uint64_t m_renders = 0;
+    sensor::frame_source* m_replay = nullptr;
 };
 
 }  // namespace platform

@@ -26,8 +26,16 @@ const char* event_kind_name(event_kind k) {
             return "cpu_wake";
         case event_kind::result:
             return "result";
+        case event_kind::fault:
+            return "fault";
     }
     return "?";
+}
+
+void timeline::insert(simtime::ticks tick, event_kind kind, uint8_t a, uint32_t b, uint32_t c) {
+    auto at = m_events.end();
+    while (at != m_events.begin() && (at - 1)->tick > tick) --at;
+    m_events.insert(at, {tick, kind, a, b, c});
 }
 
 bool timeline::in_time_order() const {

@@ -4,6 +4,7 @@
 // from its HAL, so the waveforms of the next issue can show them together.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <string>
@@ -24,6 +25,14 @@ enum class event_kind : uint8_t {
     cpu_wake,      // a: interrupt taken (-1 as 255: stop)
     result,  // a: dsp::tracker_state after the pair, b: pair (from pair_processed), c: 1 with a 3D
              // point
+    // An injected fault took effect (tb/faults, docs/faults.md): a: its index
+    // in the run's --fault list, b: faults::fault_type, c: the frame it hit
+    // (sensor truth index, or sync period for bus / CPU faults). Inserted
+    // after the run (the onset of a sensor fault is known from its truth).
+    // timeline.json shows it (instant event "fault <kind>"); for the VCD
+    // ("out": tb/output) a marker needs a signal declared before the run and
+    // written at this tick after it, since the pin trace streams live.
+    fault,
 };
 
 const char* event_kind_name(event_kind k);
@@ -41,6 +50,27 @@ class timeline {
     void add(simtime::ticks tick, event_kind kind, uint8_t a = 0, uint32_t b = 0, uint32_t c = 0) {
         m_events.push_back({tick, kind, a, b, c});
     }
+    // A pin event (oe, irq, sensor_frame) that an arrangement learns after
+    // other processes may have added events at its tick (the pin-level
+    // arrangement, tb/pins): placed where the fast island adds it, which
+    // steps a tick before any other process acts at it. Order: events of
+    // earlier ticks, then the tick's pin events (sensor_frame, then oe, then
+    // irq, each in the order added), then the other processes' events.
+    void add_pin_event(simtime::ticks tick, event_kind kind, uint8_t a = 0, uint32_t b = 0,
+                       uint32_t c = 0) {
+        const auto rank = [](event_kind k) {
+            return k == event_kind::sensor_frame ? 0
+                   : k == event_kind::oe         ? 1
+                   : k == event_kind::irq        ? 2
+                                                 : 3;
+        };
+        size_t at = m_events.size();
+        while (at > 0 &&
+               (m_events[at - 1].tick > tick ||
+                (m_events[at - 1].tick == tick && rank(m_events[at - 1].kind) > rank(kind))))
+            --at;
+        m_events.insert(m_events.begin() + static_cast<std::ptrdiff_t>(at), {tick, kind, a, b, c});
+    }
     const std::vector<timeline_event>& events() const { return m_events; }
     // The last event of a kind (to complete it), nullptr if none.
     timeline_event* last(event_kind kind) {
@@ -48,6 +78,10 @@ class timeline {
             if (m_events[i].kind == kind) return &m_events[i];
         return nullptr;
     }
+    // Inserts an event at its place in time, after the events of its tick:
+    // markers known only after the run (a fault's onset).
+    void insert(simtime::ticks tick, event_kind kind, uint8_t a = 0, uint32_t b = 0,
+                uint32_t c = 0);
     // Events are appended in time order (the island never runs past another
     // process's next activity); this checks it.
     bool in_time_order() const;
