@@ -1,0 +1,55 @@
+// The literal pin-level arrangement (DESIGN.md "How it is clocked";
+// docs/arrangements.md): the same cores as the fast island, each in its
+// SystemC pin wrapper, wired with sc_signals, as a SystemC user would build
+// it first:
+//
+//   clocks (one thread, tick cursors) --mclk--> sensor_sc L, sensor_sc R --pins--> Vcard_sc
+//                                     --eclk--> emif_pins_sc (engine) <--ED/ARDY-- (verilator --sc)
+//
+// Clocks. One thread drives the card's master pixel clock (mclk, which also
+// feeds both sensors) and ECLKOUT from two simtime::clock_cursors on the
+// same tick_clocks as the fast island; half-edge h of a clock is written at
+// sc_time to_fs(tick) (1 tick = 1/18 ns, rounded once to the 1 fs
+// resolution, never by adding rounded periods). Coincident edges of both
+// clocks (every 350 ns at DSK v1) are written in ONE delta, so the card's
+// two clock domains sample in one evaluation, as the fast island's single
+// eval does. Rounding keeps the order: to_fs is monotonic and 1 tick is
+// 55,555 fs, so distinct ticks never share a femtosecond.
+//
+// Edge order is SystemC's evaluate/update rule: at a rising edge every
+// process (card, EMIF engine, sensors sampling OE) reads the signals as they
+// were before it and its writes appear one delta later; sensors drive their
+// pins at their falling edge; the EMIF engine's new pins reach the card a
+// delta after the edge and the card's combinational ED/ARDY follow. That is
+// the order the fast island implements in C++ (tb/platform/island_sc.h).
+//
+// Observers. The clock thread, woken for the next half-edge, first looks at
+// the settled signals of the tick before (every delta of that tick has run):
+// the sensors' words, the EMIF pins and the card's outputs go to the same
+// canonical pin hash (pin_hash.h); OE, interrupt and frame events to the
+// timeline at the place the fast island puts them (timeline::add_pin_event);
+// FIFO levels, bus completions and the frame recorder as the island's
+// observers do. The island base class holds them, so scoreboard, budget and
+// report read either arrangement the same way.
+//
+// Pin trace (pin_trace.h, --vcd): the same signals and values as the fast
+// island, read from the settled signals of each tick by the same observer.
+//
+// Not supported: a pclk_drift fault (a sensor off the master clock has edges
+// the clock thread does not visit); an SC_ERROR says so.
+#pragma once
+
+#include <memory>
+
+#include "tb/platform/island_sc.h"
+
+namespace pins {
+
+// The pin-level arrangement behind platform_config::arrangement == pins.
+std::unique_ptr<platform::island> make_pins_island(const char* name,
+                                                   const platform::island_config& config,
+                                                   sensor::frame_source& source,
+                                                   emif::emif_async_master& engine,
+                                                   platform::timeline& events);
+
+}  // namespace pins

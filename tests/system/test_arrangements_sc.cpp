@@ -1,0 +1,443 @@
+// The fast arrangement is cycle-accurate (DESIGN.md "How it is clocked";
+// docs/arrangements.md): the same run in the literal pin-level arrangement
+// (sensor_sc, verilator --sc card, emif_pins_sc, wired with sc_signals)
+// gives the same pins and the same report.
+//
+// Per run the comparison covers: the canonical pin hash over every sensor,
+// EMIF and card pin change with its tick (tb/platform/pin_hash.h), every such
+// change of a 1 ms window compared one by one (the per-signal-group change
+// lists; the first difference is printed), the VCD of that window as --vcd
+// writes it (tb/output's writer) parsed and compared signal by signal, the
+// timeline (pins and firmware) hash, and the printed report except the
+// run-speed line and the island's sync count (the pin-level arrangement does
+// not sync: it is SystemC). Every case runs until at least 2 3D outputs.
+//
+// One simulation per process: each arrangement runs in a forked child that
+// writes its digest to a pipe; the two children run at once (both cores).
+// A negative control proves the comparison can fail: the pin-level
+// arrangement with the right sensor's OE delayed by one pixel clock
+// (platform_config::test_delay_right_oe) must differ.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "model/c6416/dsk_profile.h"
+#include "tb/output/vcd_writer.h"
+#include "tb/platform/budget.h"
+#include "tb/platform/platform.h"
+#include "tb/platform/report.h"
+#include "tb/platform/scoreboard.h"
+
+namespace {
+
+using platform::arrangement_kind;
+using platform::pin_change;
+
+constexpr simtime::ticks ticks_per_ms = 18000000;
+
+struct digest {
+    uint64_t pin_hash = 0;
+    uint64_t pin_changes = 0;
+    uint64_t timeline_hash = 0;
+    uint64_t points_3d = 0;
+    double wall_s = 0.0;
+    std::string report;              // normalised (see normalise)
+    std::vector<pin_change> window;  // the logged window's changes
+};
+
+// The report without what depends on the host or on how the arrangement
+// syncs: the run-speed line and the island's sync counts.
+std::string normalise(const std::string& report) {
+    std::istringstream in(report);
+    std::string line, out;
+    const std::regex syncs("[0-9]+ syncs");
+    while (std::getline(in, line)) {
+        if (line.rfind("run:", 0) == 0) continue;
+        out += std::regex_replace(line, syncs, "# syncs") + "\n";
+    }
+    return out;
+}
+
+// `vcd`: where the window's VCD goes (tb/output's writer, as --vcd writes it).
+digest simulate(platform::platform_config config, simtime::ticks window_from,
+                simtime::ticks window_to, const std::string& vcd) {
+    const platform::tick_window window{window_from, window_to};
+    output::vcd_writer writer(window);
+    if (!writer.open(vcd)) _exit(4);
+    config.trace = &writer;
+    config.trace_window = window;
+    platform::platform_top top(config);
+    top.cycle_island().log_pin_changes(window_from, window_to);
+    const auto wall0 = std::chrono::steady_clock::now();
+    top.run();
+    digest d;
+    d.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    const platform::scoreboard_report score = platform::score(top);
+    const platform::budget_report budget = platform::check_budget(top, score);
+    std::FILE* f = std::tmpfile();
+    platform::print_report(f, top, score, budget);
+    std::fflush(f);
+    std::rewind(f);
+    char buffer[4096];
+    std::string text;
+    for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, f)) > 0;) text.append(buffer, n);
+    std::fclose(f);
+    d.report = normalise(text);
+    d.pin_hash = top.cycle_island().pin_hash();
+    d.pin_changes = top.cycle_island().stats().pin_changes;
+    d.timeline_hash = top.events().hash();
+    for (const platform::fw_result& r : top.probe().results()) d.points_3d += r.out.has_point;
+    d.window = top.cycle_island().logged_pin_changes();
+    return d;
+}
+
+// ---- a digest through a pipe
+// ---------------------------------------------------------------
+void put(std::string& s, const void* p, size_t n) {
+    s.append(static_cast<const char*>(p), n);
+}
+template <typename T>
+void put(std::string& s, const T& v) {
+    put(s, &v, sizeof v);
+}
+
+std::string serialise(const digest& d) {
+    std::string s;
+    put(s, d.pin_hash);
+    put(s, d.pin_changes);
+    put(s, d.timeline_hash);
+    put(s, d.points_3d);
+    put(s, d.wall_s);
+    put(s, static_cast<uint64_t>(d.report.size()));
+    s += d.report;
+    put(s, static_cast<uint64_t>(d.window.size()));
+    for (const pin_change& c : d.window) put(s, c);
+    return s;
+}
+
+bool deserialise(const std::string& s, digest* d) {
+    size_t at = 0;
+    const auto get = [&](void* p, size_t n) {
+        if (at + n > s.size()) return false;
+        std::memcpy(p, s.data() + at, n);
+        at += n;
+        return true;
+    };
+    uint64_t n = 0;
+    if (!get(&d->pin_hash, 8) || !get(&d->pin_changes, 8) || !get(&d->timeline_hash, 8) ||
+        !get(&d->points_3d, 8) || !get(&d->wall_s, 8) || !get(&n, 8) || at + n > s.size())
+        return false;
+    d->report.assign(s, at, n);
+    at += n;
+    if (!get(&n, 8)) return false;
+    d->window.resize(n);
+    for (pin_change& c : d->window)
+        if (!get(&c, sizeof c)) return false;
+    return at == s.size();
+}
+
+struct child {
+    pid_t pid = -1;
+    int fd = -1;
+};
+
+child start(const platform::platform_config& config, simtime::ticks from, simtime::ticks to,
+            const std::string& vcd) {
+    int fd[2];
+    if (pipe(fd) != 0) return {};
+    std::fflush(stdout);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        close(fd[0]);
+        const std::string s = serialise(simulate(config, from, to, vcd));
+        size_t done = 0;
+        while (done < s.size()) {
+            const ssize_t w = write(fd[1], s.data() + done, s.size() - done);
+            if (w <= 0) _exit(3);
+            done += static_cast<size_t>(w);
+        }
+        close(fd[1]);
+        _exit(0);
+    }
+    close(fd[1]);
+    return {pid, fd[0]};
+}
+
+bool finish(child c, digest* d) {
+    if (c.pid < 0) return false;
+    std::string s;
+    char buffer[65536];
+    for (ssize_t n; (n = read(c.fd, buffer, sizeof buffer)) > 0;)
+        s.append(buffer, static_cast<size_t>(n));
+    close(c.fd);
+    int status = 0;
+    if (waitpid(c.pid, &status, 0) != c.pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        return false;
+    return deserialise(s, d);
+}
+
+// ---- the VCD of a window, signal by signal ----------------------------------------------
+// Full signal name (scopes.name) -> its changes (time fs, value as written).
+// Parsed rather than byte-compared: the writer writes a time step's changes
+// in the order the source reported them, and the fast island reports a
+// tick's changes in stepping order, the pin-level one in signal order.
+struct vcd_changes {
+    std::map<std::string, std::vector<std::pair<int64_t, std::string>>> signals;
+    size_t changes = 0;
+    bool ok = false;
+};
+
+vcd_changes parse_vcd(const std::string& path) {
+    vcd_changes r;
+    std::ifstream in(path);
+    if (!in) return r;
+    std::vector<std::string> scope;
+    std::map<std::string, std::vector<std::string>> names_of_code;
+    std::map<std::string, std::vector<std::pair<int64_t, std::string>>> by_code;
+    std::string token;
+    bool header = true;
+    int64_t time = -1;
+    while (in >> token) {
+        if (header) {
+            if (token == "$scope") {
+                std::string kind, name;
+                in >> kind >> name;
+                scope.push_back(name);
+            } else if (token == "$upscope") {
+                if (!scope.empty()) scope.pop_back();
+            } else if (token == "$var") {
+                std::string kind, width, code, name, rest;
+                in >> kind >> width >> code >> name;
+                while (in >> rest && rest != "$end") name += rest;  // NAME [msb:0]
+                std::string full;
+                for (const std::string& s : scope) full += s + ".";
+                names_of_code[code].push_back(full + name);
+            } else if (token == "$enddefinitions") {
+                header = false;
+            }
+            continue;
+        }
+        if (token[0] == '#') {
+            time = std::stoll(token.substr(1));
+        } else if (token[0] == 'b' || token[0] == 'B' || token[0] == 'r') {
+            std::string code;
+            in >> code;
+            by_code[code].emplace_back(time, token.substr(1));
+            ++r.changes;
+        } else if (token[0] == '0' || token[0] == '1' || token[0] == 'x' || token[0] == 'z') {
+            by_code[token.substr(1)].emplace_back(time, token.substr(0, 1));
+            ++r.changes;
+        }  // $dumpvars, $end, $comment ...: structure only
+    }
+    for (const auto& [code, names] : names_of_code)
+        for (const std::string& name : names) r.signals[name] = by_code[code];
+    r.ok = !header && !r.signals.empty();
+    return r;
+}
+
+// Prints the first signal whose changes differ; true if the two are equal.
+bool same_vcd(const vcd_changes& a, const vcd_changes& b) {
+    if (a.signals.size() != b.signals.size()) {
+        std::printf("VCD: %zu signals against %zu\n", a.signals.size(), b.signals.size());
+        return false;
+    }
+    for (const auto& [name, changes] : a.signals) {
+        const auto other = b.signals.find(name);
+        if (other == b.signals.end()) {
+            std::printf("VCD: signal %s only in the fast arrangement's\n", name.c_str());
+            return false;
+        }
+        if (changes == other->second) continue;
+        const auto& c = other->second;
+        size_t i = 0;
+        while (i < changes.size() && i < c.size() && changes[i] == c[i]) ++i;
+        std::printf(
+            "VCD: signal %s differs at change %zu: fast %s, pins %s\n", name.c_str(), i,
+            i < changes.size()
+                ? (std::to_string(changes[i].first) + " fs " + changes[i].second).c_str()
+                : "none",
+            i < c.size() ? (std::to_string(c[i].first) + " fs " + c[i].second).c_str() : "none");
+        return false;
+    }
+    return true;
+}
+
+struct pair_of_runs {
+    digest fast, pins;
+    vcd_changes fast_vcd, pins_vcd;
+    bool vcd_bytes_equal = false;
+};
+
+bool same_bytes(const std::string& a, const std::string& b) {
+    std::ifstream fa(a, std::ios::binary), fb(b, std::ios::binary);
+    return fa && fb &&
+           std::string(std::istreambuf_iterator<char>(fa), {}) ==
+               std::string(std::istreambuf_iterator<char>(fb), {});
+}
+
+// Runs `config` in both arrangements at once (the pins one with `pins_changes`
+// applied).
+pair_of_runs run_both(platform::platform_config config, simtime::ticks from, simtime::ticks to,
+                      bool delay_right_oe = false) {
+    char dir_template[] = "/tmp/arrangements_vcd_XXXXXX";
+    const std::string dir = mkdtemp(dir_template) ? dir_template : "/tmp";
+    const std::string fast_vcd = dir + "/fast.vcd", pins_vcd = dir + "/pins.vcd";
+    config.arrangement = arrangement_kind::fast;
+    const child fast = start(config, from, to, fast_vcd);
+    config.arrangement = arrangement_kind::pins;
+    config.test_delay_right_oe = delay_right_oe;
+    const child pins = start(config, from, to, pins_vcd);
+    pair_of_runs r;
+    EXPECT_TRUE(finish(fast, &r.fast)) << "the fast arrangement's child failed";
+    EXPECT_TRUE(finish(pins, &r.pins)) << "the pin-level arrangement's child failed";
+    r.fast_vcd = parse_vcd(fast_vcd);
+    r.pins_vcd = parse_vcd(pins_vcd);
+    r.vcd_bytes_equal = same_bytes(fast_vcd, pins_vcd);
+    std::filesystem::remove_all(dir);
+    return r;
+}
+
+// The first change where the two windows differ, printed.
+size_t first_difference(const std::vector<pin_change>& a, const std::vector<pin_change>& b) {
+    const size_t n = std::min(a.size(), b.size());
+    for (size_t i = 0; i < n; ++i) {
+        if (!(a[i] == b[i])) {
+            std::printf(
+                "first window difference at change %zu: fast tick %lld group "
+                "%u value %llx"
+                ", pins tick %lld group %u value %llx\n",
+                i, static_cast<long long>(a[i].tick), a[i].group,
+                static_cast<unsigned long long>(a[i].value), static_cast<long long>(b[i].tick),
+                b[i].group, static_cast<unsigned long long>(b[i].value));
+            return i;
+        }
+    }
+    return a.size() == b.size() ? SIZE_MAX : n;
+}
+
+void print(const char* what, const pair_of_runs& r) {
+    std::printf(
+        "%s: pin hash fast %016llx pins %016llx over %llu / %llu "
+        "changes; window %zu / %zu "
+        "changes; timeline %016llx / %016llx; 3D points %llu / %llu; "
+        "wall %.2f s / %.2f s "
+        "(pins / fast %.2f)\n",
+        what, static_cast<unsigned long long>(r.fast.pin_hash),
+        static_cast<unsigned long long>(r.pins.pin_hash),
+        static_cast<unsigned long long>(r.fast.pin_changes),
+        static_cast<unsigned long long>(r.pins.pin_changes), r.fast.window.size(),
+        r.pins.window.size(), static_cast<unsigned long long>(r.fast.timeline_hash),
+        static_cast<unsigned long long>(r.pins.timeline_hash),
+        static_cast<unsigned long long>(r.fast.points_3d),
+        static_cast<unsigned long long>(r.pins.points_3d), r.fast.wall_s, r.pins.wall_s,
+        r.pins.wall_s / std::max(1e-9, r.fast.wall_s));
+    std::printf("%s: VCD of the window %zu / %zu signals, %zu / %zu changes, bytes %s\n", what,
+                r.fast_vcd.signals.size(), r.pins_vcd.signals.size(), r.fast_vcd.changes,
+                r.pins_vcd.changes,
+                r.vcd_bytes_equal ? "identical" : "differ (order within a time step)");
+    std::fflush(stdout);
+}
+
+void expect_identical(const pair_of_runs& r) {
+    EXPECT_EQ(r.fast.pin_hash, r.pins.pin_hash);
+    EXPECT_EQ(r.fast.pin_changes, r.pins.pin_changes);
+    EXPECT_GT(r.fast.window.size(), 1000u) << "the window must see pin activity";
+    EXPECT_EQ(first_difference(r.fast.window, r.pins.window), SIZE_MAX);
+    EXPECT_TRUE(r.fast_vcd.ok && r.pins_vcd.ok) << "a VCD is missing or empty";
+    EXPECT_GT(r.fast_vcd.changes, 10000u) << "the VCD window must see activity";
+    EXPECT_TRUE(same_vcd(r.fast_vcd, r.pins_vcd)) << "the VCDs differ signal by signal";
+    EXPECT_EQ(r.fast.timeline_hash, r.pins.timeline_hash);
+    EXPECT_EQ(r.fast.report, r.pins.report);
+    if (r.fast.report != r.pins.report)
+        std::printf("---- fast report\n%s---- pins report\n%s", r.fast.report.c_str(),
+                    r.pins.report.c_str());
+}
+
+// Under AddressSanitizer (the Debug + ASan pass) every case runs 3 periods:
+// that pass looks for memory errors in both arrangements and the VCD path;
+// the 3D outputs are asserted by the full-length RelWithDebInfo runs.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool sanitized = true;
+#else
+constexpr bool sanitized = false;
+#endif
+int periods(int full) {
+    return sanitized ? 3 : full;
+}
+void expect_3d_outputs(const pair_of_runs& r) {
+    if (!sanitized) EXPECT_GE(r.fast.points_3d, 2u) << "the run must reach 3D outputs";
+}
+
+// The window: 1 ms around the first in-step pair's FRAME_READY (49.2 ms):
+// card registers, EDMA bursts, sensor lines of the next frame.
+constexpr simtime::ticks window_from = 49 * ticks_per_ms;
+constexpr simtime::ticks window_to = 50 * ticks_per_ms;
+
+// The platform's defaults (the firmware's SDRAM traffic on EMIFA beside the
+// capture, the memory plan of docs/firmware.md), `frames` periods.
+platform::platform_config functional_run(int frames) {
+    platform::platform_config config;
+    config.frames = periods(frames);
+    return config;
+}
+
+// The default scenario: within budget; the ball is detected in scene frame
+// 4 and tracked from then on.
+TEST(Arrangements, DefaultScenarioGivesIdenticalPinsAndReport) {
+    platform::platform_config config = functional_run(10);
+    const pair_of_runs r = run_both(config, window_from, window_to);
+    print("default", r);
+    expect_3d_outputs(r);
+    expect_identical(r);
+    RecordProperty("pin_hash", std::to_string(r.fast.pin_hash));
+    RecordProperty("wall_ratio_pins_over_fast", std::to_string(r.pins.wall_s / r.fast.wall_s));
+}
+
+// A 1-line start skew on the right sensor from its second frame on: the
+// card sees the dark rows out of place, reports SYNC_ERROR and restarts OE.
+TEST(Arrangements, StartSkewFaultGivesIdenticalPinsAndReport) {
+    platform::platform_config config = functional_run(10);
+    config.right_faults.push_back(sensor::fault::start_skew(sensor::fault_trigger::at_frame(1), 1,
+                                                            0, config.profile.line_pclks));
+    const pair_of_runs r = run_both(config, window_from, window_to);
+    print("start_skew", r);
+    expect_3d_outputs(r);
+    expect_identical(r);
+}
+
+// DSK v3: 1 GHz CPU, 125 MHz ECLK (144 ticks against the pixel clock's
+// 1050: edges meet every 504 ns, a different set of phases).
+TEST(Arrangements, DskV3GivesIdenticalPinsAndReport) {
+    platform::platform_config config = functional_run(9);
+    config.dsk = c6416::dsk_v3();
+    const pair_of_runs r = run_both(config, window_from, window_to);
+    print("dsk_v3", r);
+    expect_3d_outputs(r);
+    expect_identical(r);
+}
+
+// The comparison can fail: the right sensor sampling OE one pixel clock late
+// in the pin-level arrangement shifts its whole stream by one clock.
+TEST(Arrangements, OneCycleDifferenceIsSeen) {
+    platform::platform_config config = functional_run(3);
+    config.frames = 3;
+    const pair_of_runs r = run_both(config, window_from, window_to, true);
+    print("one-cycle difference", r);
+    EXPECT_NE(r.fast.pin_hash, r.pins.pin_hash);
+    const size_t first = first_difference(r.fast.window, r.pins.window);
+    EXPECT_NE(first, SIZE_MAX);
+    EXPECT_FALSE(same_vcd(r.fast_vcd, r.pins_vcd)) << "the VCD comparison must see it too";
+}
+
+}  // namespace
