@@ -9,7 +9,8 @@ BUILD_BENCH ?= build-bench
 JOBS ?= $(shell nproc)
 CMAKE_GEN := $(shell command -v ninja >/dev/null 2>&1 && echo "-G Ninja")
 
-.PHONY: all deps configure build test demo test-sanitize bench lint format clean
+.PHONY: all deps configure build test demo test-sanitize bench lint format clean \
+	campaign-smoke campaign-full
 
 all: build
 
@@ -27,14 +28,24 @@ build: configure
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
 
-# The firmware alone on the host harness, then the whole co-simulation
-# (sensors -> card RTL -> EMIF -> C6416 running the firmware), 12 periods.
+# The default scenario through the whole co-simulation (sensors -> card RTL ->
+# EMIF -> C6416 running the firmware), 12 periods, into out/demo/ (docs/cli.md);
+# prints the summary. Exit 1 is the budget verdict "over budget" (a result,
+# shown in the summary); 2 and up are errors.
 demo: build
-	$(BUILD)/stereosim_host_demo --out out/demo
-	@# Exit 1 is the budget verdict "over budget" (a result, shown above); 2 and up are errors.
-	@SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 $(BUILD)/stereosim_platform --frames 12; rc=$$?; \
-		if [ $$rc -eq 1 ]; then echo "demo: the default configuration is over budget (docs/budget.md)"; \
+	@rc=0; $(BUILD)/stereosim run --scenario default --out out/demo --summary || rc=$$?; \
+		if [ $$rc -eq 1 ]; then echo "demo: the default scenario is over budget (docs/budget.md): a result, not a failure"; \
 		elif [ $$rc -ne 0 ]; then exit $$rc; fi
+
+# The fault campaigns (docs/fault-contract.md): every fault kind over its
+# parameters and seeds, each run checked against the contract; non-zero exit
+# on any violation. smoke runs in CI; full is run before a release.
+CAMPAIGN_JOBS ?= $(JOBS)
+campaign-smoke: build
+	$(BUILD)/stereosim faults --campaign smoke --jobs $(CAMPAIGN_JOBS) --out out/campaign-smoke
+
+campaign-full: build
+	$(BUILD)/stereosim faults --campaign full --jobs $(CAMPAIGN_JOBS) --out out/campaign-full $(CAMPAIGN_ARGS)
 
 # The CI's sanitizer pass: every layer but the system runs, plus one short
 # system scenario (the whole suite is run under the sanitizers before an

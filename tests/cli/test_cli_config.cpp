@@ -1,0 +1,176 @@
+// The config key table (tb/cli/config_keys.h) without a simulation: docs/config.md
+// lists exactly its keys, values are type- and range-checked with one-line
+// messages, a misspelled key gets the nearest name, a scenario's settings
+// apply before other keys, and the default setup renders exactly the
+// platform's default scene (scene::default_scenario(3)).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "model/scene/sequence.h"
+#include "tb/cli/config_keys.h"
+#include "tb/cli/scenarios.h"
+
+namespace {
+
+using nlohmann::json;
+
+std::set<std::string> doc_keys() {
+    std::ifstream in(std::string(STEREOSIM_SOURCE_DIR) + "/docs/config.md");
+    EXPECT_TRUE(in) << "docs/config.md";
+    std::set<std::string> keys;
+    const std::regex row(R"(^\| `([a-z_]+\.[a-z_0-9]+)` \|)");
+    for (std::string line; std::getline(in, line);) {
+        std::smatch m;
+        if (std::regex_search(line, m, row)) keys.insert(m[1]);
+    }
+    return keys;
+}
+
+TEST(cli_config, docs_list_exactly_the_table_keys) {
+    std::set<std::string> table;
+    for (const cli::config_key& k : cli::config_keys()) {
+        EXPECT_TRUE(table.insert(k.name).second) << "duplicate key " << k.name;
+        EXPECT_FALSE(k.doc.empty()) << k.name;
+    }
+    const std::set<std::string> docs = doc_keys();
+    for (const std::string& k : table)
+        EXPECT_TRUE(docs.count(k)) << k << " missing in docs/config.md";
+    for (const std::string& k : docs)
+        EXPECT_TRUE(table.count(k)) << k << " in docs/config.md is no key";
+    std::printf("config keys: %zu in the table, %zu in docs/config.md\n", table.size(),
+                docs.size());
+}
+
+TEST(cli_config, misspelled_key_names_the_nearest) {
+    EXPECT_EQ(cli::unknown_key_message("rig.baselin_mm"),
+              "unknown config key 'rig.baselin_mm' (did you mean 'rig.baseline_mm'?)");
+    EXPECT_EQ(cli::unknown_key_message("run.frame"),
+              "unknown config key 'run.frame' (did you mean 'run.frames'?)");
+    // Nothing near: no guess.
+    EXPECT_EQ(cli::unknown_key_message("colour.of.the.sky").find("did you mean"),
+              std::string::npos);
+}
+
+TEST(cli_config, values_are_type_and_range_checked) {
+    json v;
+    std::string error;
+    const cli::config_key* frames = cli::find_key("run.frames");
+    ASSERT_NE(frames, nullptr);
+    EXPECT_TRUE(cli::parse_value(*frames, "8", &v, &error));
+    EXPECT_EQ(v, json(8));
+    EXPECT_FALSE(cli::parse_value(*frames, "-3", &v, &error));
+    EXPECT_EQ(error, "config key 'run.frames': -3 is out of range 1..100000");
+    EXPECT_FALSE(cli::parse_value(*frames, "0", &v, &error));
+    EXPECT_FALSE(cli::parse_value(*frames, "8x", &v, &error));
+    EXPECT_EQ(error, "config key 'run.frames': expected an integer, got '8x'");
+    EXPECT_FALSE(cli::check_value(*frames, json(2.5), &v, &error));
+
+    const cli::config_key* cpu = cli::find_key("dsk.cpu_mhz");
+    EXPECT_FALSE(cli::parse_value(*cpu, "0", &v, &error));
+    EXPECT_EQ(error, "config key 'dsk.cpu_mhz': 0 is out of range 50..2000");
+    EXPECT_TRUE(cli::parse_value(*cpu, "850.5", &v, &error));
+
+    const cli::config_key* mode = cli::find_key("firmware.mode");
+    EXPECT_FALSE(cli::parse_value(*mode, "parallel", &v, &error));
+    EXPECT_EQ(error,
+              "config key 'firmware.mode': \"parallel\" is not one of sequential|overlapped");
+    const cli::config_key* noise = cli::find_key("sensor.noise");
+    EXPECT_TRUE(cli::parse_value(*noise, "off", &v, &error));
+    EXPECT_EQ(v, json(false));
+    EXPECT_FALSE(cli::check_value(*noise, json("yes"), &v, &error));
+}
+
+TEST(cli_config, search_window_must_fit_the_image) {
+    cli::run_setup setup;
+    std::string error;
+    setup.search_radius = 239;  // 479 x 479 fits 640 x 480
+    EXPECT_TRUE(cli::validate_setup(setup, &error)) << error;
+    setup.search_radius = 240;  // 481 rows > 480
+    EXPECT_FALSE(cli::validate_setup(setup, &error));
+    EXPECT_EQ(error,
+              "config key 'firmware.search_radius': the search window 481 x 481 px is larger than "
+              "the image (640 x 480)");
+}
+
+TEST(cli_config, scenario_settings_apply_first_then_the_user_keys) {
+    cli::run_setup setup;
+    std::string error;
+    // slow-cpu sets dsk.cpu_mhz 300 and firmware.search_radius 96; the user's
+    // radius wins whatever the order it was given in.
+    std::vector<cli::key_assignment> a = {{"firmware.search_radius", json(40)},
+                                          {"scenario.name", json("slow-cpu")}};
+    ASSERT_TRUE(cli::apply_assignments(a, &setup, &error)) << error;
+    EXPECT_EQ(setup.search_radius, 40);
+    EXPECT_DOUBLE_EQ(setup.effective_cpu_mhz(), 300.0);
+    a = {{"scenario.name", json("nosuch")}};
+    EXPECT_FALSE(cli::apply_assignments(a, &setup, &error));
+    EXPECT_EQ(error, "unknown scenario 'nosuch' (stereosim scenarios lists them)");
+    // Every built-in scenario's settings are valid keys and values.
+    for (const cli::builtin_scenario& s : cli::builtin_scenarios()) {
+        a = {{"scenario.name", json(s.name)}};
+        EXPECT_TRUE(cli::apply_assignments(a, &setup, &error)) << s.name << ": " << error;
+        EXPECT_TRUE(cli::validate_setup(setup, &error)) << s.name << ": " << error;
+    }
+}
+
+TEST(cli_config, config_json_round_trips_through_the_file_reader) {
+    cli::run_setup setup;
+    std::string error;
+    std::vector<cli::key_assignment> a = {{"scenario.name", json("near")},
+                                          {"dsk.version", json(2)},
+                                          {"firmware.stereo_method", json("both")},
+                                          {"run.frames", json(7)}};
+    ASSERT_TRUE(cli::apply_assignments(a, &setup, &error));
+    const std::string path = testing::TempDir() + "cli_config_round_trip.json";
+    std::ofstream(path) << cli::config_json(setup).dump(2);
+    std::vector<cli::key_assignment> read;
+    ASSERT_TRUE(cli::read_config_file(path, &read, &error)) << error;
+    EXPECT_EQ(read.size(), cli::config_keys().size());
+    cli::run_setup again;
+    ASSERT_TRUE(cli::apply_assignments(read, &again, &error)) << error;
+    EXPECT_EQ(cli::config_json(again), cli::config_json(setup));
+    EXPECT_EQ(again.scenario.path, "circle");
+    EXPECT_DOUBLE_EQ(again.effective_cpu_mhz(), 720.0);  // v2's CPU clock
+}
+
+// The default setup makes the platform's default scene: same ball path at
+// every time (ground truth through the scene's closed form), same rig.
+TEST(cli_config, default_setup_is_the_platform_default_scene) {
+    const platform::platform_config config = cli::platform_config_of(cli::run_setup{});
+    const scene::scenario reference = scene::default_scenario(3);
+    ASSERT_EQ(config.scenario.scene.balls.size(), 1u);
+    const scene::stereo_rig& rig = config.scenario.scene.rig;
+    EXPECT_EQ(rig.focal_px(), reference.scene.rig.focal_px());
+    EXPECT_EQ(rig.baseline_m, reference.scene.rig.baseline_m);
+    int compared = 0;
+    for (int n = 0; n < 40; ++n) {
+        const double t = n * reference.frame_period_s;
+        const scene::ball_truth a = scene::ball_truth_at(rig, config.scenario.scene.balls[0], t);
+        const scene::ball_truth b =
+            scene::ball_truth_at(reference.scene.rig, reference.scene.balls[0], t);
+        EXPECT_EQ(a.centre_m.x, b.centre_m.x) << n;
+        EXPECT_EQ(a.centre_m.y, b.centre_m.y) << n;
+        EXPECT_EQ(a.centre_m.z, b.centre_m.z) << n;
+        ++compared;
+    }
+    // Negative control: speed 2 moves the ball differently after the start.
+    cli::run_setup fast;
+    fast.scenario.speed = 2.0;
+    const platform::platform_config f = cli::platform_config_of(fast);
+    const double t = 10 * reference.frame_period_s;
+    EXPECT_NE(scene::ball_truth_at(rig, f.scenario.scene.balls[0], t).centre_m.z,
+              scene::ball_truth_at(rig, reference.scene.balls[0], t).centre_m.z);
+    EXPECT_EQ(config.frames, 12);
+    EXPECT_EQ(config.seed, 3u);
+    EXPECT_EQ(config.quantum, platform::platform_config{}.quantum);
+    std::printf("default setup: %d frame times compared with scene::default_scenario(3)\n",
+                compared);
+}
+
+}  // namespace
