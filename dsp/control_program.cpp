@@ -40,6 +40,10 @@ const char* pipeline_mode_name(pipeline_mode m) {
     return m == pipeline_mode::sequential ? "sequential" : "overlapped";
 }
 
+const char* firmware_weakening_name(firmware_weakening w) {
+    return w == firmware_weakening::ignore_verdict ? "ignore-verdict" : "none";
+}
+
 uint32_t control_program::buffer_stride() const {
     const uint32_t bytes = header_size() + 2 * frame_bytes();
     return (bytes + 4095u) & ~4095u;
@@ -129,7 +133,10 @@ void control_program::configure_card() {
     card_write(card_regs::irq_status, card_regs::irq_status_frame_ready_mask |
                                           card_regs::irq_status_sync_error_mask |
                                           card_regs::irq_status_overflow_mask);
-    card_write(card_regs::dark_threshold, c.dark_threshold);
+    // Weakened (docs/fault-contract.md): only a dark pixel reading 255 still
+    // raises L_DARK / R_DARK.
+    const bool weak = m_config.weaken == firmware_weakening::ignore_verdict;
+    card_write(card_regs::dark_threshold, weak ? 0xFFu : c.dark_threshold);
     card_write(card_regs::h_start, c.h_start);
     card_write(card_regs::dark_cols_left, c.dark_cols_left);
     card_write(card_regs::border_cols_left, c.border_cols_left);
@@ -296,7 +303,7 @@ void control_program::lower_oe() {
 // ---- frame loop --------------------------------------------------------------------------
 bool control_program::finished() const {
     return (m_config.max_pairs != 0 && m_stats.pairs_processed >= m_config.max_pairs) ||
-           m_hal->stop_requested();
+           m_stats.gave_up || m_hal->stop_requested();
 }
 
 void control_program::run() {
@@ -310,6 +317,7 @@ void control_program::run() {
     for (buffer_state& s : m_state) s = buffer_state::free;
     m_captures = 0;
     m_have_pair = false;
+    m_failures = 0;
     setup_edma();
     raise_oe();
 
@@ -398,6 +406,7 @@ void control_program::handle_sync_error() {
     const uint32_t position = card_read(card_regs::mismatch_pos);
     const uint32_t status = card_read(card_regs::status);
     card_write(card_regs::irq_status, card_regs::irq_status_sync_error_mask);
+    if (m_config.weaken == firmware_weakening::ignore_verdict) return;
     ++m_stats.sync_errors;
     report(firmware_event::sync_error, 0, verdict, position);
     if ((status & card_regs::status_hard_error_mask) != 0) {
@@ -435,8 +444,19 @@ void control_program::handle_watchdog() {
 }
 
 // ENABLE 0 -> 1: the card drops OE, returns to IDLE, and starts again (a new
-// dark-pixel check). Waits for IDLE so the card surely sees the 0.
+// dark-pixel check). Waits for IDLE so the card surely sees the 0. A card
+// that keeps failing (hard errors or silence with no good pair in between)
+// is given up after config.hard_error_rearms re-arms: no hang, a reported
+// hard error (docs/fault-contract.md).
 void control_program::rearm(rearm_cause cause) {
+    if (cause == rearm_cause::hard_error || cause == rearm_cause::watchdog) {
+        if (++m_failures > m_config.hard_error_rearms) {
+            lower_oe();
+            m_stats.gave_up = true;
+            report(firmware_event::hard_error, 0, static_cast<uint32_t>(cause), m_failures);
+            return;
+        }
+    }
     lower_oe();
     for (uint32_t i = 0; i < m_config.rearm_idle_polls; ++i) {
         const uint32_t state = (card_read(card_regs::status) & card_regs::status_state_mask) >>
@@ -478,10 +498,12 @@ void control_program::process_buffer(int buffer) {
     m_stats.last_pair = pair;
     report(firmware_event::pair_captured, pair, verdict, static_cast<uint32_t>(buffer));
 
-    if ((verdict & verdict_causes_mask) != 0) {
+    const bool weak = m_config.weaken == firmware_weakening::ignore_verdict;
+    if (!weak && (verdict & verdict_causes_mask) != 0) {
         ++m_stats.pairs_rejected;
         report(firmware_event::pair_rejected, pair, verdict);
     } else {
+        m_failures = 0;  // a good pair: the card works
         if (m_awaiting_in_step) {
             m_awaiting_in_step = false;
             report(firmware_event::in_step, pair, verdict);

@@ -82,6 +82,16 @@ const char* pipeline_mode_name(pipeline_mode m);
 // Why the firmware re-armed the card (event card_rearmed, value).
 enum class rearm_cause : uint8_t { hard_error = 1, sync_error = 2, overflow = 3, watchdog = 4 };
 
+// A deliberately WEAKENED firmware, only to prove that the fault campaign can
+// fail (docs/fault-contract.md). ignore_verdict: the firmware uses every
+// captured pair whatever the VERDICT copied with it, writes DARK_THRESHOLD
+// 255 (the card's dark-pixel cause can no longer fire) and ignores the card's
+// SYNC_ERROR interrupt (no report, no re-arm, never gives up). The card still
+// discards pairs whose window / VSYNC check fails: that is RTL, out of the
+// firmware's reach.
+enum class firmware_weakening : uint8_t { none = 0, ignore_verdict = 1 };
+const char* firmware_weakening_name(firmware_weakening w);
+
 // The card registers the firmware writes at boot (docs/card-registers.md).
 // Defaults: the card's reset values, i.e. the default sensor profile
 // (DESIGN.md): 640 x 480 active, 16 dark columns, 8 dark rows, 800 x 525.
@@ -120,6 +130,14 @@ struct control_program_config {
     uint32_t watchdog_ms = 500;      // no card event for a whole period: re-arm; 0: no watchdog
     uint64_t capture_cycles = 600;   // CPU cycles per pair charged to stage capture (ASSUMED)
     uint32_t rearm_idle_polls = 64;  // STATUS reads waiting for the card to reach IDLE
+    // No hang (docs/fault-contract.md): the firmware re-arms the card after
+    // this many consecutive failures (the card's HARD_ERROR or a watchdog
+    // re-arm) with no good pair in between; the next one ends in a reported
+    // hard_error: ENABLE 0 (OE low), capture and watchdog stopped, run()
+    // returns. Bound: (hard_error_rearms + 1) x (RETRY_LIMIT + 1) failed
+    // checks after the fault, or as many watchdog periods.
+    uint32_t hard_error_rearms = 1;
+    firmware_weakening weaken = firmware_weakening::none;
 };
 
 struct control_stats {
@@ -133,6 +151,7 @@ struct control_stats {
     uint32_t watchdogs = 0;
     uint32_t oe_raises = 0;
     uint32_t last_pair = 0;  // card pair number of the last captured pair
+    bool gave_up = false;    // hard_error reported
 };
 
 // The EDMA resources the program uses (docs/firmware.md), public for tests.
@@ -228,6 +247,7 @@ class control_program {
     bool m_awaiting_in_step = false;
     bool m_have_pair = false;
     uint32_t m_watchdog_progress = 0;
+    uint32_t m_failures = 0;  // consecutive hard errors / watchdog re-arms, no good pair between
     control_stats m_stats;
 };
 

@@ -43,6 +43,8 @@ enum class firmware_event : uint8_t {
     pair_dropped,     // overrun: pairs the card made ready while no buffer was free; value: count
     pair_processed,   // the pipeline ran on it; value: buffer, detail: 1 if it gave a 3D point
     stopped,          // the frame loop ended; value: pairs processed
+    hard_error,       // the firmware gave up on the card (docs/fault-contract.md): OE low, no
+                      // capture; value: the last rearm_cause, detail: consecutive failures
 };
 
 constexpr const char* firmware_event_name(firmware_event e) {
@@ -79,6 +81,8 @@ constexpr const char* firmware_event_name(firmware_event e) {
             return "pair_processed";
         case firmware_event::stopped:
             return "stopped";
+        case firmware_event::hard_error:
+            return "hard_error";
     }
     return "?";
 }

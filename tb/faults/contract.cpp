@@ -1,0 +1,300 @@
+#include "tb/faults/contract.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "dsp/card_regs.h"
+
+namespace faults {
+
+const char* outcome_name(outcome o) {
+    switch (o) {
+        case outcome::none:
+            return "none";
+        case outcome::harmless:
+            return "harmless";
+        case outcome::resync:
+            return "resync";
+        case outcome::hard_error:
+            return "hard_error";
+        case outcome::stale_pair:
+            return "stale_pair";
+        case outcome::overflow:
+            return "overflow";
+        case outcome::overrun:
+            return "overrun";
+        case outcome::pending:
+            return "pending";
+        case outcome::missed:
+            return "missed";
+        case outcome::no_recovery:
+            return "no_recovery";
+    }
+    return "?";
+}
+
+contract_params params_for(const platform::platform_config& config) {
+    contract_params p;
+    p.retry_limit = config.card_retry_limit;
+    p.hard_error_rearms = config.hard_error_rearms;
+    p.dark_threshold = dsp::card_regs::dark_threshold_reset;
+    p.black_level = config.profile.black_level;
+    p.line_pclks = config.profile.line_pclks;
+    p.frame_lines = config.profile.frame_lines;
+    // First to last active pixel: (active rows - 1) lines + a line's active columns.
+    p.active_span_pclks =
+        (config.profile.active_rows - 1) * config.profile.line_pclks + config.profile.active_cols;
+    p.words_per_pair = 2.0 * config.profile.active_cols * config.profile.active_rows /
+                       dsp::card_regs::pixels_per_word;
+    // The card's CE3 read with the DSK's CECTL: RS + RST + RH = 2 + 10 + 2 ECLK
+    // (docs/card.md "Access lengths"; v2/v3 0x23228C22: 16 ECLK).
+    p.eclk_per_word = config.dsk.version == 1 ? 14 : 16;
+    p.eclk_ns = 1e9 / static_cast<double>(config.dsk.emif_hz);
+    p.period_ms = static_cast<double>(config.period) / (simtime::ticks_per_ns * 1e6);
+    return p;
+}
+
+int hard_error_bound_periods(const contract_params& p) {
+    return static_cast<int>((p.hard_error_rearms + 1) * (p.retry_limit + 1) + 2);
+}
+
+namespace {
+
+// Dark pixels under a persistent data fault: detected when even the darkest
+// plausible one reaches DARK_THRESHOLD, harmless when even the brightest
+// stays below it (6 sigma of noise either way), else either.
+expectation dark_rule(int low, int high, const contract_params& p, const std::string& what) {
+    expectation e;
+    if (low >= static_cast<int>(p.dark_threshold)) {
+        e.allowed = {outcome::hard_error};
+        e.max_frames_to_detect = 1;
+        e.why = what +
+                " >= DARK_THRESHOLD on every frame: L_DARK/R_DARK each frame, retries "
+                "exhausted, the firmware gives up";
+    } else if (high < static_cast<int>(p.dark_threshold)) {
+        e.allowed = {outcome::harmless};
+        e.why = what + " stays below DARK_THRESHOLD: undetectable and harmless to timing";
+    } else {
+        e.allowed = {outcome::hard_error, outcome::harmless, outcome::resync};
+        e.why = what + " straddles DARK_THRESHOLD with noise: detected or not";
+    }
+    return e;
+}
+
+}  // namespace
+
+expectation expected_for(const fault_observation& f, const fault_spec& s, const contract_params& p,
+                         const run_observation& /*run*/) {
+    expectation e;
+    if (!f.in_effect) {
+        e.allowed = {outcome::none};
+        e.why = "did not act during the run";
+        return e;
+    }
+    const int sigma6 = static_cast<int>(std::ceil(6 * p.dark_sigma));
+    switch (s.type) {
+        case fault_type::skew:
+        case fault_type::drop_line:
+        case fault_type::drop_frame:
+        case fault_type::glitch:
+            e.allowed = {outcome::resync, outcome::pending};
+            e.max_frames_to_detect = 1;
+            e.why =
+                "timing fault of one frame: the verdict of the common frame it hits flags it "
+                "(window / VSYNC), the pair is discarded, OE restarts, the next in-step start "
+                "recovers";
+            break;
+        case fault_type::extra_frame:
+            e.allowed = {outcome::stale_pair, outcome::harmless};
+            e.why =
+                "the repeat has exactly the reference's timing: no dark-pixel check can see it; "
+                "at most one pair (the repeat's) is used one scene frame stale";
+            break;
+        case fault_type::drift: {
+            const double slip = std::fabs(s.ppm) * 1e-6 * p.active_span_pclks;
+            if (slip >= 1.0) {
+                e.allowed = {outcome::hard_error};
+                e.max_frames_to_detect = 1;
+                e.why =
+                    "slips >= 1 clock inside every frame's active data: every restart fails, "
+                    "the firmware gives up";
+            } else if (slip <= 0.5) {
+                e.allowed = {outcome::resync, outcome::pending, outcome::harmless};
+                e.why =
+                    "slips < 1 clock per frame: detected again at each slip, each followed "
+                    "by a restart (harmless if no slip falls inside the run)";
+            } else {
+                e.allowed = {outcome::resync, outcome::pending, outcome::hard_error};
+                e.why = "slips about one clock per frame: restarts may or may not hold";
+            }
+            break;
+        }
+        case fault_type::dark_leak:
+            e = dark_rule(s.level - sigma6, s.level + sigma6, p,
+                          "a dark level of " + std::to_string(s.level));
+            break;
+        case fault_type::stuck_bit: {
+            // The darkest and brightest dark pixel with the bit forced.
+            const int m = 1 << s.bit;
+            int low = 255, high = 0;
+            for (int v = std::max(0, p.black_level - sigma6); v <= p.black_level + sigma6; ++v) {
+                const int forced = s.value ? (v | m) : (v & ~m);
+                low = std::min(low, forced);
+                high = std::max(high, forced);
+            }
+            e = dark_rule(low, high, p,
+                          "dark pixels with bit " + std::to_string(s.bit) + " stuck at " +
+                              std::to_string(s.value));
+            break;
+        }
+        case fault_type::dead:
+        case fault_type::oe_stuck:
+            if (f.oe_starts_after > 0 ||
+                (s.type == fault_type::dead && s.when.kind == trigger_spec::by::start)) {
+                e.allowed = {outcome::hard_error};
+                e.why =
+                    "a sensor that does not follow OE can never be restarted in step: "
+                    "retries exhausted, the firmware gives up";
+            } else {
+                e.allowed = {outcome::harmless};
+                e.why = "no OE restart after the onset: nothing to notice";
+            }
+            break;
+        case fault_type::emif_wait: {
+            const double pair_ms =
+                p.words_per_pair * (p.eclk_per_word + s.cycles) * p.eclk_ns * 1e-6;
+            if (s.ce == 3 && pair_ms > p.period_ms) {
+                e.allowed = {outcome::overflow};
+                e.max_frames_to_detect = 3;
+                e.why =
+                    "a pair's read takes longer than the period: the FIFOs overflow, the "
+                    "card drops pairs (OVERFLOW), no sync effect";
+            } else {
+                e.allowed = {outcome::harmless, outcome::overflow};
+                e.why =
+                    "the pair read still fits the period alone; with the firmware's SDRAM "
+                    "traffic it may overflow";
+            }
+            break;
+        }
+        case fault_type::cpu_slow:
+            e.allowed = {outcome::overrun, outcome::harmless};
+            e.why =
+                "not a sync fault: a slower CPU drops pairs by the overrun policy (or still "
+                "fits)";
+            break;
+    }
+    return e;
+}
+
+namespace {
+
+void invariants(const run_observation& run, verdict* v, bool allow_stale) {
+    const auto violate = [&](const std::string& why) {
+        v->ok = false;
+        v->violations.push_back(why);
+    };
+    if (run.unsynced_pairs_used > 0 && !allow_stale)
+        violate(std::to_string(run.unsynced_pairs_used) + " pair(s) out of step used");
+    if (run.used_before_verdict > 0)
+        violate(std::to_string(run.used_before_verdict) + " pair(s) used before their verdict");
+    if (run.false_alarms > 0)
+        violate(std::to_string(run.false_alarms) +
+                " false alarm(s): SYNC_ERROR for an in-step "
+                "start with no fault in effect");
+}
+
+}  // namespace
+
+verdict check_clean(const run_observation& run) {
+    verdict v;
+    v.expected = outcome::harmless;
+    v.expected_text = "clean";
+    v.actual = run.hard_error ? outcome::hard_error : outcome::harmless;
+    invariants(run, &v, false);
+    if (run.misses > 0) {
+        v.ok = false;
+        v.violations.push_back(std::to_string(run.misses) + " out-of-step pair(s) forwarded");
+    }
+    if (run.hard_error) {
+        v.ok = false;
+        v.violations.push_back("hard_error on a clean run");
+    }
+    return v;
+}
+
+verdict check(const fault_observation& f, const fault_spec& s, const contract_params& p,
+              const run_observation& run) {
+    verdict v;
+    const expectation e = expected_for(f, s, p, run);
+    v.expected = e.allowed.front();
+    for (outcome o : e.allowed)
+        v.expected_text += (v.expected_text.empty() ? "" : "|") + std::string(outcome_name(o));
+    const auto violate = [&](const std::string& why) {
+        v.ok = false;
+        v.violations.push_back(why);
+    };
+    const bool stale = s.type == fault_type::extra_frame;
+    invariants(run, &v, stale);
+    if (stale && (f.unsynced_pairs_used > 1 || f.unsynced_pairs_used != f.stale_pairs_used))
+        violate("extra-frame: " + std::to_string(f.unsynced_pairs_used) +
+                " out-of-step pair(s) used, at most the one stale pair allowed");
+
+    // Classify.
+    const double period = p.period_ms;
+    const int bound = hard_error_bound_periods(p);
+    if (!f.in_effect) {
+        v.actual = outcome::none;
+    } else if (run.hard_error) {
+        v.actual = outcome::hard_error;
+    } else if (s.type == fault_type::emif_wait) {
+        v.actual = f.detected ? outcome::overflow : outcome::harmless;
+    } else if (s.type == fault_type::cpu_slow) {
+        v.actual = f.detected ? outcome::overrun : outcome::harmless;
+    } else if (f.unsynced_pairs_used > 0) {
+        v.actual =
+            f.unsynced_pairs_used == f.stale_pairs_used ? outcome::stale_pair : outcome::missed;
+    } else if (!f.detected) {
+        v.actual = outcome::harmless;
+    } else if (f.recovered) {
+        v.actual = outcome::resync;
+    } else {
+        // Due: 2 periods per failed start after the detection, + 2.
+        const double due_ms = f.detect_ms + (2.0 + 2.0 * f.failed_starts) * period;
+        const bool hard_expected =
+            std::find(e.allowed.begin(), e.allowed.end(), outcome::hard_error) != e.allowed.end();
+        const double hard_due_ms = f.onset_ms + bound * period;
+        if (hard_expected)
+            v.actual = run.end_ms < hard_due_ms ? outcome::pending : outcome::no_recovery;
+        else
+            v.actual = run.end_ms < due_ms ? outcome::pending : outcome::no_recovery;
+    }
+    // A hard error expected but still pending (the run ended before the bound).
+    bool allowed = std::find(e.allowed.begin(), e.allowed.end(), v.actual) != e.allowed.end();
+    if (!allowed && v.actual == outcome::pending &&
+        std::find(e.allowed.begin(), e.allowed.end(), outcome::hard_error) != e.allowed.end())
+        allowed = true;
+    if (!allowed)
+        violate(std::string("outcome ") + outcome_name(v.actual) + ", contract " + v.expected_text +
+                " (" + e.why + ")");
+
+    if (f.in_effect && e.max_frames_to_detect >= 0 && f.detected &&
+        f.frames_to_detect > e.max_frames_to_detect + f.masked_checks)
+        violate("detected " + std::to_string(f.frames_to_detect) + " frames after the onset (max " +
+                std::to_string(e.max_frames_to_detect) + " + " + std::to_string(f.masked_checks) +
+                " out-of-step restart(s))");
+    if (v.actual == outcome::resync && f.frames_to_recover > 2 + 2 * f.failed_starts)
+        violate("recovered after " + std::to_string(f.frames_to_recover) + " frames with " +
+                std::to_string(f.failed_starts) +
+                " failed restart(s) (max 2 + 2 per failed start)");
+    if (v.actual == outcome::hard_error && f.in_effect &&
+        run.hard_error_ms - f.onset_ms > bound * period)
+        violate("hard error " + std::to_string(run.hard_error_ms - f.onset_ms) +
+                " ms after the onset (bound " + std::to_string(bound) + " periods)");
+    // Sensor faults the card must see are seen by the firmware too.
+    if (f.detected && f.detected_by == "sync_error" && run.firmware_sync_errors == 0)
+        violate("the card flagged the fault but the firmware reported no sync_error");
+    return v;
+}
+
+}  // namespace faults

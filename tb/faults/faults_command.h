@@ -1,0 +1,37 @@
+// `stereosim faults` (docs/faults.md, docs/fault-contract.md):
+//   stereosim faults --list
+//   stereosim faults --campaign smoke|full [--seeds N] [--jobs J] [--shard K/M] [--out DIR]
+//                    [--weaken ignore-verdict] [--keep-runs] [--match TEXT]
+// Exit codes: 0 every run kept the contract, 1 a run broke it (or did not
+// run), 2 bad input.
+#pragma once
+
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace faults {
+
+class faults_command {
+  public:
+    explicit faults_command(CLI::App& app);
+    CLI::App* subcommand() const { return m_app; }
+    int execute();
+
+  private:
+    CLI::App* m_app = nullptr;
+    bool m_list = false;
+    bool m_keep_runs = false;
+    std::string m_campaign;
+    int m_seeds = 0;
+    int m_jobs = 2;
+    std::string m_shard = "1/1";
+    std::string m_out;
+    std::string m_weaken = "none";
+    std::string m_binary;
+    std::string m_match;
+};
+
+}  // namespace faults

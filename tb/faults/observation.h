@@ -1,0 +1,64 @@
+// What a platform run shows about its injected faults (tb/faults/observe.h
+// builds it after the run): the figures report.json carries in `faults` /
+// `fault_run` and the contract (tb/faults/contract.h) checks. Plain data, no
+// SystemC, so the contract and the campaign read it back from a report.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "tb/faults/fault_spec.h"
+
+namespace faults {
+
+// One injected fault.
+struct fault_observation {
+    std::string spec;  // canonical
+    fault_type type = fault_type::skew;
+    bool in_effect = false;    // it acted during the run
+    double onset_ms = -1;      // when it took effect
+    int64_t onset_frame = -1;  // sensor faults: the sensor's frame (truth index); else sync period
+    // Detection: the first SYNC_ERROR (sensor faults), OVERFLOW (emif-wait)
+    // or pair_dropped report (cpu-slow) at or after the onset.
+    bool detected = false;
+    std::string detected_by = "none";
+    double detect_ms = -1;
+    int frames_to_detect = -1;  // whole periods from the onset to the detection
+    int masked_checks = 0;  // SYNC_ERRORs before it the fault cannot explain (out-of-step starts)
+    uint32_t causes = 0;    // VERDICT cause bits of the firmware's first sync_error report
+    // Recovery: the first in-step pair the card forwards after the detection.
+    bool recovered = false;
+    double recover_ms = -1;
+    int frames_to_recover = -1;   // periods from the detection to that pair's FRAME_READY, rounded
+    int failed_starts = 0;        // OE starts after the detection whose first verdict was not good
+    int oe_starts_after = 0;      // OE rises after the onset
+    int pairs_discarded = 0;      // card SYNC_ERROR + OVERFLOW pulses from the onset on
+    int pairs_used = 0;           // processed pairs made ready after the onset
+    int unsynced_pairs_used = 0;  // of those, out of step by the sensors' truth
+    int stale_pairs_used = 0;     // of those, in step by timing, a repeated (stale) frame
+    int pairs_dropped = 0;        // the firmware's overrun drops after the onset
+};
+
+// The whole run.
+struct run_observation {
+    int frames = 0;
+    double period_ms = 24.5;
+    double end_ms = 0;
+    bool firmware_started = false;
+    int pairs_forwarded = 0, pairs_processed = 0, pairs_rejected = 0, pairs_dropped = 0;
+    int card_sync_errors = 0, card_overflows = 0, firmware_sync_errors = 0;
+    int oe_starts = 0, rearms = 0;
+    int unsynced_pairs_used = 0;  // scoreboard: processed pairs out of step by truth
+    int misses = 0;               // forwarded pairs out of step by truth (the card let them by)
+    int used_before_verdict = 0;
+    // SYNC_ERROR pulses for an OE start that was in step by truth while no
+    // fault was in effect (before every onset): a false alarm.
+    int false_alarms = 0;
+    int sync_errors_before_onset = 0;
+    bool hard_error = false;  // the firmware reported hard_error
+    double hard_error_ms = -1;
+    std::vector<fault_observation> faults;
+};
+
+}  // namespace faults

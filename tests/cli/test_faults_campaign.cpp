@@ -1,0 +1,137 @@
+// The stereosim binary as a user runs it (docs/faults.md, docs/fault-contract.md):
+// a bad --fault is a one-line error, a good one lands in report.json, and a
+// slice of the smoke campaign keeps the contract with the real firmware and
+// breaks it with the weakened one (--weaken ignore-verdict).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct command_result {
+    int exit_code = -1;
+    std::string output;  // stdout + stderr
+};
+
+std::FILE* start(const std::string& args) {
+    const std::string command = std::string(STEREOSIM_BINARY) + " " + args + " 2>&1";
+    return popen(command.c_str(), "r");
+}
+
+command_result finish(std::FILE* pipe) {
+    command_result r;
+    if (!pipe) return r;
+    char buf[4096];
+    size_t n = 0;
+    while ((n = std::fread(buf, 1, sizeof buf, pipe)) > 0) r.output.append(buf, n);
+    const int status = pclose(pipe);
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+command_result run(const std::string& args) {
+    return finish(start(args));
+}
+
+fs::path scratch(const std::string& name) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("stereosim_test_faults_" + std::to_string(getpid())) / name;
+    fs::remove_all(dir);
+    return dir;
+}
+
+json read_json(const fs::path& path) {
+    std::ifstream in(path);
+    return json::parse(in);
+}
+
+TEST(FaultCli, MalformedSpecIsOneLineAndWritesNothing) {
+    const fs::path out = scratch("bad");
+    const command_result r =
+        run("run --frames 4 --fault skew:sensor=R,lines=3@frm=5 --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_EQ(r.output,
+              "stereosim: error: bad fault spec 'skew:sensor=R,lines=3@frm=5': bad trigger "
+              "'@frm=5' (expected @frame=N with N >= 0 or @ms=T with T >= 0)\n");
+    EXPECT_FALSE(fs::exists(out / "report.json"));
+    const command_result list = run("faults --list");
+    EXPECT_EQ(list.exit_code, 0);
+    EXPECT_NE(list.output.find("emif-wait  (emif::ardy_fault)"), std::string::npos);
+}
+
+TEST(FaultCli, AFaultIsReportedWithItsOnsetAndOutcome) {
+    const fs::path out = scratch("skew");
+    const command_result r =
+        run("run --quiet --frames 7 --fault skew:sensor=R,lines=3@frame=4 --out " + out.string());
+    ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.output;
+    const json report = read_json(out / "report.json");
+    ASSERT_EQ(report["faults"].size(), 1u);
+    const json& f = report["faults"][0];
+    EXPECT_EQ(f["spec"], "skew:sensor=R,lines=3@frame=4");
+    EXPECT_EQ(f["kind"], "skew");
+    EXPECT_EQ(f["onset_frame"], 4);
+    EXPECT_TRUE(f["in_effect"].get<bool>());
+    // Right frame 4 starts between 3 and 4 periods in (seed 3: one restart).
+    EXPECT_GT(f["onset_ms"].get<double>(), 49.0);
+    EXPECT_LT(f["onset_ms"].get<double>(), 98.0);
+    // Flagged by the verdict of the frame it hit, blaming the right stream:
+    // R_WINDOW (bit 1) and / or R_VSYNC (bit 5), never a left cause.
+    EXPECT_TRUE(f["detected"].get<bool>());
+    EXPECT_EQ(f["detected_by"], "sync_error");
+    EXPECT_LE(f["frames_to_detect"].get<int>(), 1);
+    const int causes = f["verdict_causes"].get<int>();
+    EXPECT_NE(causes & 0x22, 0);
+    EXPECT_EQ(causes & 0x15, 0);
+    EXPECT_EQ(f["unsynced_pairs_used"], 0);
+    EXPECT_EQ(report["fault_run"]["unsynced_pairs_used"], 0);
+    EXPECT_TRUE(f["contract_ok"].get<bool>()) << f.dump();
+    std::printf(
+        "skew R 3 lines @frame 4: onset %.3f ms, detected %.3f ms (%d frames), causes "
+        "0x%02x, outcome %s\n",
+        f["onset_ms"].get<double>(), f["detect_ms"].get<double>(), f["frames_to_detect"].get<int>(),
+        causes, f["outcome"].get<std::string>().c_str());
+}
+
+// The same slice of the smoke campaign, with the firmware as it is and
+// weakened: a dark leak the card must flag every frame until the firmware
+// gives up.
+TEST(FaultCampaign, SmokeSliceKeepsTheContractAndTheWeakenedFirmwareBreaksIt) {
+    const std::string slice = "faults --campaign smoke --match dark-leak:sensor=R";
+    const fs::path good = scratch("good"), weak = scratch("weak");
+    // Both at once (each is one simulation).
+    std::FILE* ok_pipe = start(slice + " --jobs 1 --out " + good.string());
+    std::FILE* bad_pipe = start(slice + " --jobs 1 --weaken ignore-verdict --out " + weak.string());
+    const command_result ok = finish(ok_pipe);
+    const command_result bad = finish(bad_pipe);
+    std::printf("%s\n%s\n", ok.output.c_str(), bad.output.c_str());
+
+    EXPECT_EQ(ok.exit_code, 0);
+    const json g = read_json(good / "campaign.json");
+    ASSERT_EQ(g["rows"].size(), 1u);
+    EXPECT_EQ(g["contract_broken"], 0);
+    EXPECT_EQ(g["rows"][0]["actual"], "hard_error");
+    EXPECT_EQ(g["rows"][0]["unsynced_pairs_used"], 0);
+    EXPECT_TRUE(fs::exists(good / "campaign.csv") && fs::exists(good / "campaign.txt"));
+
+    EXPECT_EQ(bad.exit_code, 1);
+    const json w = read_json(weak / "campaign.json");
+    ASSERT_EQ(w["rows"].size(), 1u);
+    EXPECT_EQ(w["contract_broken"], 1);
+    EXPECT_FALSE(w["rows"][0]["contract_ok"].get<bool>());
+    // The blind dark check lets the leaking pairs through: used, not discarded.
+    EXPECT_EQ(w["rows"][0]["actual"], "harmless");
+    EXPECT_GT(w["rows"][0]["pairs_used_after_onset"].get<int>(), 0);
+    EXPECT_FALSE(w["rows"][0]["violations"].empty());
+    fs::remove_all(good.parent_path());
+}
+
+}  // namespace
