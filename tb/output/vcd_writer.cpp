@@ -237,8 +237,8 @@ void vcd_writer::set_time(ticks t) {
 
 void vcd_writer::change(ticks t, platform::trace_id id, uint64_t value) {
     if (m_finished || !m_window.contains(t) || id >= m_signals.size()) return;
-    const signal& s = m_signals[id];
-    if (s.info.width < 64) value &= (uint64_t{1} << s.info.width) - 1;
+    const int width = m_signals[id].info.width;
+    if (width < 64) value &= (uint64_t{1} << width) - 1;
     if (!m_header_written) {
         if (t == m_window.from) {  // part of the snapshot
             m_value[id] = value;
@@ -247,7 +247,8 @@ void vcd_writer::change(ticks t, platform::trace_id id, uint64_t value) {
         }
         write_header();
     }
-    if (!s.included || (m_state[id] == 1 && m_value[id] == value)) return;
+    // (write_header() adds the fault marker: no reference into m_signals across it.)
+    if (!m_signals[id].included || (m_state[id] == 1 && m_value[id] == value)) return;
     m_value[id] = value;
     m_state[id] = 1;
     set_time(t);

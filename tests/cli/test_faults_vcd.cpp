@@ -1,0 +1,319 @@
+// Every injected fault as a marker in the waveform (issue 7, docs/faults.md,
+// docs/waveforms.md): `stereosim run --fault ... --vcd` as a user runs it.
+// The VCD declares platform.faults.kind[7:0] (0 in $dumpvars); at each fault's
+// onset inside the window it becomes 1 + faults::fault_type. Checked against
+// report.json's faults[].onset_ms (the same onset, a different output) and
+// against the faulted sensor's own pins in the same VCD: the onset is the
+// PCLK rise that starts the sensor's frame, VSYNC rises within that clock.
+#include <gtest/gtest.h>
+#include <stdlib.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "model/sensor/profile.h"
+#include "model/time/ticks.h"
+#include "tb/faults/fault_spec.h"
+#include "tb/output/vcd_writer.h"
+
+namespace {
+
+using simtime::ticks;
+
+std::string run_stereosim(const std::string& args, int* exit_code) {
+    const std::string command =
+        "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 " STEREOSIM_BINARY " " + args + " 2>&1";
+    std::string output;
+    std::FILE* p = popen(command.c_str(), "r");
+    if (!p) return output;
+    char buffer[4096];
+    size_t n;
+    while ((n = std::fread(buffer, 1, sizeof buffer, p)) > 0) output.append(buffer, n);
+    const int status = pclose(p);
+    *exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return output;
+}
+
+std::string temp_dir() {
+    char name[] = "/tmp/stereosim-test-faults-vcd-XXXXXX";
+    const char* dir = mkdtemp(name);
+    return dir ? dir : "";
+}
+
+std::string read_text(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// ---- a plain VCD reader: declarations, the $dumpvars values, every change --------------------
+struct vcd_change {
+    int64_t fs;
+    std::string value;  // "0", "1", "x", "z" or a vector's bits
+};
+
+struct vcd_file {
+    std::map<std::string, std::string> code_of;  // full name -> code
+    std::map<std::string, int> width_of;
+    std::map<std::string, std::string> dumped;               // code -> $dumpvars value
+    std::map<std::string, std::vector<vcd_change>> changes;  // by code, after $dumpvars
+    std::set<std::string> codes;                             // every code, to spot a duplicate
+    int64_t dumpvars_fs = -1, last_fs = -1;
+    bool times_increase = true;
+    bool codes_unique = true;
+
+    const std::vector<vcd_change>& of(const std::string& name) const {
+        static const std::vector<vcd_change> none;
+        const auto c = code_of.find(name);
+        if (c == code_of.end()) return none;
+        const auto h = changes.find(c->second);
+        return h == changes.end() ? none : h->second;
+    }
+};
+
+vcd_file parse_vcd(const std::string& path) {
+    vcd_file v;
+    std::ifstream in(path);
+    std::string token;
+    std::vector<std::string> scope;
+    while (in >> token) {
+        if (token == "$scope") {
+            std::string kind, name, end;
+            in >> kind >> name >> end;
+            scope.push_back(name);
+        } else if (token == "$upscope") {
+            std::string end;
+            in >> end;
+            scope.pop_back();
+        } else if (token == "$var") {
+            std::string kind, width, code, name, rest, full;
+            in >> kind >> width >> code >> name;
+            for (const std::string& s : scope) full += s + ".";
+            full += name;
+            while (in >> rest && rest != "$end") full += rest;
+            v.code_of[full] = code;
+            v.width_of[full] = std::stoi(width);
+            v.codes_unique = v.codes_unique && v.codes.insert(code).second;
+        } else if (token == "$enddefinitions") {
+            in >> token;
+            break;
+        } else if (token[0] == '$') {
+            while (in >> token && token != "$end") {
+            }
+        }
+    }
+    int64_t now = 0;
+    bool dumping = false;
+    while (in >> token) {
+        if (token[0] == '#') {
+            now = std::stoll(token.substr(1));
+            if (now < v.last_fs) v.times_increase = false;
+            v.last_fs = now;
+        } else if (token == "$dumpvars") {
+            dumping = true;
+            v.dumpvars_fs = now;
+        } else if (token == "$end") {
+            dumping = false;
+        } else {
+            std::string code, value;
+            if (token[0] == 'b') {
+                in >> code;
+                value = token.substr(1);
+            } else {
+                code = token.substr(1);
+                value = token.substr(0, 1);
+            }
+            if (dumping)
+                v.dumped[code] = value;
+            else
+                v.changes[code].push_back({now, value});
+        }
+    }
+    return v;
+}
+
+// 1 tick = 1/18 ns; the VCD holds each tick rounded to fs once (vcd_writer.h).
+ticks tick_of_fs(int64_t fs) {
+    return (fs * simtime::ticks_per_ns + simtime::fs_per_ns / 2) / simtime::fs_per_ns;
+}
+ticks tick_of_ms(double ms) {
+    return static_cast<ticks>(std::llround(ms * 1e6 * simtime::ticks_per_ns));
+}
+
+const char* const marker = "platform.faults.kind[7:0]";
+// skew is fault_type 0: its code is 1 (0 means no fault).
+const std::string skew_code = "1";
+
+struct fault_run {
+    int exit_code = -1;
+    std::string output;
+    nlohmann::json report;
+    vcd_file vcd;
+    std::string dir;
+};
+
+fault_run run_with(const std::string& faults, const std::string& window) {
+    fault_run r;
+    r.dir = temp_dir();
+    r.output = run_stereosim(
+        "run --frames 4 " + faults + " --vcd " + window + " --quiet --out " + r.dir, &r.exit_code);
+    r.report = nlohmann::json::parse(read_text(r.dir + "/report.json"), nullptr, false);
+    r.vcd = parse_vcd(r.dir + "/waves/default.vcd");
+    return r;
+}
+
+// The marker is declared in every VCD, 8 bits, a unique code, 0 or `initial`
+// at the window start.
+void expect_declared(const vcd_file& v, const std::string& initial) {
+    ASSERT_TRUE(v.code_of.count(marker)) << "no " << marker;
+    EXPECT_EQ(v.width_of.at(marker), 8);
+    EXPECT_TRUE(v.codes_unique);
+    ASSERT_TRUE(v.dumped.count(v.code_of.at(marker))) << marker << " not in $dumpvars";
+    EXPECT_EQ(v.dumped.at(v.code_of.at(marker)), initial);
+    EXPECT_TRUE(v.times_increase);
+}
+
+}  // namespace
+
+// A skew of sensor R at frame 2 (onset near 2 x 24.5 ms + start-up) inside
+// the window 24.5..25.5 ms, a dropped line of sensor L at frame 3 after it.
+TEST(faults_vcd, onset_in_the_window_is_one_change_at_the_onset_tick) {
+    const fault_run r = run_with(
+        "--fault skew:sensor=R,lines=3@frame=2 --fault drop-line:sensor=L,line=100@frame=3",
+        "--vcd-from 24.5 --vcd-to 25.5");
+    ASSERT_LE(r.exit_code, 1) << r.output;  // 0 within budget, 1 over: both finished runs
+    ASSERT_TRUE(r.report.is_object()) << r.output;
+    ASSERT_EQ(r.report["faults"].size(), 2u);
+    const nlohmann::json& skew = r.report["faults"][0];
+    const nlohmann::json& drop = r.report["faults"][1];
+    ASSERT_TRUE(skew["onset_ms"].is_number()) << skew.dump();
+    ASSERT_TRUE(drop["onset_ms"].is_number()) << drop.dump();
+    const double onset_ms = skew["onset_ms"].get<double>();
+    const double drop_ms = drop["onset_ms"].get<double>();
+    // The window was chosen from the frame timing; say so if that moved.
+    ASSERT_GT(onset_ms, 24.5);
+    ASSERT_LT(onset_ms, 25.5);
+    ASSERT_GE(drop_ms, 25.5);  // outside the window: no change for it
+
+    const vcd_file& v = r.vcd;
+    expect_declared(v, "0");
+    const std::vector<vcd_change>& h = v.of(marker);
+    ASSERT_EQ(h.size(), 1u) << "the marker must change exactly once";
+    const ticks onset = tick_of_ms(onset_ms);
+    EXPECT_EQ(tick_of_fs(h[0].fs), onset);
+    EXPECT_EQ(h[0].fs, simtime::to_fs(onset));
+    EXPECT_EQ(h[0].value, skew_code);
+    EXPECT_EQ(static_cast<int>(faults::fault_type::skew) + 1, 1);
+
+    // The faulted sensor's pins: PCLK rises at the onset (the clock edge the
+    // truth calls the frame's start) and VSYNC rises within that clock.
+    const sensor::sensor_profile profile = sensor::default_profile();
+    const ticks pclk = profile.pclk_period().num / profile.pclk_period().den;
+    bool pclk_rises = false;
+    for (const vcd_change& c : v.of("platform.sensor_R.PCLK"))
+        pclk_rises = pclk_rises || (tick_of_fs(c.fs) == onset && c.value == "1");
+    EXPECT_TRUE(pclk_rises) << "sensor_R.PCLK does not rise at the onset";
+    ticks vsync_rise = -1;
+    for (const vcd_change& c : v.of("platform.sensor_R.VSYNC"))
+        if (c.value == "1" && tick_of_fs(c.fs) >= onset) {
+            vsync_rise = tick_of_fs(c.fs);
+            break;
+        }
+    ASSERT_GE(vsync_rise, onset);
+    EXPECT_LT(vsync_rise - onset, pclk);
+
+    // The save file shows it through the filter that names the kinds.
+    const std::string gtkw = read_text(r.dir + "/waves/default.gtkw");
+    EXPECT_NE(gtkw.find("\n-faults\n@2024\n^"), std::string::npos);
+    EXPECT_NE(gtkw.find(" fault_kind.txt\nplatform.faults.kind[7:0]\n"), std::string::npos);
+    const std::string kinds = read_text(r.dir + "/waves/fault_kind.txt");
+    EXPECT_NE(kinds.find("\n0 none\n"), std::string::npos);
+    EXPECT_NE(kinds.find("\n" + std::to_string(std::stoi(skew_code, nullptr, 2)) + " skew\n"),
+              std::string::npos);
+    EXPECT_NE(kinds.find("\n2 drop-line\n"), std::string::npos);
+    EXPECT_EQ(kinds, read_text(std::string(STEREOSIM_SOURCE_DIR) + "/waves/fault_kind.txt"))
+        << "waves/fault_kind.txt differs from what a run writes";
+    std::printf(
+        "skew onset %.6f ms (report) = tick %lld = %lld fs; VCD marker change at %lld fs to %s "
+        "(1 change); sensor_R VSYNC rises %lld ticks later (PCLK %lld ticks); drop-line onset "
+        "%.6f ms outside the window: no change\n",
+        onset_ms, static_cast<long long>(onset), static_cast<long long>(simtime::to_fs(onset)),
+        static_cast<long long>(h[0].fs), h[0].value.c_str(),
+        static_cast<long long>(vsync_rise - onset), static_cast<long long>(pclk), drop_ms);
+}
+
+// Without --fault the marker is declared and stays 0.
+TEST(faults_vcd, clean_run_marker_stays_zero) {
+    const fault_run r = run_with("", "--vcd-from 24.5 --vcd-to 25.5");
+    ASSERT_LE(r.exit_code, 1) << r.output;
+    ASSERT_TRUE(r.report.is_object()) << r.output;
+    EXPECT_TRUE(r.report["faults"].empty());
+    expect_declared(r.vcd, "0");
+    EXPECT_TRUE(r.vcd.of(marker).empty());
+    std::printf("clean run: %s declared, 0 in $dumpvars, %zu changes\n", marker,
+                r.vcd.of(marker).size());
+}
+
+// A fault whose onset precedes the window: no change inside it; the window
+// starts with the kind in effect (the latest fault to act).
+TEST(faults_vcd, onset_before_the_window_is_no_change) {
+    const fault_run r = run_with("--fault skew:sensor=R,lines=3@frame=2",
+                                 "--vcd-from 30 --vcd-to 30.2 --vcd-scope card");
+    ASSERT_LE(r.exit_code, 1) << r.output;
+    ASSERT_TRUE(r.report.is_object()) << r.output;
+    ASSERT_EQ(r.report["faults"].size(), 1u);
+    const double onset_ms = r.report["faults"][0]["onset_ms"].get<double>();
+    ASSERT_LT(onset_ms, 30.0);
+    expect_declared(r.vcd, skew_code);  // also with a --vcd-scope without firmware
+    EXPECT_TRUE(r.vcd.of(marker).empty());
+    std::printf("onset %.6f ms before the window 30..30.2 ms: $dumpvars %s, %zu changes\n",
+                onset_ms, r.vcd.dumped.at(r.vcd.code_of.at(marker)).c_str(),
+                r.vcd.of(marker).size());
+}
+
+// The merge itself on a small trace, times worked out by hand: onsets before
+// the window (the $dumpvars value), at its start, between two written times,
+// on a written time, two on one tick, and after the window.
+TEST(faults_vcd, merge_places_each_onset_at_its_tick) {
+    const std::string dir = temp_dir();
+    const platform::tick_window window{1000, 5000};
+    output::vcd_writer vcd(window);
+    const platform::trace_id clk = vcd.declare({"sensor_L", "PCLK", 1});
+    ASSERT_TRUE(vcd.open(dir + "/t.vcd"));
+    vcd.change(1000, clk, 0);  // the snapshot
+    vcd.change(2000, clk, 1);
+    vcd.change(3000, clk, 0);
+    vcd.finish(5000);
+    ASSERT_TRUE(vcd.ok()) << vcd.error();
+    ASSERT_TRUE(vcd.add_fault_markers(
+        {{4000, 11}, {2500, 3}, {500, 2}, {1000, 4}, {3000, 5}, {3000, 6}, {4000, 12}, {6000, 9}}))
+        << vcd.error();
+    const vcd_file v = parse_vcd(dir + "/t.vcd");
+    expect_declared(v, "10");  // 2 drop-frame, before the window
+    const std::vector<vcd_change>& h = v.of(marker);
+    const std::vector<std::pair<ticks, std::string>> expected = {
+        {1000, "100"}, {2500, "11"}, {3000, "110"}, {4000, "1100"}};
+    ASSERT_EQ(h.size(), expected.size());
+    for (size_t i = 0; i < h.size(); ++i) {
+        EXPECT_EQ(h[i].fs, simtime::to_fs(expected[i].first)) << i;
+        EXPECT_EQ(h[i].value, expected[i].second) << i;
+    }
+    // The clock's own changes are untouched, and the file still ends at the window's end.
+    const std::vector<vcd_change>& c = v.of("platform.sensor_L.PCLK");
+    ASSERT_EQ(c.size(), 2u);
+    EXPECT_EQ(c[0].fs, simtime::to_fs(2000));
+    EXPECT_EQ(c[1].fs, simtime::to_fs(3000));
+    EXPECT_EQ(v.last_fs, simtime::to_fs(5000));
+    EXPECT_EQ(v.dumpvars_fs, simtime::to_fs(1000));
+    EXPECT_FALSE(access((dir + "/t.vcd.markers").c_str(), F_OK) == 0);
+}
