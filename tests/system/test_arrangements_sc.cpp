@@ -376,7 +376,9 @@ int periods(int full) {
     return sanitized ? 3 : full;
 }
 void expect_3d_outputs(const pair_of_runs& r) {
-    if (!sanitized) EXPECT_GE(r.fast.points_3d, 2u) << "the run must reach 3D outputs";
+    if (!sanitized) {
+        EXPECT_GE(r.fast.points_3d, 2u) << "the run must reach 3D outputs";
+    }
 }
 
 // The window: 1 ms around the first in-step pair's FRAME_READY (49.2 ms):
