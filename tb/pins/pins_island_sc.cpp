@@ -310,7 +310,7 @@ class pins_island : public platform::island {
     // The settled pins of tick t, observed as the fast island's advance() does.
     void observe(ticks t) {
         const bool hash = m_config.hash_pins;
-        if (m_trace) trace_tick(t);
+        if (m_trace && trace_edges_at(t)) trace_tick(t);
         if (m_edges & pclk_fall) {
             for (int c = 0; c < 2; ++c) record_sensor_word(c, m_wires[c].word(), t);
         }

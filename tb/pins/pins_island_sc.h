@@ -33,7 +33,8 @@
 // report read either arrangement the same way.
 //
 // Pin trace (pin_trace.h, --vcd): the same signals and values as the fast
-// island, read from the settled signals of each tick by the same observer.
+// island, read from the settled signals of each tick by the same observer,
+// only for the ticks from the warm-up before the window to its end.
 //
 // Not supported: a pclk_drift fault (a sensor off the master clock has edges
 // the clock thread does not visit); an SC_ERROR says so.

@@ -26,6 +26,22 @@ uint64_t card_outputs_of(const Vcard& d) {
                                        d.ext_int6, d.ed_out);
 }
 
+// Before the window the edges make no trace calls, except in a warm-up of
+// 16 periods of the slower of the card's two clocks (a drift fault moves a
+// sensor's clock off the master by ppm, not by periods): the fast island
+// sets every sensor pin at each sensor pixel clock and every card and EMIF
+// signal at each card edge, the pin-level one every signal at each tick, so
+// each holds its value at the window start by then. The firmware signals
+// come from the timeline events, still read from the start (per sync, not
+// per edge). A window after the run's end gets the values at the end.
+ticks trace_edges_from(const island_config& config, const simtime::tick_clock& eclk) {
+    const ticks pclk_period = config.pclk.period_num() / config.pclk.period_den() + 1;
+    const ticks eclk_period = eclk.period_num() / eclk.period_den() + 1;
+    const ticks warmup = 16 * std::max(pclk_period, eclk_period);
+    const ticks from = std::min(config.trace_window.from, config.end);
+    return from > warmup ? from - warmup : 0;
+}
+
 }  // namespace
 
 island::island(sc_core::sc_module_name name, const island_config& config,
@@ -39,7 +55,8 @@ island::island(sc_core::sc_module_name name, const island_config& config,
       m_events(events),
       m_context(std::make_unique<VerilatedContext>()),
       m_pclk(config.pclk),
-      m_eclk(engine.config().eclk) {
+      m_eclk(engine.config().eclk),
+      m_trace_edges_from(trace_edges_from(config, engine.config().eclk)) {
     m_card = std::make_unique<Vcard>(m_context.get(), "card");
     for (int c = 0; c < 2; ++c) {
         m_sensor[c] = std::make_unique<sensor::sensor_core>(
@@ -88,7 +105,8 @@ island::island(sc_core::sc_module_name name, const island_config& config,
       m_engine(engine),
       m_events(events),
       m_pclk(config.pclk),
-      m_eclk(engine.config().eclk) {
+      m_eclk(engine.config().eclk),
+      m_trace_edges_from(trace_edges_from(config, engine.config().eclk)) {
     for (int c = 0; c < 2; ++c) {
         const size_t bytes = static_cast<size_t>(config.profile.active_cols) *
                              static_cast<size_t>(config.profile.active_rows);
@@ -175,9 +193,9 @@ ticks island::advance(ticks limit, bool* stopped) {
     simtime::clock_cursor eclk = m_eclk;
     ticks last = m_last_tick;
     const bool hash = m_config.hash_pins;
-    const bool trace = m_trace != nullptr;
+    const bool trace_on = m_trace != nullptr;
     // The firmware's events up to now come before any edge after now.
-    if (trace) trace_firmware();
+    if (trace_on) trace_firmware();
 
     for (;;) {
         const ticks tp = pclk.tick();
@@ -187,6 +205,7 @@ ticks island::advance(ticks limit, bool* stopped) {
         const ticks t = std::min(std::min(tp, te), std::min(tl, tr));
         if (t > limit) break;
         const bool pe = tp == t, ee = te == t;
+        const bool trace = trace_on && trace_edges_at(t);
         while (t >= m_next_boundary) close_period();
         if (trace) trace_flush(t);
 
@@ -322,7 +341,7 @@ ticks island::advance(ticks limit, bool* stopped) {
     // fall after a later rise, other pins at later edges).
     m_pin_hasher.flush_before(last + 1);
     // Nothing else can report a change before the time the island waits for.
-    if (trace) trace_flush(*stopped ? last : limit);
+    if (trace_on) trace_flush(*stopped ? last : limit);
     return last;
 }
 

@@ -191,6 +191,12 @@ class island : public sc_core::sc_module {
     void trace_card(simtime::ticks t);
     void trace_firmware();  // timeline events the firmware added since the last call
     void trace_firmware_event(const timeline_event& e);  // one event's firmware signals
+    // Whether the edges of tick t make trace calls (pin_trace.h): only from
+    // a warm-up before the window (every per-edge signal is refreshed in it,
+    // so its value at the window start is exact) until the window ends.
+    bool trace_edges_at(simtime::ticks t) const {
+        return t >= m_trace_edges_from && t < m_config.trace_window.to;
+    }
     void mix_pin(simtime::ticks t, uint32_t group, uint64_t value) {
         m_pin_hasher.add(t, group, value);
     }
@@ -244,6 +250,7 @@ class island : public sc_core::sc_module {
     uint8_t m_trace_state[trace_pin_count] = {};  // 0 unknown, 1 driven, 2 released
     bool m_trace_open = false;                    // the snapshot at window.from was sent
     bool m_trace_finished = false;
+    simtime::ticks m_trace_edges_from = 0;  // trace_window.from less the warm-up
     deferred_change m_deferred[32];
     int m_deferred_count = 0;
     size_t m_timeline_traced = 0;  // timeline events looked at for the firmware signals

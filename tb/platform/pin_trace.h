@@ -18,7 +18,10 @@
 //   4. finish() once, after the last change (the run ended or the window
 //      closed).
 // Cost: a source with no sink attached does nothing per edge beyond a null
-// pointer test (measured in docs/waveforms.md).
+// pointer test (measured in docs/waveforms.md). With a sink, only the edges
+// from a short warm-up before `window.from` (island_sc.cpp,
+// trace_edges_from) to `window.to` make trace calls: a window costs about
+// its own length, not the whole run.
 #pragma once
 
 #include <cstdint>
