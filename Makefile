@@ -65,8 +65,7 @@ bench: deps
 	cmake --build $(BUILD_BENCH) -j $(JOBS)
 	@for b in $(BUILD_BENCH)/bench/bench_*; do echo "== $$b"; $$b --benchmark_min_time=0.2; done
 
-# The card's synthesizable RTL (rtl/*.v); rtl/icarus/ holds a simulation-only
-# testbench with delays, not part of the design.
+# The card's synthesizable RTL (rtl/*.v).
 lint: deps
 	@for f in $$(find rtl -maxdepth 1 -name '*.v' | sort); do \
 		verilator --lint-only -Wall -Irtl $$f || exit 1; done; echo "lint: rtl clean"

@@ -38,10 +38,10 @@
 // verilated.h, seeing SystemC, expects sc_time_stamp in the global namespace.
 using sc_core::sc_time_stamp;
 #include "Vcard.h"
-#include "rtl/icarus/card_stimulus.h"
 #include "tb/output/vcd_writer.h"
 #include "tb/platform/platform.h"
 #include "tests/rtl/card_bench.h"
+#include "tests/rtl/icarus/card_stimulus.h"
 
 namespace {
 
@@ -238,7 +238,7 @@ void card_icarus_vs_verilator(benchmark::State& state) {
             std::filesystem::path(__FILE__).parent_path().parent_path().string() + "/rtl";
         if (!icarus_ref::write_stimulus(dir + "/stimulus.txt", before_reset, events) ||
             std::system(("iverilog -g2012 -I" + rtl + " -s card_replay_tb -o " + dir +
-                         "/card.vvp " + rtl + "/icarus/card_replay_tb.v " + rtl +
+                         "/card.vvp " + rtl + "/../tests/rtl/icarus/card_replay_tb.v " + rtl +
                          "/*.v > /dev/null 2>&1")
                             .c_str()) != 0) {
             state.SkipWithError("iverilog failed");

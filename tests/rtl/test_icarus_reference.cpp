@@ -1,7 +1,7 @@
 // Icarus Verilog as the outside reference for the verilated card (issue 8;
 // docs/arrangements.md "Icarus reference"): the card's input pins of a
 // window from reset are recorded into a stimulus file, replayed under vvp by
-// rtl/icarus/card_replay_tb.v and into a fresh verilated card (rtl_card,
+// tests/rtl/icarus/card_replay_tb.v and into a fresh verilated card (rtl_card,
 // the platform's parameters), and the card's outputs (OE, ED, ED_OE, ARDY,
 // EXT_INT4-6) must be equal after every phase of every clock event.
 //
@@ -27,8 +27,8 @@
 #include <vector>
 
 #include "Vcard.h"
-#include "rtl/icarus/card_stimulus.h"
 #include "tests/rtl/card_bench.h"
+#include "tests/rtl/icarus/card_stimulus.h"
 
 namespace {
 
@@ -191,8 +191,8 @@ TEST(IcarusReference, SameCardOutputsAsTheVerilatedCardForTheSameStimulus) {
     // Icarus: compile the card RTL with the testbench, replay.
     const std::string rtl = repo_root() + "/rtl";
     const std::string compile = "iverilog -g2012 -I" + rtl + " -s card_replay_tb -o " + vvp_file +
-                                " " + rtl + "/icarus/card_replay_tb.v " + rtl + "/*.v > " + log +
-                                " 2>&1";
+                                " " + repo_root() + "/tests/rtl/icarus/card_replay_tb.v " + rtl +
+                                "/*.v > " + log + " 2>&1";
     const auto t2 = std::chrono::steady_clock::now();
     ASSERT_EQ(std::system(compile.c_str()), 0) << compile << " (see " << log << ")";
     const double compile_s = wall_since(t2);

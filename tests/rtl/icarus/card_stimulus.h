@@ -1,7 +1,7 @@
 // A recorded pin stimulus of the card (rtl/card_top.v) and its replay into a
 // verilated card, for the Icarus Verilog reference (docs/arrangements.md
 // "Icarus reference"): the same file is replayed under vvp by
-// rtl/icarus/card_replay_tb.v and into the verilated model here, and the two
+// tests/rtl/icarus/card_replay_tb.v and into the verilated model here, and the two
 // output sequences must be equal, line by line.
 //
 // One clock event = the clocks of `edges` rise with the inputs unchanged
