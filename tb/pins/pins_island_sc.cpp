@@ -457,14 +457,7 @@ class pins_island : public platform::island {
         } else {
             trace_release(t, trace_pin::ed);
         }
-        trace_set(t, trace_pin::oe_state, root.card_top__DOT__u_capture__DOT__u_oe__DOT__state_q);
-        trace_set(t, trace_pin::sync_causes,
-                  root.card_top__DOT__u_capture__DOT__u_check__DOT__causes_q);
-        trace_set(t, trace_pin::verdict, root.card_top__DOT__p_verdict_causes);
-        trace_set(t, trace_pin::fifo_level_l, root.card_top__DOT__l_wr_level_unused);
-        trace_set(t, trace_pin::fifo_level_r, root.card_top__DOT__r_wr_level_unused);
-        trace_set(t, trace_pin::fifo_overflow_l, root.card_top__DOT__l_overflow);
-        trace_set(t, trace_pin::fifo_overflow_r, root.card_top__DOT__r_overflow);
+        trace_card_internals(t, root);
     }
 
     static constexpr uint8_t pclk_rise = 1, pclk_fall = 2, eclk_rise = 4;

@@ -18,6 +18,22 @@ namespace platform {
 
 namespace {
 
+// The card's EMIF inputs (CE2/CE3, strobes, EA, BE, ED) as the engine drives them.
+inline void drive_card_emif_inputs(Vcard& d, const emif::emif_pins& p) {
+    d.ce2_n = p.ce_n[2];
+    d.ce3_n = p.ce_n[3];
+    d.aoe_n = p.aoe_n;
+    d.are_n = p.are_n;
+    d.awe_n = p.awe_n;
+    d.ea = p.ea;
+    d.be_n = p.be_n;
+    d.ed_in = p.ed_out;
+}
+
+}  // namespace
+
+namespace {
+
 using simtime::ticks;
 
 // The card's outputs as the pin hash packs them (pin_hash.h).
@@ -129,14 +145,7 @@ void island::reset_card() {
     d.eclk = 0;
     d.rst_n = 1;
     const emif::emif_pins& p = m_engine.pins();
-    d.ce2_n = p.ce_n[2];
-    d.ce3_n = p.ce_n[3];
-    d.aoe_n = p.aoe_n;
-    d.are_n = p.are_n;
-    d.awe_n = p.awe_n;
-    d.ea = p.ea;
-    d.be_n = p.be_n;
-    d.ed_in = p.ed_out;
+    drive_card_emif_inputs(d, p);
     d.eval();
     d.rst_n = 0;  // a falling edge: the asynchronous resets act
     d.eval();
@@ -278,14 +287,7 @@ ticks island::advance(ticks limit, bool* stopped) {
                 ++m_stats.stops_bus;
             }
             const emif::emif_pins& p = engine.pins();
-            d.ce2_n = p.ce_n[2];
-            d.ce3_n = p.ce_n[3];
-            d.aoe_n = p.aoe_n;
-            d.are_n = p.are_n;
-            d.awe_n = p.awe_n;
-            d.ea = p.ea;
-            d.be_n = p.be_n;
-            d.ed_in = p.ed_out;
+            drive_card_emif_inputs(d, p);
             if (hash && p != m_pins_seen) {
                 m_pins_seen = p;
                 mix_pin(t, pin_group_emif_dsp, pack_dsp_pins(p));
@@ -600,14 +602,7 @@ void island::trace_card(ticks t) {
     } else {
         trace_release(t, trace_pin::ed);
     }
-    trace_set(t, trace_pin::oe_state, root.card_top__DOT__u_capture__DOT__u_oe__DOT__state_q);
-    trace_set(t, trace_pin::sync_causes,
-              root.card_top__DOT__u_capture__DOT__u_check__DOT__causes_q);
-    trace_set(t, trace_pin::verdict, root.card_top__DOT__p_verdict_causes);
-    trace_set(t, trace_pin::fifo_level_l, root.card_top__DOT__l_wr_level_unused);
-    trace_set(t, trace_pin::fifo_level_r, root.card_top__DOT__r_wr_level_unused);
-    trace_set(t, trace_pin::fifo_overflow_l, root.card_top__DOT__l_overflow);
-    trace_set(t, trace_pin::fifo_overflow_r, root.card_top__DOT__r_overflow);
+    trace_card_internals(t, root);
 }
 
 void island::trace_firmware() {

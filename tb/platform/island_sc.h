@@ -181,6 +181,20 @@ class island : public sc_core::sc_module {
     // ---- pin trace (pin_trace.h); only called with a sink attached ----
     void trace_set(simtime::ticks t, trace_pin pin, uint64_t value);
     void trace_release(simtime::ticks t, trace_pin pin);
+    // The card's internals every arrangement traces (sync check, verdict,
+    // FIFO levels and overflow flags), read from the verilated model's root
+    // (--cc or --sc: the same RTL names).
+    template <class card_root>
+    void trace_card_internals(simtime::ticks t, const card_root& root) {
+        trace_set(t, trace_pin::oe_state, root.card_top__DOT__u_capture__DOT__u_oe__DOT__state_q);
+        trace_set(t, trace_pin::sync_causes,
+                  root.card_top__DOT__u_capture__DOT__u_check__DOT__causes_q);
+        trace_set(t, trace_pin::verdict, root.card_top__DOT__p_verdict_causes);
+        trace_set(t, trace_pin::fifo_level_l, root.card_top__DOT__l_wr_level_unused);
+        trace_set(t, trace_pin::fifo_level_r, root.card_top__DOT__r_wr_level_unused);
+        trace_set(t, trace_pin::fifo_overflow_l, root.card_top__DOT__l_overflow);
+        trace_set(t, trace_pin::fifo_overflow_r, root.card_top__DOT__r_overflow);
+    }
     void trace_open();  // sends the snapshot at trace_window.from
     // A change at a later tick than the edge being stepped (a clock's fall,
     // a sensor's word at its falling edge): held until the loop passes it.
