@@ -40,10 +40,6 @@ const char* pipeline_mode_name(pipeline_mode m) {
     return m == pipeline_mode::sequential ? "sequential" : "overlapped";
 }
 
-const char* firmware_weakening_name(firmware_weakening w) {
-    return w == firmware_weakening::ignore_verdict ? "ignore-verdict" : "none";
-}
-
 uint32_t control_program::buffer_stride() const {
     const uint32_t bytes = header_size() + 2 * frame_bytes();
     return (bytes + 4095u) & ~4095u;
@@ -135,8 +131,7 @@ void control_program::configure_card() {
                                           card_regs::irq_status_overflow_mask);
     // Weakened (docs/fault-contract.md): only a dark pixel reading 255 still
     // raises L_DARK / R_DARK.
-    const bool weak = m_config.weaken == firmware_weakening::ignore_verdict;
-    card_write(card_regs::dark_threshold, weak ? 0xFFu : c.dark_threshold);
+    card_write(card_regs::dark_threshold, c.dark_threshold);
     card_write(card_regs::h_start, c.h_start);
     card_write(card_regs::dark_cols_left, c.dark_cols_left);
     card_write(card_regs::border_cols_left, c.border_cols_left);
@@ -406,7 +401,6 @@ void control_program::handle_sync_error() {
     const uint32_t position = card_read(card_regs::mismatch_pos);
     const uint32_t status = card_read(card_regs::status);
     card_write(card_regs::irq_status, card_regs::irq_status_sync_error_mask);
-    if (m_config.weaken == firmware_weakening::ignore_verdict) return;
     ++m_stats.sync_errors;
     report(firmware_event::sync_error, 0, verdict, position);
     if ((status & card_regs::status_hard_error_mask) != 0) {
@@ -498,8 +492,7 @@ void control_program::process_buffer(int buffer) {
     m_stats.last_pair = pair;
     report(firmware_event::pair_captured, pair, verdict, static_cast<uint32_t>(buffer));
 
-    const bool weak = m_config.weaken == firmware_weakening::ignore_verdict;
-    if (!weak && (verdict & verdict_causes_mask) != 0) {
+    if ((verdict & verdict_causes_mask) != 0) {
         ++m_stats.pairs_rejected;
         report(firmware_event::pair_rejected, pair, verdict);
     } else {

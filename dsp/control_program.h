@@ -82,16 +82,6 @@ const char* pipeline_mode_name(pipeline_mode m);
 // Why the firmware re-armed the card (event card_rearmed, value).
 enum class rearm_cause : uint8_t { hard_error = 1, sync_error = 2, overflow = 3, watchdog = 4 };
 
-// A deliberately WEAKENED firmware, only to prove that the fault campaign can
-// fail (docs/fault-contract.md). ignore_verdict: the firmware uses every
-// captured pair whatever the VERDICT copied with it, writes DARK_THRESHOLD
-// 255 (the card's dark-pixel cause can no longer fire) and ignores the card's
-// SYNC_ERROR interrupt (no report, no re-arm, never gives up). The card still
-// discards pairs whose window / VSYNC check fails: that is RTL, out of the
-// firmware's reach.
-enum class firmware_weakening : uint8_t { none = 0, ignore_verdict = 1 };
-const char* firmware_weakening_name(firmware_weakening w);
-
 // The card registers the firmware writes at boot (docs/card-registers.md).
 // Defaults: the card's reset values, i.e. the default sensor profile
 // (DESIGN.md): 640 x 480 active, 16 dark columns, 8 dark rows, 800 x 525.
@@ -137,7 +127,6 @@ struct control_program_config {
     // returns. Bound: (hard_error_rearms + 1) x (RETRY_LIMIT + 1) failed
     // checks after the fault, or as many watchdog periods.
     uint32_t hard_error_rearms = 1;
-    firmware_weakening weaken = firmware_weakening::none;
 };
 
 struct control_stats {

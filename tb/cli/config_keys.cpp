@@ -204,11 +204,15 @@ std::vector<config_key> make_table() {
     t.push_back(integer_key("firmware.detect_threshold", &run_setup::detect_threshold, 1, 254,
                             "three-frame differencing: Binary(a) = a > threshold, gray levels"));
     t.push_back(choice_key("firmware.frame_memory", &run_setup::frame_memory, {"l2", "sdram"},
-                           "where the firmware's gray frames and motion mask live (l2: the memory plan of docs/firmware.md)"));
+                           "where the firmware's gray frames and motion mask live (l2: the memory "
+                           "plan of docs/firmware.md)"));
     t.push_back(bool_key("firmware.sdram_traffic_on_bus", &run_setup::sdram_traffic_on_bus,
                          "the firmware's SDRAM traffic goes out on EMIFA (competes with capture)"));
     t.push_back(integer_key("firmware.watchdog_ms", &run_setup::watchdog_ms, 0, 10000,
                             "period of the firmware's card watchdog, ms (0: off)"));
+    t.push_back(integer_key("firmware.card_start_timeout", &run_setup::card_start_timeout, 1, 65535,
+                            "START_TIMEOUT the firmware programs: lines the card waits for "
+                            "the first VSYNC after OE rises"));
 
     // ---- run --------------------------------------------------------------------------------
     t.push_back(integer_key("run.frames", &run_setup::frames, 1, 100000,

@@ -64,6 +64,7 @@ platform::platform_config platform_config_of(const run_setup& s) {
     c.frame_memory = s.frame_memory == "l2" ? dsp::cost::memory::l2 : dsp::cost::memory::sdram;
     c.sdram_traffic_on_bus = s.sdram_traffic_on_bus;
     c.watchdog_ms = static_cast<uint32_t>(s.watchdog_ms);
+    c.card_start_timeout = static_cast<uint32_t>(s.card_start_timeout);
     c.frames = s.frames;
     if (s.quantum_ns > 0) c.quantum = s.quantum_ns * simtime::ticks_per_ns;
     c.hash_pins = s.hash_pins;

@@ -51,6 +51,7 @@ struct run_setup {
     std::string frame_memory = "l2";
     bool sdram_traffic_on_bus = true;
     int watchdog_ms = 500;
+    int card_start_timeout = 1050;  // the card's reset value, 2 frames (docs/card-registers.md)
 
     int frames = 12;
     int64_t seed = 3;

@@ -25,10 +25,18 @@ using nlohmann::json;
 namespace fs = std::filesystem;
 
 struct plan_entry {
-    const char* fault;  // nullptr: clean
+    const char* fault;  // nullptr: clean; several specs space-separated
     int frames;
     int retry_limit;
+    const char* settings = nullptr;  // space-separated KEY=VALUE for --set
 };
+
+std::vector<std::string> words(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string w; in >> w;) out.push_back(w);
+    return out;
+}
 
 // Short runs (CI): one spec per kind and regime. Faults that must end in a
 // hard error run with RETRY_LIMIT 2 so the firmware's give-up bound,
@@ -41,7 +49,7 @@ const plan_entry smoke_faults[] = {
     {"extra-frame:sensor=L@frame=4", 8, 8},
     {"drift:sensor=R,ppm=1", 8, 8},
     {"drift:sensor=R,ppm=200", 10, 2},
-    {"glitch:sensor=L,signal=href@ms=130.2", 8, 8},
+    {"glitch:sensor=L,signal=href@ms=130.2", 10, 8},
     {"glitch:sensor=R,signal=vsync@ms=100", 8, 8},
     {"dark-leak:sensor=R,level=80@frame=2", 10, 2},
     {"dark-leak:sensor=L,level=8", 8, 8},
@@ -49,48 +57,55 @@ const plan_entry smoke_faults[] = {
     {"stuck-bit:sensor=R,bit=0", 8, 8},
     {"dead:sensor=R", 10, 2},
     {"oe-stuck:sensor=L", 10, 2},
+    // Both sensors silent and a START_TIMEOUT longer than the run: the card
+    // never flags anything, only the firmware's own watchdog can give up.
+    {"dead:sensor=L dead:sensor=R", 10, 2,
+     "firmware.watchdog_ms=50 firmware.card_start_timeout=65535"},
     {"emif-wait:cycles=40@frame=3", 8, 8},
-    {"cpu-slow:factor=3@frame=4", 8, 8},
+    {"cpu-slow:factor=20@frame=4", 14, 8},
 };
 
 const plan_entry full_faults[] = {
-    {"skew:sensor=R,lines=1@frame=4", 10, 8},
-    {"skew:sensor=L,lines=3@frame=5", 10, 8},
-    {"skew:sensor=R,lines=40@frame=3", 10, 8},
-    {"skew:sensor=L,pixels=1@frame=2", 10, 8},
-    {"skew:sensor=R,pixels=7@frame=6", 10, 8},
-    {"drop-line:sensor=L,line=0@frame=4", 10, 8},
-    {"drop-line:sensor=R,line=100@frame=7", 10, 8},
-    {"drop-line:sensor=L,line=500@frame=3", 10, 8},
-    {"drop-frame:sensor=R@frame=4", 10, 8},
-    {"drop-frame:sensor=L@frame=6", 10, 8},
-    {"extra-frame:sensor=L@frame=4", 10, 8},
-    {"drift:sensor=R,ppm=1", 10, 8},
-    {"drift:sensor=L,ppm=-1", 10, 8},
+    {"skew:sensor=R,lines=1@frame=4", 14, 8},
+    {"skew:sensor=L,lines=3@frame=5", 14, 8},
+    {"skew:sensor=R,lines=40@frame=3", 14, 8},
+    {"skew:sensor=L,pixels=1@frame=2", 14, 8},
+    {"skew:sensor=R,pixels=7@frame=6", 14, 8},
+    {"drop-line:sensor=L,line=0@frame=4", 14, 8},
+    {"drop-line:sensor=R,line=100@frame=7", 14, 8},
+    {"drop-line:sensor=L,line=500@frame=3", 14, 8},
+    {"drop-frame:sensor=R@frame=4", 14, 8},
+    {"drop-frame:sensor=L@frame=6", 14, 8},
+    {"extra-frame:sensor=L@frame=4", 14, 8},
+    {"drift:sensor=R,ppm=1", 14, 8},
+    {"drift:sensor=L,ppm=-1", 14, 8},
     {"drift:sensor=R,ppm=200", 10, 2},
     {"drift:sensor=L,ppm=-50", 10, 2},
-    {"glitch:sensor=L,signal=href@ms=130.2", 10, 8},
-    {"glitch:sensor=R,signal=href,width=50@ms=100", 10, 8},
-    {"glitch:sensor=R,signal=vsync@ms=100", 10, 8},
-    {"glitch:sensor=L,signal=vsync,width=50@ms=150.7", 10, 8},
-    {"dark-leak:sensor=L,level=8", 10, 8},
+    {"glitch:sensor=L,signal=href@ms=130.2", 14, 8},
+    {"glitch:sensor=R,signal=href,width=50@ms=100", 14, 8},
+    {"glitch:sensor=R,signal=vsync@ms=100", 14, 8},
+    {"glitch:sensor=L,signal=vsync,width=50@ms=150.7", 14, 8},
+    {"dark-leak:sensor=L,level=8", 14, 8},
     {"dark-leak:sensor=R,level=40@frame=2", 10, 2},
     {"dark-leak:sensor=R,level=80@frame=2", 10, 2},
-    {"stuck-bit:sensor=L,bit=0", 10, 8},
-    {"stuck-bit:sensor=R,bit=3", 10, 8},
-    {"stuck-bit:sensor=L,bit=4", 10, 8},
+    {"stuck-bit:sensor=L,bit=0", 14, 8},
+    {"stuck-bit:sensor=R,bit=3", 14, 8},
+    {"stuck-bit:sensor=L,bit=4", 14, 8},
     {"stuck-bit:sensor=R,bit=5", 10, 2},
     {"stuck-bit:sensor=L,bit=7", 10, 2},
-    {"stuck-bit:sensor=R,bit=7,value=0", 10, 8},
+    {"stuck-bit:sensor=R,bit=7,value=0", 14, 8},
     {"dead:sensor=L", 10, 2},
     {"dead:sensor=R", 10, 2},
+    {"dead:sensor=L dead:sensor=R", 10, 2,
+     "firmware.watchdog_ms=50 firmware.card_start_timeout=65535"},
     {"oe-stuck:sensor=L", 10, 2},
     {"oe-stuck:sensor=R", 10, 2},
-    {"emif-wait:cycles=2@frame=3", 10, 8},
-    {"emif-wait:cycles=40@frame=3", 10, 8},
-    {"emif-wait:cycles=40,ce=2@frame=3", 10, 8},
-    {"cpu-slow:factor=1.5@frame=4", 10, 8},
-    {"cpu-slow:factor=3@frame=4", 10, 8},
+    {"emif-wait:cycles=2@frame=3", 14, 8},
+    {"emif-wait:cycles=40@frame=3", 14, 8},
+    {"emif-wait:cycles=40,ce=2@frame=3", 14, 8},
+    {"cpu-slow:factor=1.5@frame=4", 14, 8},
+    {"cpu-slow:factor=3@frame=4", 14, 8},
+    {"cpu-slow:factor=20@frame=4", 14, 8},
 };
 
 // Full campaign: 84 clean runs of 12 frames = 1008 clean frames.
@@ -130,13 +145,13 @@ pid_t spawn_run(const campaign_options& o, const campaign_run& r, const std::str
                                      std::to_string(r.retry_limit),
                                      "--out",
                                      dir + "/out"};
-    if (!r.fault.empty()) {
+    for (const std::string& spec : words(r.fault)) {
         args.push_back("--fault");
-        args.push_back(r.fault);
+        args.push_back(spec);
     }
-    if (o.weaken != "none") {
-        args.push_back("--weaken");
-        args.push_back(o.weaken);
+    for (const std::string& setting : r.settings) {
+        args.push_back("--set");
+        args.push_back(setting);
     }
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
@@ -205,6 +220,8 @@ json row_json(const campaign_row& r) {
         const fault_observation& f = run.faults[0];
         j["onset_ms"] = f.in_effect ? json(f.onset_ms) : json(nullptr);
         j["detected_by"] = f.detected_by;
+        j["reported_by"] = f.reported_by;
+        j["verdict_causes"] = f.causes;
         j["frames_to_detect"] = f.detected ? json(f.frames_to_detect) : json(nullptr);
         j["frames_to_recover"] = f.recovered ? json(f.frames_to_recover) : json(nullptr);
         j["failed_starts"] = f.failed_starts;
@@ -218,7 +235,15 @@ json row_json(const campaign_row& r) {
     j["misses"] = run.misses;
     j["false_alarms"] = run.false_alarms;
     j["sync_errors"] = run.card_sync_errors;
+    j["pairs_forwarded"] = run.pairs_forwarded;
+    j["pairs_in_step"] = run.pairs_in_step;
     j["pairs_processed"] = run.pairs_processed;
+    j["pairs_dropped"] = run.pairs_dropped;
+    j["pairs_unaccounted"] = run.pairs_unaccounted;
+    j["unreported_sync_errors"] = run.unreported_sync_errors;
+    j["unreported_overflows"] = run.unreported_overflows;
+    j["identity_checked"] = run.identity_checked;
+    j["identity_mismatches"] = run.identity_mismatches;
     j["hard_error_ms"] = run.hard_error ? json(run.hard_error_ms) : json(nullptr);
     json violations = json::array();
     for (const verdict& x : r.result.verdicts)
@@ -236,6 +261,8 @@ const char* const csv_columns[] = {"index",
                                    "expected",
                                    "actual",
                                    "detected_by",
+                                   "reported_by",
+                                   "verdict_causes",
                                    "frames_to_detect",
                                    "frames_to_recover",
                                    "failed_starts",
@@ -245,7 +272,15 @@ const char* const csv_columns[] = {"index",
                                    "misses",
                                    "false_alarms",
                                    "sync_errors",
+                                   "pairs_forwarded",
+                                   "pairs_in_step",
                                    "pairs_processed",
+                                   "pairs_dropped",
+                                   "pairs_unaccounted",
+                                   "unreported_sync_errors",
+                                   "unreported_overflows",
+                                   "identity_checked",
+                                   "identity_mismatches",
                                    "hard_error_ms",
                                    "contract_ok",
                                    "wall_s",
@@ -280,6 +315,7 @@ std::vector<campaign_run> campaign_plan(const std::string& name, int seeds) {
         r.seed = seed;
         r.frames = e.frames;
         r.retry_limit = e.retry_limit;
+        if (e.settings) r.settings = words(e.settings);
         runs.push_back(r);
     };
     if (smoke) {
@@ -390,7 +426,6 @@ std::vector<campaign_row> run_campaign(const campaign_options& given, std::FILE*
                       {"shard", std::to_string(o.shard) + "/" + std::to_string(o.shards)},
                       {"seeds", o.seeds},
                       {"jobs", o.jobs},
-                      {"weaken", o.weaken},
                       {"runs", rows.size()},
                       {"contract_broken", broken},
                       {"clean_frames", clean_frames},
@@ -415,9 +450,10 @@ std::string campaign_table(const std::vector<campaign_row>& rows, const campaign
     std::ostringstream out;
     char line[512];
     std::snprintf(line, sizeof line,
-                  "%-4s %-46s %5s %3s  %-22s %-11s %-12s %4s %4s %4s %4s %4s %4s %s\n", "run",
-                  "fault", "seed", "fr", "expected", "actual", "detected_by", "det", "rec", "disc",
-                  "unsy", "miss", "fals", "contract");
+                  "%-4s %-46s %5s %3s  %-22s %-13s %-12s %4s %4s %4s %4s %4s %4s %4s %4s %4s "
+                  "%s\n",
+                  "run", "fault", "seed", "fr", "expected", "actual", "detected_by", "det", "rec",
+                  "disc", "fwd", "proc", "drop", "unsy", "miss", "fals", "contract");
     out << line;
     int broken = 0, clean_frames = 0, false_alarms = 0, unsynced = 0;
     for (const campaign_row& r : rows) {
@@ -438,13 +474,14 @@ std::string campaign_table(const std::vector<campaign_row>& rows, const campaign
         };
         std::snprintf(
             line, sizeof line,
-            "%-4d %-46s %5llu %3d  %-22s %-11s %-12s %4s %4s %4d %4d %4d %4d %s\n", r.run.index,
-            fault.c_str(), static_cast<unsigned long long>(r.run.seed), r.run.frames,
+            "%-4d %-46s %5llu %3d  %-22s %-13s %-12s %4s %4s %4d %4d %4d %4d %4d %4d %4d %s\n",
+            r.run.index, fault.c_str(), static_cast<unsigned long long>(r.run.seed), r.run.frames,
             v.expected_text.c_str(), outcome_name(v.actual), f ? f->detected_by.c_str() : "-",
             opt(f && f->detected, f ? f->frames_to_detect : 0).c_str(),
             opt(f && f->recovered, f ? f->frames_to_recover : 0).c_str(),
-            f ? f->pairs_discarded : run.card_sync_errors + run.card_overflows,
-            run.unsynced_pairs_used, run.misses, run.false_alarms, r.ok() ? "ok" : "BROKEN");
+            f ? f->pairs_discarded : run.card_sync_errors + run.card_overflows, run.pairs_forwarded,
+            run.pairs_processed, run.pairs_dropped, run.unsynced_pairs_used, run.misses,
+            run.false_alarms, r.ok() ? "ok" : "BROKEN");
         out << line;
         for (const verdict& x : r.result.verdicts)
             for (const std::string& why : x.violations) out << "       violation: " << why << "\n";
@@ -456,15 +493,17 @@ std::string campaign_table(const std::vector<campaign_row>& rows, const campaign
         }
     }
     std::snprintf(line, sizeof line,
-                  "\ncampaign %s shard %d/%d weaken %s: %zu runs, %d break the contract; clean "
+                  "\ncampaign %s shard %d/%d: %zu runs, %d break the contract; clean "
                   "frames %d with %d false alarms; unsynced pairs used (all runs) %d; wall %.1f s "
                   "with %d jobs\n",
-                  o.name.c_str(), o.shard, o.shards, o.weaken.c_str(), rows.size(), broken,
-                  clean_frames, false_alarms, unsynced, wall_s, o.jobs);
+                  o.name.c_str(), o.shard, o.shards, rows.size(), broken, clean_frames,
+                  false_alarms, unsynced, wall_s, o.jobs);
     out << line;
     out << "columns: det = frames from onset to detection, rec = frames from detection to the "
            "first in-step pair forwarded, disc = pairs discarded (SYNC_ERROR + OVERFLOW) from the "
-           "onset, unsy = unsynced pairs used, miss = out-of-step pairs forwarded, fals = false "
+           "onset, fwd / proc / drop = pairs forwarded by the card / processed / dropped by the "
+           "firmware's overrun policy, unsy = unsynced pairs used, miss = out-of-step pairs "
+           "forwarded, fals = false "
            "alarms\n";
     return out.str();
 }

@@ -16,10 +16,11 @@ namespace faults {
 
 struct campaign_run {
     int index = 0;      // position in the whole campaign (before sharding)
-    std::string fault;  // spec, empty for a clean run
+    std::string fault;  // spec(s), space-separated; empty for a clean run
     uint64_t seed = 3;
     int frames = 8;
-    int retry_limit = 8;  // --card-retry-limit
+    int retry_limit = 8;                // --card-retry-limit
+    std::vector<std::string> settings;  // --set KEY=VALUE each (docs/config.md)
 };
 
 // The runs of a named campaign ("smoke" or "full"; else empty). `seeds`:
@@ -34,11 +35,10 @@ struct campaign_options {
     int seeds = 0;
     int jobs = 2;
     int shard = 1, shards = 1;
-    std::string out_dir;          // default: campaign-<name>
-    std::string binary;           // the stereosim to spawn (default: this program)
-    std::string weaken = "none";  // passed to every run (--weaken)
-    bool keep_runs = false;       // keep each run's folder (report.json, frames.csv)
-    std::string match;            // only runs whose spec contains this ("clean": clean runs)
+    std::string out_dir;     // default: campaign-<name>
+    std::string binary;      // the stereosim to spawn (default: this program)
+    bool keep_runs = false;  // keep each run's folder (report.json, frames.csv)
+    std::string match;       // only runs whose spec contains this ("clean": clean runs)
 };
 
 struct campaign_row {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <functional>
 
 #include "dsp/card_regs.h"
 
@@ -9,8 +11,8 @@ namespace faults {
 
 const char* outcome_name(outcome o) {
     switch (o) {
-        case outcome::none:
-            return "none";
+        case outcome::not_in_effect:
+            return "not_in_effect";
         case outcome::harmless:
             return "harmless";
         case outcome::resync:
@@ -86,9 +88,8 @@ expectation dark_rule(int low, int high, const contract_params& p, const std::st
 expectation expected_for(const fault_observation& f, const fault_spec& s, const contract_params& p,
                          const run_observation& /*run*/) {
     expectation e;
-    if (!f.in_effect) {
-        e.allowed = {outcome::none};
-        e.why = "did not act during the run";
+    if (!f.in_effect) {  // no outcome is allowed: the run proves nothing of the fault
+        e.why = "never acted during the run (trigger after the end?): it proves nothing";
         return e;
     }
     const int sigma6 = static_cast<int>(std::ceil(6 * p.dark_sigma));
@@ -97,7 +98,7 @@ expectation expected_for(const fault_observation& f, const fault_spec& s, const 
         case fault_type::drop_line:
         case fault_type::drop_frame:
         case fault_type::glitch:
-            e.allowed = {outcome::resync, outcome::pending};
+            e.allowed = {outcome::resync};
             e.max_frames_to_detect = 1;
             e.why =
                 "timing fault of one frame: the verdict of the common frame it hits flags it "
@@ -119,12 +120,12 @@ expectation expected_for(const fault_observation& f, const fault_spec& s, const 
                     "slips >= 1 clock inside every frame's active data: every restart fails, "
                     "the firmware gives up";
             } else if (slip <= 0.5) {
-                e.allowed = {outcome::resync, outcome::pending, outcome::harmless};
+                e.allowed = {outcome::resync, outcome::harmless};
                 e.why =
                     "slips < 1 clock per frame: detected again at each slip, each followed "
                     "by a restart (harmless if no slip falls inside the run)";
             } else {
-                e.allowed = {outcome::resync, outcome::pending, outcome::hard_error};
+                e.allowed = {outcome::resync, outcome::hard_error};
                 e.why = "slips about one clock per frame: restarts may or may not hold";
             }
             break;
@@ -149,21 +150,27 @@ expectation expected_for(const fault_observation& f, const fault_spec& s, const 
         }
         case fault_type::dead:
         case fault_type::oe_stuck:
-            if (f.oe_starts_after > 0 ||
-                (s.type == fault_type::dead && s.when.kind == trigger_spec::by::start)) {
+            // What the truth forces, not what the card or firmware chose: a
+            // sensor dead from the start, or a start the onset fell in that
+            // was out of step (a restart is due), can never be in step again.
+            if ((s.type == fault_type::dead && s.when.kind == trigger_spec::by::start) ||
+                f.onset_start_out_of_step) {
                 e.allowed = {outcome::hard_error};
                 e.why =
-                    "a sensor that does not follow OE can never be restarted in step: "
-                    "retries exhausted, the firmware gives up";
+                    "a sensor that does not follow OE, with a restart due: never in step again, "
+                    "retries exhausted, the firmware gives up within the bound";
             } else {
                 e.allowed = {outcome::harmless};
-                e.why = "no OE restart after the onset: nothing to notice";
+                e.why = "the onset's start was in step and no restart is due: nothing to notice";
             }
             break;
         case fault_type::emif_wait: {
             const double pair_ms =
                 p.words_per_pair * (p.eclk_per_word + s.cycles) * p.eclk_ns * 1e-6;
-            if (s.ce == 3 && pair_ms > p.period_ms) {
+            if (s.ce != 3) {
+                e.allowed = {outcome::harmless};
+                e.why = "wait states on CE2 (registers only): a few slower reads per period";
+            } else if (pair_ms > p.period_ms) {
                 e.allowed = {outcome::overflow};
                 e.max_frames_to_detect = 3;
                 e.why =
@@ -178,10 +185,20 @@ expectation expected_for(const fault_observation& f, const fault_spec& s, const 
             break;
         }
         case fault_type::cpu_slow:
-            e.allowed = {outcome::overrun, outcome::harmless};
-            e.why =
-                "not a sync fault: a slower CPU drops pairs by the overrun policy (or still "
-                "fits)";
+            // The workload's cost, not the firmware's choice to drop: at least
+            // half of the cheapest pair before the onset is CPU time (the raw
+            // read is the rest), so slowed it alone passes the period; or every
+            // pair timed after the onset (>= 2) fitted it.
+            if (f.pair_ms_min > 0 && s.factor * f.pair_ms_min / 2 > 1.2 * p.period_ms) {
+                e.allowed = {outcome::overrun};
+                e.why = "every pair slowed past the period: the overrun policy drops pairs";
+            } else if (f.slowed_pairs >= 2 && f.slowed_ms_max < 0.9 * p.period_ms) {
+                e.allowed = {outcome::harmless};
+                e.why = "every slowed pair still fitted the period: nothing to drop";
+            } else {
+                e.allowed = {outcome::overrun, outcome::harmless};
+                e.why = "slowed pairs straddle the period: drops or not";
+            }
             break;
     }
     return e;
@@ -189,6 +206,13 @@ expectation expected_for(const fault_observation& f, const fault_spec& s, const 
 
 namespace {
 
+std::string numbers(const std::vector<uint32_t>& pairs) {
+    std::string text;
+    for (uint32_t n : pairs) text += (text.empty() ? "" : ",") + std::to_string(n);
+    return text;
+}
+
+// The rules every run keeps, faulted or clean.
 void invariants(const run_observation& run, verdict* v, bool allow_stale) {
     const auto violate = [&](const std::string& why) {
         v->ok = false;
@@ -200,8 +224,29 @@ void invariants(const run_observation& run, verdict* v, bool allow_stale) {
         violate(std::to_string(run.used_before_verdict) + " pair(s) used before their verdict");
     if (run.false_alarms > 0)
         violate(std::to_string(run.false_alarms) +
-                " false alarm(s): SYNC_ERROR for an in-step "
-                "start with no fault in effect");
+                " false alarm(s): SYNC_ERROR for an in-step start that no fault in effect "
+                "explains");
+    if (run.pairs_unaccounted > 0)
+        violate(std::to_string(run.pairs_unaccounted) +
+                " in-step pair(s) forwarded but neither processed nor reported dropped (pairs " +
+                numbers(run.unaccounted_pairs) + ")");
+    if (run.unreported_sync_errors > 0)
+        violate(std::to_string(run.unreported_sync_errors) +
+                " card SYNC_ERROR(s) the firmware never reported");
+    if (run.unreported_overflows > 0)
+        violate(std::to_string(run.unreported_overflows) +
+                " card OVERFLOW(s) the firmware never reported");
+    if (run.identity_mismatches > 0)
+        violate(std::to_string(run.identity_mismatches) +
+                " pair(s) processed with frames that are not the pair's own (pairs " +
+                numbers(run.mismatched_pairs) + ")");
+}
+
+// The VERDICT cause bits that blame one sensor (docs/card-registers.md).
+uint32_t sensor_causes(int camera) {
+    using namespace dsp::card_regs;
+    return camera == 0 ? verdict_l_window_mask | verdict_l_dark_mask | verdict_l_vsync_mask
+                       : verdict_r_window_mask | verdict_r_dark_mask | verdict_r_vsync_mask;
 }
 
 }  // namespace
@@ -220,16 +265,77 @@ verdict check_clean(const run_observation& run) {
         v.ok = false;
         v.violations.push_back("hard_error on a clean run");
     }
+    // A run of a few periods with nothing processed is a dead system, not a clean one.
+    if (run.frames >= 4 && run.pairs_processed == 0) {
+        v.ok = false;
+        v.violations.push_back("no pair processed in a clean run of " + std::to_string(run.frames) +
+                               " frames");
+    }
     return v;
 }
+
+namespace {
+
+// What the observed figures say happened to the fault.
+outcome classify(const fault_observation& f, const fault_spec& s, const contract_params& p,
+                 const run_observation& run, const expectation& e) {
+    if (!f.in_effect) return outcome::not_in_effect;
+    if (run.hard_error) return outcome::hard_error;
+    if (s.type == fault_type::emif_wait) return f.detected ? outcome::overflow : outcome::harmless;
+    if (s.type == fault_type::cpu_slow) return f.detected ? outcome::overrun : outcome::harmless;
+    if (f.unsynced_pairs_used > 0)
+        return f.unsynced_pairs_used == f.stale_pairs_used ? outcome::stale_pair : outcome::missed;
+    if (!f.detected) return outcome::harmless;
+    if (f.recovered) return outcome::resync;
+    // Due: 2 periods per failed start after the detection, + 2; a hard
+    // error by the give-up bound.
+    const bool hard_expected =
+        std::find(e.allowed.begin(), e.allowed.end(), outcome::hard_error) != e.allowed.end();
+    const double due_ms = hard_expected ? f.onset_ms + hard_error_bound_periods(p) * p.period_ms
+                                        : f.detect_ms + (2.0 + 2.0 * f.failed_starts) * p.period_ms;
+    return run.end_ms < due_ms ? outcome::pending : outcome::no_recovery;
+}
+
+// Rules 2 and 9: the firmware reports what the card flagged, in time, and
+// the card blames the faulted sensor.
+void check_reports(const fault_observation& f, const fault_spec& s, const contract_params& p,
+                   const std::function<void(const std::string&)>& violate) {
+    if (!f.in_effect || !f.detected) return;
+    const double bound_ms = hard_error_bound_periods(p) * p.period_ms;
+    if (!f.reported)
+        violate("the card flagged the fault (" + f.detected_by + " at " +
+                std::to_string(f.detect_ms) + " ms) but the firmware never reported it");
+    else if (f.report_ms - f.onset_ms > bound_ms)
+        violate("the firmware reported the fault " + std::to_string(f.report_ms - f.onset_ms) +
+                " ms after the onset (bound " + std::to_string(hard_error_bound_periods(p)) +
+                " periods)");
+    if (is_sensor_fault(s.type) && f.detected_by == "sync_error") {
+        // A drifting clock moves the streams against each other: the card
+        // flags whichever is late, so either stream's timing causes name it.
+        using namespace dsp::card_regs;
+        const uint32_t timing = verdict_l_window_mask | verdict_r_window_mask |
+                                verdict_l_vsync_mask | verdict_r_vsync_mask;
+        uint32_t blame = s.type == fault_type::drift ? timing : sensor_causes(s.camera);
+        if (s.type == fault_type::dead) blame |= verdict_start_timeout_mask;
+        if ((f.causes & blame) == 0) {
+            char causes[16];
+            std::snprintf(causes, sizeof causes, "0x%02x", f.causes);
+            violate(std::string("the sync error's causes ") + causes +
+                    " do not name the faulted sensor " + (s.camera == 0 ? "L" : "R"));
+        }
+    }
+}
+
+}  // namespace
 
 verdict check(const fault_observation& f, const fault_spec& s, const contract_params& p,
               const run_observation& run) {
     verdict v;
     const expectation e = expected_for(f, s, p, run);
-    v.expected = e.allowed.front();
+    v.expected = e.allowed.empty() ? outcome::not_in_effect : e.allowed.front();
     for (outcome o : e.allowed)
         v.expected_text += (v.expected_text.empty() ? "" : "|") + std::string(outcome_name(o));
+    if (e.allowed.empty()) v.expected_text = "in effect";
     const auto violate = [&](const std::string& why) {
         v.ok = false;
         v.violations.push_back(why);
@@ -240,44 +346,12 @@ verdict check(const fault_observation& f, const fault_spec& s, const contract_pa
         violate("extra-frame: " + std::to_string(f.unsynced_pairs_used) +
                 " out-of-step pair(s) used, at most the one stale pair allowed");
 
-    // Classify.
     const double period = p.period_ms;
     const int bound = hard_error_bound_periods(p);
-    if (!f.in_effect) {
-        v.actual = outcome::none;
-    } else if (run.hard_error) {
-        v.actual = outcome::hard_error;
-    } else if (s.type == fault_type::emif_wait) {
-        v.actual = f.detected ? outcome::overflow : outcome::harmless;
-    } else if (s.type == fault_type::cpu_slow) {
-        v.actual = f.detected ? outcome::overrun : outcome::harmless;
-    } else if (f.unsynced_pairs_used > 0) {
-        v.actual =
-            f.unsynced_pairs_used == f.stale_pairs_used ? outcome::stale_pair : outcome::missed;
-    } else if (!f.detected) {
-        v.actual = outcome::harmless;
-    } else if (f.recovered) {
-        v.actual = outcome::resync;
-    } else {
-        // Due: 2 periods per failed start after the detection, + 2.
-        const double due_ms = f.detect_ms + (2.0 + 2.0 * f.failed_starts) * period;
-        const bool hard_expected =
-            std::find(e.allowed.begin(), e.allowed.end(), outcome::hard_error) != e.allowed.end();
-        const double hard_due_ms = f.onset_ms + bound * period;
-        if (hard_expected)
-            v.actual = run.end_ms < hard_due_ms ? outcome::pending : outcome::no_recovery;
-        else
-            v.actual = run.end_ms < due_ms ? outcome::pending : outcome::no_recovery;
-    }
-    // A hard error expected but still pending (the run ended before the bound).
-    bool allowed = std::find(e.allowed.begin(), e.allowed.end(), v.actual) != e.allowed.end();
-    if (!allowed && v.actual == outcome::pending &&
-        std::find(e.allowed.begin(), e.allowed.end(), outcome::hard_error) != e.allowed.end())
-        allowed = true;
-    if (!allowed)
+    v.actual = classify(f, s, p, run, e);
+    if (std::find(e.allowed.begin(), e.allowed.end(), v.actual) == e.allowed.end())
         violate(std::string("outcome ") + outcome_name(v.actual) + ", contract " + v.expected_text +
                 " (" + e.why + ")");
-
     if (f.in_effect && e.max_frames_to_detect >= 0 && f.detected &&
         f.frames_to_detect > e.max_frames_to_detect + f.masked_checks)
         violate("detected " + std::to_string(f.frames_to_detect) + " frames after the onset (max " +
@@ -287,13 +361,18 @@ verdict check(const fault_observation& f, const fault_spec& s, const contract_pa
         violate("recovered after " + std::to_string(f.frames_to_recover) + " frames with " +
                 std::to_string(f.failed_starts) +
                 " failed restart(s) (max 2 + 2 per failed start)");
+    // Recovered means the firmware uses pairs again, within the recovery bound.
+    if (v.actual == outcome::resync && run.end_ms > f.recover_ms + 2 * period &&
+        (f.resumed_ms < 0 || f.resumed_ms - f.recover_ms > 2 * period))
+        violate("the card recovered at " + std::to_string(f.recover_ms) +
+                " ms but the firmware processed no pair within 2 periods");
     if (v.actual == outcome::hard_error && f.in_effect &&
         run.hard_error_ms - f.onset_ms > bound * period)
         violate("hard error " + std::to_string(run.hard_error_ms - f.onset_ms) +
                 " ms after the onset (bound " + std::to_string(bound) + " periods)");
-    // Sensor faults the card must see are seen by the firmware too.
-    if (f.detected && f.detected_by == "sync_error" && run.firmware_sync_errors == 0)
-        violate("the card flagged the fault but the firmware reported no sync_error");
+    if (v.actual == outcome::overrun && f.dropped_pairs.empty())
+        violate("overrun without the dropped pairs named in a pair_dropped report");
+    check_reports(f, s, p, violate);
     return v;
 }
 

@@ -27,16 +27,16 @@ namespace faults {
 // What a fault must lead to. Some parameters sit on a threshold (a dark level
 // near DARK_THRESHOLD with noise on): then two outcomes are allowed.
 enum class outcome : uint8_t {
-    none,         // not in effect during the run (trigger after its end, glitch where not driven)
-    harmless,     // not detected, no pair out of step: pairs keep being used
-    resync,       // detected by the sync check, the pair discarded, OE restarted, recovered
-    hard_error,   // never recovers: the firmware reports hard_error within the bound
-    stale_pair,   // extra-frame: timing identical, undetectable; the repeat's pair may be used
-    overflow,     // bus fault: FIFO overflow (EXT_INT6), pairs discarded, no sync effect
-    overrun,      // CPU fault: pairs dropped by the overrun policy, no sync effect
-    pending,      // detected; the run ended before recovery was due
-    missed,       // out-of-step pairs went through undetected
-    no_recovery,  // detected but not recovered (nor a hard error) although it was due
+    not_in_effect,  // never acted during the run (trigger after its end): the run proves nothing
+    harmless,       // not detected, no pair out of step: pairs keep being used
+    resync,         // detected by the sync check, the pair discarded, OE restarted, recovered
+    hard_error,     // never recovers: the firmware reports hard_error within the bound
+    stale_pair,     // extra-frame: timing identical, undetectable; the repeat's pair may be used
+    overflow,       // bus fault: FIFO overflow (EXT_INT6), pairs discarded, no sync effect
+    overrun,        // CPU fault: pairs dropped by the overrun policy, no sync effect
+    pending,        // detected; the run ended before recovery was due: never a pass
+    missed,         // out-of-step pairs went through undetected
+    no_recovery,    // detected but not recovered (nor a hard error) although it was due
 };
 const char* outcome_name(outcome o);
 
@@ -73,9 +73,9 @@ expectation expected_for(const fault_observation& f, const fault_spec& spec,
 int hard_error_bound_periods(const contract_params& p);
 
 struct verdict {
-    outcome actual = outcome::none;
-    outcome expected = outcome::none;  // nominal
-    std::string expected_text;         // allowed outcomes joined by '|'
+    outcome actual = outcome::not_in_effect;
+    outcome expected = outcome::not_in_effect;  // nominal
+    std::string expected_text;                  // allowed outcomes joined by '|'
     bool ok = true;
     std::vector<std::string> violations;  // one line each
 };

@@ -16,8 +16,6 @@ class fault_extension final : public cli::run_extension {
         run.add_option("--fault", m_texts,
                        "inject a fault KIND:KEY=VALUE,...[@frame=N|@ms=T] (repeatable; "
                        "stereosim faults --list, docs/faults.md)");
-        run.add_option("--weaken", m_weaken,
-                       "ignore-verdict: a deliberately weakened firmware (docs/fault-contract.md)");
         run.add_option("--card-retry-limit", m_retry_limit,
                        "the card's RETRY_LIMIT: OE restarts before HARD_ERROR (default 8)");
         run.add_option("--hard-error-rearms", m_rearms,
@@ -32,12 +30,6 @@ class fault_extension final : public cli::run_extension {
             if (!spec) return false;
             apply(*spec, config);
             m_specs.push_back(*spec);
-        }
-        if (m_weaken == "ignore-verdict") {
-            config.weaken = dsp::firmware_weakening::ignore_verdict;
-        } else if (m_weaken != "none" && !m_weaken.empty()) {
-            *error = "--weaken: unknown mode '" + m_weaken + "' (expected none or ignore-verdict)";
-            return false;
         }
         if (m_retry_limit < 0 || m_retry_limit > 255) {
             *error = "--card-retry-limit: " + std::to_string(m_retry_limit) +
@@ -83,7 +75,6 @@ class fault_extension final : public cli::run_extension {
 
   private:
     std::vector<std::string> m_texts;
-    std::string m_weaken = "none";
     int m_retry_limit = 8;
     int m_rearms = 1;
     std::vector<fault_spec> m_specs;

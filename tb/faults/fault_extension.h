@@ -1,7 +1,6 @@
 // Fault injection in `stereosim run` (docs/faults.md), plugged in through the
 // run command's extension seam (tb/cli/run_outputs.h):
 //   --fault SPEC             (repeatable) inject a fault, grammar in docs/faults.md
-//   --weaken ignore-verdict  the deliberately weakened firmware (docs/fault-contract.md)
 //   --card-retry-limit N     the card's RETRY_LIMIT (default 8)
 //   --hard-error-rearms N    the firmware's re-arms before it gives up (default 1)
 // After the run the faults' onsets go on the timeline (event `fault`), and

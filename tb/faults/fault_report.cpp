@@ -18,6 +18,14 @@ int integer(const json& j, const char* key) {
     return j.contains(key) && j[key].is_number() ? j[key].get<int>() : 0;
 }
 
+std::vector<uint32_t> pair_list(const json& j, const char* key) {
+    std::vector<uint32_t> out;
+    if (j.contains(key) && j[key].is_array())
+        for (const json& n : j[key])
+            if (n.is_number_unsigned()) out.push_back(n.get<uint32_t>());
+    return out;
+}
+
 json params_json(const contract_params& p) {
     return {{"retry_limit", p.retry_limit},
             {"hard_error_rearms", p.hard_error_rearms},
@@ -78,6 +86,15 @@ void add_to_report(json& report, const fault_run_result& r) {
             {"frames_to_detect", f.detected ? json(f.frames_to_detect) : json(nullptr)},
             {"masked_checks", f.masked_checks},
             {"verdict_causes", f.causes},
+            {"reported", f.reported},
+            {"reported_by", f.reported_by},
+            {"report_ms", null_if(f.reported, f.report_ms)},
+            {"onset_start_out_of_step", f.onset_start_out_of_step},
+            {"resumed_ms", null_if(f.resumed_ms >= 0, f.resumed_ms)},
+            {"pair_ms_min", null_if(f.pair_ms_min >= 0, f.pair_ms_min)},
+            {"slowed_ms_max", null_if(f.slowed_ms_max >= 0, f.slowed_ms_max)},
+            {"slowed_pairs", f.slowed_pairs},
+            {"dropped_pairs", f.dropped_pairs},
             {"recovered", f.recovered},
             {"recover_ms", null_if(f.recovered, f.recover_ms)},
             {"frames_to_recover", f.recovered ? json(f.frames_to_recover) : json(nullptr)},
@@ -100,7 +117,6 @@ void add_to_report(json& report, const fault_run_result& r) {
     for (const verdict& v : r.verdicts)
         for (const std::string& s : v.violations) violations.push_back(s);
     report["fault_run"] = {
-        {"weaken", r.weaken},
         {"frames", run.frames},
         {"period_ms", run.period_ms},
         {"end_ms", run.end_ms},
@@ -108,6 +124,14 @@ void add_to_report(json& report, const fault_run_result& r) {
         {"pairs_processed", run.pairs_processed},
         {"pairs_rejected", run.pairs_rejected},
         {"pairs_dropped", run.pairs_dropped},
+        {"pairs_in_step", run.pairs_in_step},
+        {"pairs_unaccounted", run.pairs_unaccounted},
+        {"unaccounted_pairs", run.unaccounted_pairs},
+        {"unreported_sync_errors", run.unreported_sync_errors},
+        {"unreported_overflows", run.unreported_overflows},
+        {"identity_checked", run.identity_checked},
+        {"identity_mismatches", run.identity_mismatches},
+        {"mismatched_pairs", run.mismatched_pairs},
         {"card_sync_errors", run.card_sync_errors},
         {"card_overflows", run.card_overflows},
         {"firmware_sync_errors", run.firmware_sync_errors},
@@ -134,7 +158,6 @@ bool read_from_report(const json& report, fault_run_result* r, std::string* erro
     }
     const json& j = report["fault_run"];
     *r = fault_run_result{};
-    r->weaken = j.value("weaken", "none");
     r->params = params_of(j.value("contract_params", json::object()));
     run_observation& run = r->run;
     run.frames = integer(j, "frames");
@@ -145,6 +168,14 @@ bool read_from_report(const json& report, fault_run_result* r, std::string* erro
     run.pairs_processed = integer(j, "pairs_processed");
     run.pairs_rejected = integer(j, "pairs_rejected");
     run.pairs_dropped = integer(j, "pairs_dropped");
+    run.pairs_in_step = integer(j, "pairs_in_step");
+    run.pairs_unaccounted = integer(j, "pairs_unaccounted");
+    run.unaccounted_pairs = pair_list(j, "unaccounted_pairs");
+    run.unreported_sync_errors = integer(j, "unreported_sync_errors");
+    run.unreported_overflows = integer(j, "unreported_overflows");
+    run.identity_checked = integer(j, "identity_checked");
+    run.identity_mismatches = integer(j, "identity_mismatches");
+    run.mismatched_pairs = pair_list(j, "mismatched_pairs");
     run.card_sync_errors = integer(j, "card_sync_errors");
     run.card_overflows = integer(j, "card_overflows");
     run.firmware_sync_errors = integer(j, "firmware_sync_errors");
@@ -177,6 +208,15 @@ bool read_from_report(const json& report, fault_run_result* r, std::string* erro
         o.frames_to_detect = static_cast<int>(num(f, "frames_to_detect"));
         o.causes = static_cast<uint32_t>(integer(f, "verdict_causes"));
         o.masked_checks = integer(f, "masked_checks");
+        o.reported = f.value("reported", false);
+        o.reported_by = f.value("reported_by", std::string("none"));
+        o.report_ms = num(f, "report_ms");
+        o.onset_start_out_of_step = f.value("onset_start_out_of_step", false);
+        o.resumed_ms = num(f, "resumed_ms");
+        o.pair_ms_min = num(f, "pair_ms_min");
+        o.slowed_ms_max = num(f, "slowed_ms_max");
+        o.slowed_pairs = integer(f, "slowed_pairs");
+        o.dropped_pairs = pair_list(f, "dropped_pairs");
         o.recovered = f.value("recovered", false);
         o.recover_ms = num(f, "recover_ms");
         o.frames_to_recover = static_cast<int>(num(f, "frames_to_recover"));

@@ -26,7 +26,6 @@ namespace faults {
 struct fault_run_result {
     run_observation run;
     contract_params params;
-    std::string weaken = "none";
     std::vector<fault_spec> specs;
     std::vector<verdict> verdicts;
     bool contract_ok() const;

@@ -26,8 +26,6 @@ faults_command::faults_command(CLI::App& app) {
     m_app->add_option("--jobs", m_jobs, "runs in parallel (default 2)");
     m_app->add_option("--shard", m_shard, "K/M: run the K-th of M deterministic slices");
     m_app->add_option("--out", m_out, "folder for campaign.json/.csv/.txt (default campaign-NAME)");
-    m_app->add_option("--weaken", m_weaken,
-                      "ignore-verdict: run every case on the weakened firmware (it must fail)");
     m_app->add_flag("--keep-runs", m_keep_runs, "keep each run's report.json under OUT/runs");
     m_app->add_option("--binary", m_binary, "the stereosim to run (default: this program)");
     m_app->add_option(
@@ -51,15 +49,11 @@ int faults_command::execute() {
     char extra = 0;
     if (std::sscanf(m_shard.c_str(), "%d/%d%c", &k, &m, &extra) != 2 || m < 1 || k < 1 || k > m)
         return bad_input("--shard: expected K/M with 1 <= K <= M, got '" + m_shard + "'");
-    if (m_weaken != "none" && m_weaken != "ignore-verdict")
-        return bad_input("--weaken: unknown mode '" + m_weaken +
-                         "' (expected none or ignore-verdict)");
     o.seeds = m_seeds;
     o.jobs = m_jobs;
     o.shard = k;
     o.shards = m;
     o.out_dir = m_out;
-    o.weaken = m_weaken;
     o.keep_runs = m_keep_runs;
     o.binary = m_binary;
     o.match = m_match;

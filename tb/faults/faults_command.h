@@ -1,7 +1,7 @@
 // `stereosim faults` (docs/faults.md, docs/fault-contract.md):
 //   stereosim faults --list
 //   stereosim faults --campaign smoke|full [--seeds N] [--jobs J] [--shard K/M] [--out DIR]
-//                    [--weaken ignore-verdict] [--keep-runs] [--match TEXT]
+//                    [--keep-runs] [--match TEXT]
 // Exit codes: 0 every run kept the contract, 1 a run broke it (or did not
 // run), 2 bad input.
 #pragma once
@@ -29,7 +29,6 @@ class faults_command {
     int m_jobs = 2;
     std::string m_shard = "1/1";
     std::string m_out;
-    std::string m_weaken = "none";
     std::string m_binary;
     std::string m_match;
 };

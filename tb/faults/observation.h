@@ -27,6 +27,14 @@ struct fault_observation {
     int frames_to_detect = -1;  // whole periods from the onset to the detection
     int masked_checks = 0;  // SYNC_ERRORs before it the fault cannot explain (out-of-step starts)
     uint32_t causes = 0;    // VERDICT cause bits of the firmware's first sync_error report
+    // The firmware's own report of this onset: the first sync_error, overflow,
+    // hard_error or pair_dropped report at or after the detection.
+    bool reported = false;
+    std::string reported_by = "none";
+    double report_ms = -1;
+    // The start the onset fell in was out of step by the sensors' truth (a
+    // restart is due whatever the fault): the truth, not the card's choice.
+    bool onset_start_out_of_step = false;
     // Recovery: the first in-step pair the card forwards after the detection.
     bool recovered = false;
     double recover_ms = -1;
@@ -38,6 +46,13 @@ struct fault_observation {
     int unsynced_pairs_used = 0;  // of those, out of step by the sensors' truth
     int stale_pairs_used = 0;     // of those, in step by timing, a repeated (stale) frame
     int pairs_dropped = 0;        // the firmware's overrun drops after the onset
+    std::vector<uint32_t> dropped_pairs;  // their card pair numbers (the report names them)
+    double resumed_ms = -1;  // first pair processed after the recovery pair's FRAME_READY
+    // Firmware time per processed pair (pair_captured -> pair_processed):
+    // the cheapest before the onset, the dearest after it (slowed down), and
+    // how many were timed after it. A CPU fault's expectation rests on them.
+    double pair_ms_min = -1, slowed_ms_max = -1;
+    int slowed_pairs = 0;
 };
 
 // The whole run.
@@ -47,13 +62,25 @@ struct run_observation {
     double end_ms = 0;
     bool firmware_started = false;
     int pairs_forwarded = 0, pairs_processed = 0, pairs_rejected = 0, pairs_dropped = 0;
+    // Pairs the card forwarded in step by the truth, and of those the ones the
+    // firmware neither processed nor dropped-and-reported although it had
+    // moved past them or had time (a whole recovery bound) before the end.
+    int pairs_in_step = 0, pairs_unaccounted = 0;
+    std::vector<uint32_t> unaccounted_pairs;  // their numbers (the first few)
+    // Card SYNC_ERROR / OVERFLOW pulses the firmware did not report within a
+    // period (before it gave up and a period before the end).
+    int unreported_sync_errors = 0, unreported_overflows = 0;
+    // Pair identity at the point of use: the frames the firmware read for
+    // each processed pair against the sensors' frames of the pair it names.
+    int identity_checked = 0, identity_mismatches = 0;
+    std::vector<uint32_t> mismatched_pairs;  // the first few
     int card_sync_errors = 0, card_overflows = 0, firmware_sync_errors = 0;
     int oe_starts = 0, rearms = 0;
     int unsynced_pairs_used = 0;  // scoreboard: processed pairs out of step by truth
     int misses = 0;               // forwarded pairs out of step by truth (the card let them by)
     int used_before_verdict = 0;
-    // SYNC_ERROR pulses for an OE start that was in step by truth while no
-    // fault was in effect (before every onset): a false alarm.
+    // SYNC_ERROR pulses over the whole run that neither an out-of-step start
+    // (by the truth) nor a fault in effect explains: a false alarm.
     int false_alarms = 0;
     int sync_errors_before_onset = 0;
     bool hard_error = false;  // the firmware reported hard_error

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "model/sensor/truth.h"
 
@@ -107,163 +108,356 @@ bool attributable(const platform::platform_top& top, const platform::scoreboard_
     return (ft.faults & sensor::fault_bit(sensor_kind(s))) != 0;
 }
 
+// Whether a SYNC_ERROR at `t` in start `start` is explained by fault `s`
+// (onset `onset`): a persistent fault explains every one after its onset, a
+// one-frame timing fault those of the start it hit (until the restart).
+bool explains(const platform::platform_top& top, const platform::scoreboard_report& score,
+              const fault_spec& s, simtime::ticks onset, simtime::ticks t) {
+    if (t < onset || !is_sensor_fault(s.type)) return false;
+    switch (s.type) {
+        case fault_type::drift:
+        case fault_type::dark_leak:
+        case fault_type::stuck_bit:
+        case fault_type::dead:
+        case fault_type::oe_stuck:
+            return true;
+        default:
+            break;
+    }
+    const int start = start_of(score, t);
+    if (start == start_of(score, onset)) return true;
+    if (start < 0) return false;
+    const int64_t frame = score.starts[static_cast<size_t>(start)].frame[s.camera];
+    if (frame < 0) return false;
+    const sensor::frame_truth& ft =
+        top.cycle_island().sensor(s.camera).truth()[static_cast<size_t>(frame)];
+    return (ft.faults & sensor::fault_bit(sensor_kind(s))) != 0;
+}
+
+// Card interrupt pulses with no firmware report of `kind` within `window`
+// ticks after them, counted up to `until` (the give-up, or a window before
+// the end). Pulses that the CPU saw as one latched flag share a report.
+int unreported(const std::vector<simtime::ticks>& pulses,
+               const std::vector<platform::fw_event>& events, dsp::firmware_event kind,
+               simtime::ticks window, simtime::ticks until) {
+    int missing = 0;
+    for (simtime::ticks t : pulses) {
+        if (t > until) break;
+        bool found = false;
+        for (const platform::fw_event& e : events)
+            if (e.event.kind == kind && e.tick >= t && e.tick <= t + window) found = true;
+        missing += !found;
+    }
+    return missing;
+}
+
+// The slowest CPU of the run: a cpu-slow fault's factor, else 1.
+double slow_factor(const std::vector<fault_spec>& specs) {
+    double factor = 1.0;
+    for (const fault_spec& s : specs)
+        if (s.type == fault_type::cpu_slow) factor = std::max(factor, s.factor);
+    return factor;
+}
+
+// Rule 1 (docs/fault-contract.md): every in-step pair the card forwards is
+// processed, or dropped under the overrun policy and reported. A pair after
+// the last one processed is still in flight if it came within `grace` of
+// the end, or of the firmware's give-up at `stop`.
+void account_pairs(const platform::scoreboard_report& score,
+                   const std::vector<platform::fw_event>& events, simtime::ticks grace,
+                   simtime::ticks stop, run_observation* run) {
+    std::set<uint32_t> dropped;
+    for (const platform::fw_event& e : events)
+        if (e.event.kind == dsp::firmware_event::pair_dropped)
+            for (uint32_t n = e.event.pair - e.event.value; n < e.event.pair; ++n)
+                dropped.insert(n);
+    uint32_t last_processed = 0;
+    for (const platform::pair_check& p : score.pairs)
+        if (p.processed) last_processed = std::max(last_processed, p.pair);
+    for (const platform::pair_check& p : score.pairs) {
+        if (!p.truth_in_step) continue;
+        ++run->pairs_in_step;
+        if (p.processed || dropped.count(p.pair) != 0) continue;
+        if (p.pair > last_processed && p.ready + grace > stop) continue;
+        ++run->pairs_unaccounted;
+        if (run->unaccounted_pairs.size() < 8) run->unaccounted_pairs.push_back(p.pair);
+    }
+}
+
+// Firmware time per pair (pair_captured -> pair_processed): the cheapest
+// before `onset`, the dearest taken after it.
+void pair_times(const std::vector<platform::fw_event>& events, simtime::ticks onset,
+                fault_observation* f) {
+    for (const platform::fw_event& done : events) {
+        if (done.event.kind != dsp::firmware_event::pair_processed) continue;
+        for (const platform::fw_event& taken : events) {
+            if (taken.event.kind != dsp::firmware_event::pair_captured ||
+                taken.event.pair != done.event.pair || taken.tick > done.tick)
+                continue;
+            const double ms = to_ms(done.tick - taken.tick);
+            if (done.tick < onset) {
+                f->pair_ms_min = f->pair_ms_min < 0 ? ms : std::min(f->pair_ms_min, ms);
+            } else if (taken.tick >= onset) {
+                f->slowed_ms_max = std::max(f->slowed_ms_max, ms);
+                ++f->slowed_pairs;
+            }
+        }
+    }
+}
+
+// The firmware's own report of a detection: the first report of a kind that
+// names this fault's effect at or after it.
+void find_report(const fault_spec& s, const std::vector<platform::fw_event>& events,
+                 simtime::ticks detect, fault_observation* f) {
+    using ev = dsp::firmware_event;
+    for (const platform::fw_event& e : events) {
+        if (e.tick < detect) continue;
+        const ev k = e.event.kind;
+        const bool names_it =
+            k == ev::hard_error || (is_sensor_fault(s.type)           ? k == ev::sync_error
+                                    : s.type == fault_type::emif_wait ? k == ev::overflow
+                                                                      : k == ev::pair_dropped);
+        if (!names_it) continue;
+        f->reported = true;
+        f->reported_by = dsp::firmware_event_name(k);
+        f->report_ms = to_ms(e.tick);
+        return;
+    }
+}
+
+}  // namespace
+
+namespace {
+
+// What one run recorded, in one place for the pieces below.
+struct run_sources {
+    platform::platform_top& top;
+    const platform::scoreboard_report& score;
+    const std::vector<simtime::ticks>& sync_errors;  // the card's SYNC_ERROR rises
+    const std::vector<simtime::ticks>& overflows;    // OVERFLOW rises
+    const std::vector<platform::fw_event>& events;   // the firmware's reports
+    simtime::ticks period;
+};
+
+void count_run(const run_sources& in, run_observation* run) {
+    run->pairs_forwarded = static_cast<int>(in.score.pairs.size());
+    for (const platform::pair_check& p : in.score.pairs) run->pairs_processed += p.processed;
+    run->card_sync_errors = static_cast<int>(in.sync_errors.size());
+    run->card_overflows = static_cast<int>(in.overflows.size());
+    run->oe_starts = static_cast<int>(in.score.starts.size());
+    run->unsynced_pairs_used = in.score.used_out_of_step;
+    run->misses = in.score.forwarded_out_of_step;
+    run->used_before_verdict = in.score.used_before_verdict;
+    for (const platform::fw_event& e : in.events) {
+        switch (e.event.kind) {
+            case dsp::firmware_event::pair_rejected:
+                ++run->pairs_rejected;
+                break;
+            case dsp::firmware_event::pair_dropped:
+                run->pairs_dropped += static_cast<int>(e.event.value);
+                break;
+            case dsp::firmware_event::sync_error:
+                ++run->firmware_sync_errors;
+                break;
+            case dsp::firmware_event::card_rearmed:
+                ++run->rearms;
+                break;
+            case dsp::firmware_event::hard_error:
+                if (!run->hard_error) run->hard_error_ms = to_ms(e.tick);
+                run->hard_error = true;
+                break;
+            default:
+                break;
+        }
+    }
+}
+
+// Detection: the first SYNC_ERROR the fault can explain (sensor faults),
+// OVERFLOW (emif-wait) or pair_dropped report (cpu-slow) at or after the
+// onset; `never` if none.
+simtime::ticks detect_fault(const run_sources& in, const fault_spec& s, simtime::ticks onset,
+                            fault_observation* f) {
+    if (is_sensor_fault(s.type)) {
+        for (simtime::ticks t : in.sync_errors) {
+            if (t < onset) continue;
+            if (!attributable(in.top, in.score, s, t)) {
+                ++f->masked_checks;
+                continue;
+            }
+            f->detected_by = "sync_error";
+            return t;
+        }
+    } else if (s.type == fault_type::emif_wait) {
+        for (simtime::ticks t : in.overflows)
+            if (t >= onset) {
+                f->detected_by = "overflow";
+                return t;
+            }
+    } else {
+        for (const platform::fw_event& e : in.events)
+            if (e.event.kind == dsp::firmware_event::pair_dropped && e.tick >= onset) {
+                f->detected_by = "pair_dropped";
+                return e.tick;
+            }
+    }
+    return never;
+}
+
+// Recovery: the first in-step pair the card forwards after the detection
+// (rule 5 checks that the firmware uses it), and the restarts until then.
+void observe_recovery(const run_sources& in, simtime::ticks onset, simtime::ticks detect,
+                      fault_observation* f) {
+    simtime::ticks recover = never;
+    for (const platform::pair_check& p : in.score.pairs) {
+        if (detect != never && p.truth_in_step && p.ready > detect) {
+            recover = p.ready;
+            break;
+        }
+    }
+    if (recover != never) {
+        for (const platform::pair_check& p : in.score.pairs)
+            if (p.processed && p.ready >= recover) {
+                f->resumed_ms = to_ms(p.result_tick);
+                break;
+            }
+        f->recovered = true;
+        f->recover_ms = to_ms(recover);
+        f->frames_to_recover = static_cast<int>(std::floor(
+            static_cast<double>(recover - detect) / static_cast<double>(in.period) + 0.5));
+    }
+    for (const platform::start_check& c : in.score.starts) {
+        if (c.oe_rise > onset) ++f->oe_starts_after;
+        if (detect != never && c.oe_rise > detect &&
+            c.oe_rise < std::min(recover, in.top.end_tick()) &&
+            c.card != platform::card_verdict::frame_ready)
+            ++f->failed_starts;
+    }
+}
+
+// Pairs discarded, used (out of step, stale) and dropped from the onset on.
+void observe_pairs(const run_sources& in, simtime::ticks onset, fault_observation* f) {
+    for (simtime::ticks t : in.sync_errors) f->pairs_discarded += t >= onset;
+    for (simtime::ticks t : in.overflows) f->pairs_discarded += t >= onset;
+    const platform::island& isl = in.top.cycle_island();
+    for (const platform::pair_check& p : in.score.pairs) {
+        if (!p.processed || p.ready <= onset) continue;
+        ++f->pairs_used;
+        if (p.truth_in_step) continue;
+        ++f->unsynced_pairs_used;
+        bool repeated = false;
+        for (int cam = 0; cam < 2; ++cam) {
+            if (p.frame[cam] < 0) continue;
+            repeated |= isl.sensor(cam).truth()[static_cast<size_t>(p.frame[cam])].repeated;
+        }
+        f->stale_pairs_used += repeated;
+    }
+    for (const platform::fw_event& e : in.events)
+        if (e.event.kind == dsp::firmware_event::pair_dropped && e.tick >= onset) {
+            f->pairs_dropped += static_cast<int>(e.event.value);
+            for (uint32_t n = e.event.pair - e.event.value; n < e.event.pair; ++n)
+                f->dropped_pairs.push_back(n);
+        }
+}
+
+// One fault; `*onset` = its onset tick, `never` if it did not act.
+fault_observation observe_fault(const run_sources& in, const fault_spec& s, size_t index,
+                                simtime::ticks* onset) {
+    fault_observation f;
+    f.spec = canonical(s);
+    f.type = s.type;
+    int64_t frame = -1;
+    *onset = never;
+    f.in_effect = find_onset(in.top, s, onset, &frame);
+    if (!f.in_effect) {
+        *onset = never;
+        return f;
+    }
+    f.onset_ms = to_ms(*onset);
+    f.onset_frame = frame;
+    in.top.mark_fault(*onset, static_cast<uint8_t>(index), static_cast<uint32_t>(s.type),
+                      static_cast<uint32_t>(std::max<int64_t>(frame, 0)));
+    const simtime::ticks detect = detect_fault(in, s, *onset, &f);
+    if (detect != never) {
+        f.detected = true;
+        f.detect_ms = to_ms(detect);
+        f.frames_to_detect = static_cast<int>((detect - *onset) / in.period);
+        for (const platform::fw_event& e : in.events)
+            if (e.event.kind == dsp::firmware_event::sync_error && e.tick >= detect) {
+                f.causes = e.event.value & 0xFFu;
+                break;
+            }
+        find_report(s, in.events, detect, &f);
+    }
+    const int onset_start = start_of(in.score, *onset);
+    f.onset_start_out_of_step =
+        onset_start >= 0 && !in.score.starts[static_cast<size_t>(onset_start)].truth_in_step;
+    pair_times(in.events, *onset, &f);
+    observe_recovery(in, *onset, detect, &f);
+    observe_pairs(in, *onset, &f);
+    return f;
+}
+
+// The rules over the whole run (docs/fault-contract.md 3, 5, 6, 7).
+void observe_run_rules(const run_sources& in, const std::vector<fault_spec>& specs,
+                       const std::vector<simtime::ticks>& onsets, run_observation* run) {
+    const simtime::ticks first_onset = *std::min_element(onsets.begin(), onsets.end());
+    // False alarms, over the whole run: a SYNC_ERROR for a start in step by
+    // the truth that no fault in effect explains.
+    for (simtime::ticks t : in.sync_errors) {
+        run->sync_errors_before_onset += t < first_onset;
+        const int s = start_of(in.score, t);
+        if (s < 0 || !in.score.starts[static_cast<size_t>(s)].truth_in_step) continue;
+        bool explained = false;
+        for (size_t i = 0; i < specs.size(); ++i)
+            explained |= onsets[i] != never && explains(in.top, in.score, specs[i], onsets[i], t);
+        run->false_alarms += !explained;
+    }
+    // The firmware keeps working and reports what the card flags: a window
+    // of (1 + CPU slow-down) periods covers a pair in processing.
+    const auto window =
+        static_cast<simtime::ticks>((1.0 + slow_factor(specs)) * static_cast<double>(in.period));
+    simtime::ticks stop = in.top.end_tick();
+    for (const platform::fw_event& e : in.events)
+        if (e.event.kind == dsp::firmware_event::hard_error) stop = std::min(stop, e.tick);
+    const simtime::ticks until = std::min(stop, in.top.end_tick() - window);
+    account_pairs(in.score, in.events, 2 * window, stop, run);
+    run->unreported_sync_errors =
+        unreported(in.sync_errors, in.events, dsp::firmware_event::sync_error, window, until);
+    run->unreported_overflows =
+        unreported(in.overflows, in.events, dsp::firmware_event::overflow, window, until);
+    for (const platform::used_pair& u : in.top.used_pairs()) {
+        if (!u.checked) continue;
+        ++run->identity_checked;
+        if (u.matches) continue;
+        ++run->identity_mismatches;
+        if (run->mismatched_pairs.size() < 8) run->mismatched_pairs.push_back(u.pair);
+    }
+}
+
 }  // namespace
 
 run_observation observe(platform::platform_top& top, const platform::scoreboard_report& score,
                         const std::vector<fault_spec>& specs) {
     run_observation run;
     const simtime::ticks period = top.config().period;
-    const double period_ticks = static_cast<double>(period);
     run.frames = top.config().frames;
     run.period_ms = to_ms(period);
     run.end_ms = to_ms(top.end_tick());
     run.firmware_started = top.firmware_started();
     const platform::island& isl = top.cycle_island();
-    const std::vector<simtime::ticks>& sync_errors = isl.irq_rises(1);
-    const std::vector<simtime::ticks>& overflows = isl.irq_rises(2);
     static const std::vector<platform::fw_event> no_events;
-    const std::vector<platform::fw_event>& events =
-        top.firmware_started() ? top.probe().fw_events() : no_events;
-
-    run.pairs_forwarded = static_cast<int>(score.pairs.size());
-    for (const platform::pair_check& p : score.pairs) run.pairs_processed += p.processed;
-    run.card_sync_errors = static_cast<int>(sync_errors.size());
-    run.card_overflows = static_cast<int>(overflows.size());
-    run.oe_starts = static_cast<int>(score.starts.size());
-    run.unsynced_pairs_used = score.used_out_of_step;
-    run.misses = score.forwarded_out_of_step;
-    run.used_before_verdict = score.used_before_verdict;
-    for (const platform::fw_event& e : events) {
-        switch (e.event.kind) {
-            case dsp::firmware_event::pair_rejected:
-                ++run.pairs_rejected;
-                break;
-            case dsp::firmware_event::pair_dropped:
-                run.pairs_dropped += static_cast<int>(e.event.value);
-                break;
-            case dsp::firmware_event::sync_error:
-                ++run.firmware_sync_errors;
-                break;
-            case dsp::firmware_event::card_rearmed:
-                ++run.rearms;
-                break;
-            case dsp::firmware_event::hard_error:
-                if (!run.hard_error) run.hard_error_ms = to_ms(e.tick);
-                run.hard_error = true;
-                break;
-            default:
-                break;
-        }
-    }
-
-    simtime::ticks first_onset = never;
-    for (size_t i = 0; i < specs.size(); ++i) {
-        const fault_spec& s = specs[i];
-        fault_observation f;
-        f.spec = canonical(s);
-        f.type = s.type;
-        simtime::ticks onset = 0;
-        int64_t frame = -1;
-        f.in_effect = find_onset(top, s, &onset, &frame);
-        if (!f.in_effect) {
-            run.faults.push_back(f);
-            continue;
-        }
-        first_onset = std::min(first_onset, onset);
-        f.onset_ms = to_ms(onset);
-        f.onset_frame = frame;
-        top.mark_fault(onset, static_cast<uint8_t>(i), static_cast<uint32_t>(s.type),
-                       static_cast<uint32_t>(std::max<int64_t>(frame, 0)));
-
-        // Detection.
-        simtime::ticks detect = never;
-        if (is_sensor_fault(s.type)) {
-            for (simtime::ticks t : sync_errors) {
-                if (t < onset) continue;
-                if (!attributable(top, score, s, t)) {
-                    ++f.masked_checks;
-                    continue;
-                }
-                detect = t;
-                f.detected_by = "sync_error";
-                break;
-            }
-        } else if (s.type == fault_type::emif_wait) {
-            for (simtime::ticks t : overflows)
-                if (t >= onset) {
-                    detect = t;
-                    f.detected_by = "overflow";
-                    break;
-                }
-        } else {
-            for (const platform::fw_event& e : events)
-                if (e.event.kind == dsp::firmware_event::pair_dropped && e.tick >= onset) {
-                    detect = e.tick;
-                    f.detected_by = "pair_dropped";
-                    break;
-                }
-        }
-        if (detect != never) {
-            f.detected = true;
-            f.detect_ms = to_ms(detect);
-            f.frames_to_detect = static_cast<int>((detect - onset) / period);
-            for (const platform::fw_event& e : events)
-                if (e.event.kind == dsp::firmware_event::sync_error && e.tick >= detect) {
-                    f.causes = e.event.value & 0xFFu;
-                    break;
-                }
-        }
-
-        // Recovery: the first in-step pair the card forwards after the
-        // detection (whether the firmware finishes it before the run ends is
-        // pairs_used's business).
-        simtime::ticks recover = never;
-        for (const platform::pair_check& p : score.pairs) {
-            if (detect != never && p.truth_in_step && p.ready > detect) {
-                recover = p.ready;
-                break;
-            }
-        }
-        if (recover != never) {
-            f.recovered = true;
-            f.recover_ms = to_ms(recover);
-            f.frames_to_recover = static_cast<int>(
-                std::floor(static_cast<double>(recover - detect) / period_ticks + 0.5));
-        }
-        for (const platform::start_check& c : score.starts) {
-            if (c.oe_rise > onset) ++f.oe_starts_after;
-            if (detect != never && c.oe_rise > detect &&
-                c.oe_rise < std::min(recover, top.end_tick()) &&
-                c.card != platform::card_verdict::frame_ready)
-                ++f.failed_starts;
-        }
-        for (simtime::ticks t : sync_errors) f.pairs_discarded += t >= onset;
-        for (simtime::ticks t : overflows) f.pairs_discarded += t >= onset;
-        for (const platform::pair_check& p : score.pairs) {
-            if (!p.processed || p.ready <= onset) continue;
-            ++f.pairs_used;
-            if (p.truth_in_step) continue;
-            ++f.unsynced_pairs_used;
-            bool repeated = false;
-            for (int cam = 0; cam < 2; ++cam) {
-                if (p.frame[cam] < 0) continue;
-                repeated |= isl.sensor(cam).truth()[static_cast<size_t>(p.frame[cam])].repeated;
-            }
-            f.stale_pairs_used += repeated;
-        }
-        for (const platform::fw_event& e : events)
-            if (e.event.kind == dsp::firmware_event::pair_dropped && e.tick >= onset)
-                f.pairs_dropped += static_cast<int>(e.event.value);
-        run.faults.push_back(f);
-    }
-
-    // False alarms: a SYNC_ERROR for an in-step start before any fault acted.
-    for (simtime::ticks t : sync_errors) {
-        if (t >= first_onset) continue;
-        ++run.sync_errors_before_onset;
-        const int s = start_of(score, t);
-        if (s >= 0 && score.starts[static_cast<size_t>(s)].truth_in_step) ++run.false_alarms;
-    }
+    const run_sources in{top,
+                         score,
+                         isl.irq_rises(1),
+                         isl.irq_rises(2),
+                         top.firmware_started() ? top.probe().fw_events() : no_events,
+                         period};
+    count_run(in, &run);
+    std::vector<simtime::ticks> onsets(specs.size(), never);
+    for (size_t i = 0; i < specs.size(); ++i)
+        run.faults.push_back(observe_fault(in, specs[i], i, &onsets[i]));
+    onsets.push_back(never);  // a clean run: no onset
+    observe_run_rules(in, specs, onsets, &run);
     return run;
 }
 
@@ -273,7 +467,6 @@ fault_run_result evaluate(platform::platform_top& top, const platform::scoreboar
     fault_run_result r;
     r.specs = specs;
     r.params = params_for(top.config());
-    r.weaken = dsp::firmware_weakening_name(top.config().weaken);
     r.run = observe(top, score, specs);
     if (specs.empty()) r.verdicts.push_back(check_clean(r.run));
     for (size_t i = 0; i < specs.size(); ++i)

@@ -105,6 +105,11 @@ platform_top::~platform_top() = default;
 void platform_top::firmware(dsp::hal& hal) {
     m_probe = std::make_unique<probe_hal>(hal, m_timeline);
     m_probe->set_event_hook([this](const fw_event& e) { on_firmware_event(e); });
+    m_probe->set_memory_hook([this](uint32_t, uint32_t bytes, const uint8_t* p) {
+        const auto frame =
+            static_cast<uint32_t>(m_island->frame_width() * m_island->frame_height());
+        if (p && bytes == frame) m_frame_reads.push_back(fnv1a(p, bytes));
+    });
     m_probe->start();
     if (!m_program.init(program_config(m_config), *m_probe)) {
         m_init_failed = true;
@@ -139,6 +144,7 @@ int64_t platform_top::frame_before(int camera, simtime::ticks tick) const {
 }
 
 void platform_top::on_firmware_event(const fw_event& e) {
+    if (e.event.kind == dsp::firmware_event::pair_processed) check_used(e.event.pair);
     if (e.event.kind != dsp::firmware_event::pair_captured) return;
     captured_pair p;
     p.pair = e.event.pair;
@@ -147,6 +153,23 @@ void platform_top::on_firmware_event(const fw_event& e) {
     p.tick = e.tick;
     check_captured(p);
     m_captured.push_back(p);
+    m_frame_reads.clear();  // the firmware's own reads of this pair start now
+}
+
+// Pair identity at the point of use (docs/fault-contract.md, rule 8).
+void platform_top::check_used(uint32_t pair) {
+    used_pair u;
+    u.pair = pair;
+    const captured_pair* named = nullptr;
+    for (const captured_pair& c : m_captured)
+        if (c.pair == pair) named = &c;
+    const size_t reads = m_frame_reads.size();
+    if (named && reads >= 2 && named->sensor_checksum_known[0] && named->sensor_checksum_known[1]) {
+        u.checked = true;
+        u.matches = m_frame_reads[reads - 2] == named->sensor_checksum[0] &&
+                    m_frame_reads[reads - 1] == named->sensor_checksum[1];
+    }
+    m_used.push_back(u);
 }
 
 // Data path integrity (docs/platform.md): the raw frames as they landed in

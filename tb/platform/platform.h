@@ -49,6 +49,15 @@ struct captured_pair {
     uint8_t differing_bits[2] = {};     // OR of (memory XOR sensor) over the frame
 };
 
+// A pair the firmware processed (its pair_processed report), checked at the
+// point of use: the two frames it read from memory after taking the pair
+// (left, then right) against the sensors' frames of the pair it names.
+struct used_pair {
+    uint32_t pair = 0;
+    bool checked = false;  // two frame reads and both sensors' checksums known
+    bool matches = false;
+};
+
 class platform_top {
   public:
     explicit platform_top(const platform_config& config);
@@ -82,6 +91,7 @@ class platform_top {
         m_timeline.insert(tick, event_kind::fault, index, type, frame);
     }
     const std::vector<captured_pair>& captured() const { return m_captured; }
+    const std::vector<used_pair>& used_pairs() const { return m_used; }
     // The run's end (config.frames periods) and the host time run() took.
     simtime::ticks end_tick() const { return m_end_tick; }
     double wall_s() const { return m_wall_s; }
@@ -94,6 +104,7 @@ class platform_top {
     void firmware(dsp::hal& hal);
     void on_firmware_event(const fw_event& e);
     void check_captured(captured_pair& pair);
+    void check_used(uint32_t pair);
 
     platform_config m_config;
     scene::sequence m_sequence;
@@ -108,6 +119,8 @@ class platform_top {
     dsp::control_program m_program;
     bool m_init_failed = false;
     std::vector<captured_pair> m_captured;
+    std::vector<uint64_t> m_frame_reads;  // checksums of frame-sized reads since the last take
+    std::vector<used_pair> m_used;
     simtime::ticks m_end_tick = 0;
     double m_wall_s = 0.0;
     std::function<void(int)> m_progress;

@@ -43,8 +43,8 @@ dsp::control_program_config program_config(const platform_config& config) {
     c.capture_cycles = config.capture_cycles;
     c.watchdog_ms = config.watchdog_ms;
     c.card.retry_limit = config.card_retry_limit;
+    c.card.start_timeout = config.card_start_timeout;
     c.hard_error_rearms = config.hard_error_rearms;
-    c.weaken = config.weaken;
     return c;
 }
 

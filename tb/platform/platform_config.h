@@ -89,12 +89,11 @@ struct platform_config {
     // The firmware's card watchdog (timer 1): every period it reads the card's
     // event counters over the EMIF; 0: none.
     uint32_t watchdog_ms = 500;
-    // The card's RETRY_LIMIT, the firmware's give-up bound and the weakening
-    // switch that proves the fault campaign can fail (dsp::control_program_config,
-    // docs/fault-contract.md).
+    // The card's RETRY_LIMIT and the firmware's give-up bound
+    // (dsp::control_program_config, docs/fault-contract.md).
     uint32_t card_retry_limit = 8;
+    uint32_t card_start_timeout = dsp::card_regs::start_timeout_reset;  // lines
     uint32_t hard_error_rearms = 1;
-    dsp::firmware_weakening weaken = dsp::firmware_weakening::none;
 
     // ---- faults beyond the sensors' (tb/faults, docs/faults.md) ------------------------------
     // Extra ARDY wait states on the card's CE spaces from a time on, and a

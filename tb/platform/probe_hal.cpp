@@ -79,7 +79,9 @@ void probe_hal::write32(uint32_t address, uint32_t value) {
 }
 
 uint8_t* probe_hal::memory(uint32_t address, uint32_t bytes) {
-    return m_inner.memory(address, bytes);
+    uint8_t* p = m_inner.memory(address, bytes);
+    if (m_memory_hook) m_memory_hook(address, bytes, p);
+    return p;
 }
 
 void probe_hal::set_interrupt_enable(uint32_t ier) {

@@ -44,6 +44,8 @@ struct fw_result {
 class probe_hal final : public dsp::hal {
   public:
     using event_hook = std::function<void(const fw_event&)>;
+    // Every memory() the firmware asks for, with what it points at then.
+    using memory_hook = std::function<void(uint32_t address, uint32_t bytes, const uint8_t*)>;
 
     probe_hal(dsp::hal& inner, timeline& events) : m_inner(inner), m_events(events) {}
 
@@ -51,6 +53,7 @@ class probe_hal final : public dsp::hal {
     void start();
     // Called by report() before the event is recorded (scoreboard checks).
     void set_event_hook(event_hook hook) { m_hook = std::move(hook); }
+    void set_memory_hook(memory_hook hook) { m_memory_hook = std::move(hook); }
 
     void charge_cycles(dsp::stage s, uint64_t cycles) override;
     void charge_with_traffic(dsp::stage s, uint64_t cycles,
@@ -93,6 +96,7 @@ class probe_hal final : public dsp::hal {
     dsp::hal& m_inner;
     timeline& m_events;
     event_hook m_hook;
+    memory_hook m_memory_hook;
     std::vector<charge_record> m_charges;
     std::vector<tick_interval> m_sleeps;
     std::vector<fw_event> m_fw_events;

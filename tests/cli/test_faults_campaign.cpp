@@ -1,7 +1,6 @@
 // The stereosim binary as a user runs it (docs/faults.md, docs/fault-contract.md):
 // a bad --fault is a one-line error, a good one lands in report.json, and a
-// slice of the smoke campaign keeps the contract with the real firmware and
-// breaks it with the weakened one (--weaken ignore-verdict).
+// slice of the smoke campaign keeps the contract with the real firmware.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -101,19 +100,14 @@ TEST(FaultCli, AFaultIsReportedWithItsOnsetAndOutcome) {
         causes, f["outcome"].get<std::string>().c_str());
 }
 
-// The same slice of the smoke campaign, with the firmware as it is and
-// weakened: a dark leak the card must flag every frame until the firmware
-// gives up.
-TEST(FaultCampaign, SmokeSliceKeepsTheContractAndTheWeakenedFirmwareBreaksIt) {
-    const std::string slice = "faults --campaign smoke --match dark-leak:sensor=R";
-    const fs::path good = scratch("good"), weak = scratch("weak");
-    // Both at once (each is one simulation).
-    std::FILE* ok_pipe = start(slice + " --jobs 1 --out " + good.string());
-    std::FILE* bad_pipe = start(slice + " --jobs 1 --weaken ignore-verdict --out " + weak.string());
-    const command_result ok = finish(ok_pipe);
-    const command_result bad = finish(bad_pipe);
-    std::printf("%s\n%s\n", ok.output.c_str(), bad.output.c_str());
-
+// A slice of the smoke campaign keeps the contract with the firmware as it
+// is. That the campaign fails a broken firmware is shown by the mutants
+// (tests/mutants, docs/mutants.md, `make mutants-ci`).
+TEST(FaultCampaign, SmokeSliceKeepsTheContract) {
+    const fs::path good = scratch("good");
+    const command_result ok =
+        run("faults --campaign smoke --match dark-leak:sensor=R --jobs 1 --out " + good.string());
+    std::printf("%s\n", ok.output.c_str());
     EXPECT_EQ(ok.exit_code, 0);
     const json g = read_json(good / "campaign.json");
     ASSERT_EQ(g["rows"].size(), 1u);
@@ -121,16 +115,6 @@ TEST(FaultCampaign, SmokeSliceKeepsTheContractAndTheWeakenedFirmwareBreaksIt) {
     EXPECT_EQ(g["rows"][0]["actual"], "hard_error");
     EXPECT_EQ(g["rows"][0]["unsynced_pairs_used"], 0);
     EXPECT_TRUE(fs::exists(good / "campaign.csv") && fs::exists(good / "campaign.txt"));
-
-    EXPECT_EQ(bad.exit_code, 1);
-    const json w = read_json(weak / "campaign.json");
-    ASSERT_EQ(w["rows"].size(), 1u);
-    EXPECT_EQ(w["contract_broken"], 1);
-    EXPECT_FALSE(w["rows"][0]["contract_ok"].get<bool>());
-    // The blind dark check lets the leaking pairs through: used, not discarded.
-    EXPECT_EQ(w["rows"][0]["actual"], "harmless");
-    EXPECT_GT(w["rows"][0]["pairs_used_after_onset"].get<int>(), 0);
-    EXPECT_FALSE(w["rows"][0]["violations"].empty());
     fs::remove_all(good.parent_path());
 }
 

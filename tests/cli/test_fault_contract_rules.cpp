@@ -1,0 +1,230 @@
+// The fault contract's rules of issue 12 (docs/fault-contract.md), each shown
+// to pass on a run that keeps it and to fail on one that breaks it. The
+// observations are written by hand: what a run of the platform would record.
+// That the rules catch real broken firmware and RTL is shown by the mutants
+// (tests/mutants, docs/mutants.md).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "tb/faults/contract.h"
+#include "tb/faults/fault_spec.h"
+#include "tb/platform/platform_config.h"
+
+namespace {
+
+using faults::outcome;
+
+faults::fault_spec spec_of(const std::string& text) {
+    std::string error;
+    const std::optional<faults::fault_spec> s = faults::parse_fault_spec(text, &error);
+    EXPECT_TRUE(s.has_value()) << error;
+    return s.value_or(faults::fault_spec{});
+}
+
+faults::contract_params params() {
+    return faults::params_for(platform::platform_config{});
+}
+
+// A skew on R at frame 4 of an 8-frame run, flagged, reported, recovered:
+// keeps the contract.
+faults::fault_observation good_skew() {
+    faults::fault_observation f;
+    f.in_effect = true;
+    f.onset_ms = 74;
+    f.detected = true;
+    f.detected_by = "sync_error";
+    f.detect_ms = 98;
+    f.frames_to_detect = 0;
+    f.causes = 0x22;
+    f.reported = true;
+    f.reported_by = "sync_error";
+    f.report_ms = 98.1;
+    f.recovered = true;
+    f.recover_ms = 147;
+    f.resumed_ms = 155;
+    f.frames_to_recover = 2;
+    return f;
+}
+
+faults::run_observation good_run() {
+    faults::run_observation run;
+    run.frames = 8;
+    run.end_ms = 196;
+    run.pairs_forwarded = 5;
+    run.pairs_in_step = 5;
+    run.pairs_processed = 5;
+    run.identity_checked = 5;
+    return run;
+}
+
+bool has_violation(const faults::verdict& v, const std::string& text) {
+    for (const std::string& why : v.violations)
+        if (why.find(text) != std::string::npos) return true;
+    return false;
+}
+
+const faults::fault_spec skew = spec_of("skew:sensor=R,lines=3@frame=4");
+
+TEST(FaultContractRules, TheGoodRunKeepsTheContract) {
+    const faults::verdict v = faults::check(good_skew(), skew, params(), good_run());
+    EXPECT_TRUE(v.ok) << (v.violations.empty() ? "" : v.violations[0]);
+    EXPECT_EQ(v.actual, outcome::resync);
+}
+
+// Rule 1: every in-step pair the card forwards is processed or dropped and
+// reported; processing resumes after a recovery; a clean run processes.
+TEST(FaultContractRules, TheFirmwareMustKeepWorking) {
+    faults::run_observation run = good_run();
+    run.pairs_unaccounted = 2;
+    run.unaccounted_pairs = {4, 5};
+    const faults::verdict v = faults::check(good_skew(), skew, params(), run);
+    EXPECT_FALSE(v.ok);
+    EXPECT_TRUE(has_violation(v, "neither processed nor reported dropped (pairs 4,5)"));
+
+    faults::fault_observation idle = good_skew();
+    idle.resumed_ms = -1;  // the card recovered at 147 ms, nothing processed by 245 ms
+    faults::run_observation longer = good_run();
+    longer.end_ms = 245;
+    EXPECT_TRUE(faults::check(good_skew(), skew, params(), longer).ok);
+    EXPECT_TRUE(has_violation(faults::check(idle, skew, params(), longer),
+                              "processed no pair within 2 periods"));
+
+    faults::run_observation empty;
+    empty.frames = 8;
+    EXPECT_TRUE(has_violation(faults::check_clean(empty), "no pair processed"));
+    empty.pairs_processed = 3;
+    EXPECT_TRUE(faults::check_clean(empty).ok);
+}
+
+// Rule 2: detected means reported by the firmware, per onset, in time,
+// whatever other sync errors the run had.
+TEST(FaultContractRules, DetectedMeansReportedPerOnset) {
+    faults::fault_observation f = good_skew();
+    faults::run_observation run = good_run();
+    run.firmware_sync_errors = 1;  // a start-up mismatch's report does not count
+    f.reported = false;
+    EXPECT_TRUE(has_violation(faults::check(f, skew, params(), run), "never reported it"));
+    f.reported = true;
+    f.report_ms = f.onset_ms + 21 * 24.5;  // past the 20-period bound
+    EXPECT_TRUE(has_violation(faults::check(f, skew, params(), run), "bound 20 periods"));
+    run.unreported_sync_errors = 1;
+    EXPECT_TRUE(has_violation(faults::check(good_skew(), skew, params(), run),
+                              "SYNC_ERROR(s) the firmware never reported"));
+    faults::run_observation overflow = good_run();
+    overflow.unreported_overflows = 2;
+    EXPECT_FALSE(faults::check(good_skew(), skew, params(), overflow).ok);
+}
+
+// Rule 3: false alarms over the whole run.
+TEST(FaultContractRules, FalseAlarmsCountOverTheWholeRun) {
+    faults::run_observation run = good_run();
+    run.false_alarms = 1;
+    EXPECT_TRUE(has_violation(faults::check(good_skew(), skew, params(), run), "false alarm"));
+    EXPECT_FALSE(faults::check_clean(run).ok);
+}
+
+// Rule 4: a fault that never took effect is its own outcome, and fails.
+TEST(FaultContractRules, AFaultThatNeverActedFails) {
+    faults::fault_observation f;
+    f.in_effect = false;
+    const faults::verdict v = faults::check(f, skew, params(), good_run());
+    EXPECT_EQ(v.actual, outcome::not_in_effect);
+    EXPECT_FALSE(v.ok);
+    EXPECT_STREQ(faults::outcome_name(v.actual), "not_in_effect");
+}
+
+// Rule 5: dead / oe-stuck expectations follow the truth, not what the card
+// chose to do: a restart due (out-of-step start) requires the hard error.
+TEST(FaultContractRules, DeadSensorExpectationsFollowTheTruth) {
+    const faults::fault_spec stuck = spec_of("oe-stuck:sensor=L");
+    faults::fault_observation f;
+    f.in_effect = true;
+    f.onset_ms = 0;
+    f.onset_start_out_of_step = true;
+    f.oe_starts_after = 0;  // the card never restarted: no excuse
+    faults::run_observation run = good_run();
+    run.end_ms = 245;
+    const faults::verdict v = faults::check(f, stuck, params(), run);
+    EXPECT_EQ(v.expected, outcome::hard_error);
+    EXPECT_FALSE(v.ok);
+}
+
+// Rule 6: cpu-slow and emif-wait rows whose parameters decide the outcome
+// allow only that outcome.
+TEST(FaultContractRules, CpuAndBusRowsThatSurelyOverrunOrFitAllowOneOutcome) {
+    const faults::contract_params p = params();
+    faults::fault_observation f;
+    f.in_effect = true;
+    f.pair_ms_min = 4;
+    const faults::run_observation run = good_run();
+    // Half of 4 ms is CPU time at least: x 20 = 40 ms > 1.2 x 24.5 ms.
+    EXPECT_EQ(faults::expected_for(f, spec_of("cpu-slow:factor=20"), p, run).allowed,
+              std::vector<outcome>{outcome::overrun});
+    EXPECT_EQ(faults::expected_for(f, spec_of("cpu-slow:factor=10"), p, run).allowed.size(), 2u);
+    // Every pair timed after the onset (>= 2) fitted the period.
+    faults::fault_observation fits = f;
+    fits.slowed_pairs = 3;
+    fits.slowed_ms_max = 16;
+    EXPECT_EQ(faults::expected_for(fits, spec_of("cpu-slow:factor=2"), p, run).allowed,
+              std::vector<outcome>{outcome::harmless});
+    fits.slowed_ms_max = 23;
+    EXPECT_EQ(faults::expected_for(fits, spec_of("cpu-slow:factor=2"), p, run).allowed.size(), 2u);
+    // Harmless where overrun is due: a firmware that never drops fails.
+    const faults::verdict v = faults::check(f, spec_of("cpu-slow:factor=20@frame=4"), p, run);
+    EXPECT_EQ(v.actual, outcome::harmless);
+    EXPECT_FALSE(v.ok);
+    // An overrun must name its dropped pairs.
+    faults::fault_observation dropped = f;
+    dropped.detected = true;
+    dropped.detected_by = "pair_dropped";
+    dropped.reported = true;
+    dropped.reported_by = "pair_dropped";
+    EXPECT_TRUE(has_violation(faults::check(dropped, spec_of("cpu-slow:factor=20"), p, run),
+                              "dropped pairs named"));
+    dropped.dropped_pairs = {6};
+    EXPECT_TRUE(faults::check(dropped, spec_of("cpu-slow:factor=20"), p, run).ok);
+    EXPECT_EQ(faults::expected_for(f, spec_of("emif-wait:cycles=40,ce=2"), p, run).allowed,
+              std::vector<outcome>{outcome::harmless});
+}
+
+// Rule 7: pending is not a pass.
+TEST(FaultContractRules, PendingIsNotAPass) {
+    faults::fault_observation f = good_skew();
+    f.recovered = false;
+    f.resumed_ms = -1;
+    faults::run_observation run = good_run();
+    run.end_ms = 110;  // ended 12 ms after the detection
+    const faults::verdict v = faults::check(f, skew, params(), run);
+    EXPECT_EQ(v.actual, outcome::pending);
+    EXPECT_FALSE(v.ok);
+}
+
+// Rule 8: the frames the firmware processed are those of the pair it names.
+TEST(FaultContractRules, PairIdentityAtThePointOfUse) {
+    faults::run_observation run = good_run();
+    run.identity_mismatches = 1;
+    run.mismatched_pairs = {3};
+    EXPECT_TRUE(has_violation(faults::check(good_skew(), skew, params(), run),
+                              "not the pair's own (pairs 3)"));
+}
+
+// Rule 9: the sync error blames the faulted sensor.
+TEST(FaultContractRules, TheVerdictBlamesTheFaultedSensor) {
+    faults::fault_observation f = good_skew();
+    f.causes = 0x11;  // L_WINDOW | L_VSYNC for a skew of R
+    EXPECT_TRUE(has_violation(faults::check(f, skew, params(), good_run()),
+                              "do not name the faulted sensor R"));
+    f.causes = 0x20;  // R_VSYNC alone names it
+    EXPECT_TRUE(faults::check(f, skew, params(), good_run()).ok);
+    // A drifting clock moves the streams against each other: the card flags
+    // the late one, so either stream's timing causes name it; dark ones do not.
+    const faults::fault_spec drift = spec_of("drift:sensor=R,ppm=1");
+    faults::fault_observation d = good_skew();
+    d.causes = 0x11;
+    EXPECT_TRUE(faults::check(d, drift, params(), good_run()).ok);
+    d.causes = 0x04;  // L_DARK
+    EXPECT_FALSE(faults::check(d, drift, params(), good_run()).ok);
+}
+
+}  // namespace
