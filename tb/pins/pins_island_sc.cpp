@@ -4,6 +4,7 @@
 #include <chrono>
 #include <string>
 
+#include "model/emif/ardy_glue.h"
 #include "model/emif/emif_pins_sc.h"
 #include "model/emif/emif_tlm_target_sc.h"
 #include "model/sensor/sensor_sc.h"
@@ -74,7 +75,8 @@ class pins_island : public platform::island {
           m_card_ed_oe("card_ed_oe"),
           m_card_ardy("card_ardy"),
           m_bus_ed("bus_ed"),
-          m_bus_ardy("bus_ardy") {
+          m_bus_ardy("bus_ardy"),
+          m_glue_edges("glue_edges") {
         m_rst_n.write(true);
         m_dsp_seen = pack_dsp_pins(engine.pins());
         for (int c = 0; c < 2; ++c) {
@@ -194,9 +196,15 @@ class pins_island : public platform::island {
         d.ext_int5.bind(ext_int5);
         d.ext_int6.bind(ext_int6);
 
+        for (const emif::ardy_fault& f : config.ardy_faults) m_glue.add(f);
         SC_METHOD(drive_bus);
         sensitive << m_ce[0] << m_ce[1] << m_ce[2] << m_ce[3] << m_card_ed << m_card_ed_oe
-                  << m_card_ardy;
+                  << m_card_ardy << m_are_n << m_awe_n << m_glue_edges;
+        if (!m_glue.empty()) {
+            SC_METHOD(clock_glue);
+            sensitive << m_eclk.posedge_event();
+            dont_initialize();
+        }
         for (int c = 0; c < 2; ++c) {
             if (!wire[c]) continue;
             m_wire_camera = c;
@@ -219,8 +227,25 @@ class pins_island : public platform::island {
         for (int i = 0; i < emif::ce_count && ce < 0; ++i)
             if (!m_ce[i].read()) ce = i;
         const bool card = ce == 2 || ce == 3;
-        m_bus_ardy.write(card ? m_card_ardy.read() : true);
+        m_bus_ardy.write(m_glue.bus_ardy(strobe_pins(), m_card_ardy.read(), m_engine));
         m_bus_ed.write(card && m_card_ed_oe.read() ? m_card_ed.read() : 0u);
+    }
+
+    // The DSP's pins the board glue looks at, as the signals carry them now.
+    emif::emif_pins strobe_pins() const {
+        emif::emif_pins p;
+        for (int i = 0; i < emif::ce_count; ++i) p.ce_n[i] = m_ce[i].read();
+        p.are_n = m_are_n.read();
+        p.awe_n = m_awe_n.read();
+        return p;
+    }
+
+    // The glue's register at each ECLK rise, from the pins before it (the
+    // EMIF's writes of this edge land a delta later); its count as a signal
+    // so that drive_bus sees the change.
+    void clock_glue() {
+        m_glue.clock(strobe_pins(), emif::tick_at_or_before(sc_core::sc_time_stamp()));
+        m_glue_edges.write(m_glue_edges.read() + 1);
     }
 
     // A stuck DATA bit on the wire to the card (platform::wire_fault), from
@@ -444,6 +469,7 @@ class pins_island : public platform::island {
         trace_set(t, trace_pin::ext_int5, ext_int5.read());
         trace_set(t, trace_pin::ext_int6, ext_int6.read());
         trace_set(t, trace_pin::slave_ardy, m_card_ardy.read());
+        trace_set(t, trace_pin::ardy, m_bus_ardy.read());
         trace_set(t, trace_pin::slave_ed_oe, m_card_ed_oe.read());
         if (m_card_ed_oe.read()) {
             trace_set(t, trace_pin::slave_ed, m_card_ed.read());
@@ -472,6 +498,8 @@ class pins_island : public platform::island {
     sig_bool m_card_ed_oe, m_card_ardy;
     sig_u32 m_bus_ed;
     sig_bool m_bus_ardy;
+    emif::ardy_glue m_glue;  // the board between the card's ARDY and the DSP's
+    sig_u32 m_glue_edges;    // ECLK rises the glue clocked
 
     std::unique_ptr<sensor::sensor_sc> m_sensor_sc[2];
     std::unique_ptr<emif::emif_pins_sc> m_emif;

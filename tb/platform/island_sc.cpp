@@ -74,6 +74,7 @@ island::island(sc_core::sc_module_name name, const island_config& config,
       m_eclk(engine.config().eclk),
       m_trace_edges_from(trace_edges_from(config, engine.config().eclk)) {
     m_card = std::make_unique<Vcard>(m_context.get(), "card");
+    for (const emif::ardy_fault& f : config.ardy_faults) m_glue.add(f);
     for (int c = 0; c < 2; ++c) {
         m_sensor[c] = std::make_unique<sensor::sensor_core>(
             config.profile, c == 0 ? scene::camera_id::left : scene::camera_id::right, source,
@@ -221,11 +222,12 @@ ticks island::advance(ticks limit, bool* stopped) {
         // 1. Every core samples its inputs as they were before the tick.
         emif::emif_inputs in;
         if (ee) {
-            const int ce = engine.pins().active_ce();
-            if (ce == 2 || ce == 3) {
-                in.ardy = d.ardy != 0;
-                in.ed_in = d.ed_oe ? d.ed_out : 0u;
-            }
+            const emif::emif_pins& before = engine.pins();
+            const int ce = before.active_ce();
+            // ARDY through the board glue (emif-wait, model/emif/ardy_glue.h).
+            in.ardy = m_glue.bus_ardy(before, d.ardy != 0, engine);
+            if (ce == 2 || ce == 3) in.ed_in = d.ed_oe ? d.ed_out : 0u;
+            m_glue.clock(before, t);
         }
         const bool oe_before = d.sensor_oe != 0;
         if (pe) d.pclk = 1;
@@ -586,6 +588,7 @@ void island::trace_card(ticks t) {
     trace_set(t, trace_pin::ext_int5, d.ext_int5);
     trace_set(t, trace_pin::ext_int6, d.ext_int6);
     trace_set(t, trace_pin::slave_ardy, d.ardy);
+    trace_set(t, trace_pin::ardy, m_glue.bus_ardy(m_engine.pins(), d.ardy != 0, m_engine));
     trace_set(t, trace_pin::slave_ed_oe, d.ed_oe);
     if (d.ed_oe) {
         trace_set(t, trace_pin::slave_ed, d.ed_out);

@@ -39,6 +39,7 @@
 #include <systemc>
 #include <vector>
 
+#include "model/emif/ardy_glue.h"
 #include "model/emif/emif_async_master.h"
 #include "model/sensor/frame_source.h"
 #include "model/sensor/sensor_core.h"
@@ -61,7 +62,8 @@ struct island_config {
     sensor::sensor_config sensor[2];  // left, right
     std::vector<sensor::fault> faults[2];
     wire_fault wire;
-    simtime::tick_clock pclk;  // the card's master pixel clock
+    std::vector<emif::ardy_fault> ardy_faults;  // the board glue's wait states (emif-wait)
+    simtime::tick_clock pclk;                   // the card's master pixel clock
     simtime::ticks quantum = 0;
     simtime::ticks end = INT64_MAX;          // the island never steps an edge after this tick
     simtime::ticks period = period_24_5_ms;  // for the per-period samples
@@ -217,6 +219,7 @@ class island : public sc_core::sc_module {
 
     island_config m_config;
     emif::emif_async_master& m_engine;
+    emif::ardy_glue m_glue;  // the board between the card's ARDY and the DSP's
     timeline& m_events;
     std::unique_ptr<VerilatedContext> m_context;
     std::unique_ptr<Vcard> m_card;

@@ -48,6 +48,7 @@ const trace_signal table[trace_pin_count] = {
     {"emif", "AOE_n", 1, f::bits},
     {"emif", "ARE_n", 1, f::bits},
     {"emif", "AWE_n", 1, f::bits},
+    {"emif", "ARDY", 1, f::bits},
     {"interrupts", "taken", 8, f::interrupt},
     {"interrupts", "cpu_asleep", 1, f::bits},
     {"firmware", "stage", 3, f::firmware_stage},

@@ -117,6 +117,7 @@ enum class trace_pin : uint8_t {
     aoe_n,
     are_n,
     awe_n,
+    ardy,  // the DSP's ARDY input: the card's through the board glue
     // interrupts / firmware: from the timeline
     irq_taken,
     cpu_asleep,

@@ -36,6 +36,7 @@ island_config make_island_config(const platform_config& config) {
     c.faults[0] = config.left_faults;
     c.faults[1] = config.right_faults;
     c.wire = config.wire;
+    c.ardy_faults = config.ardy_faults;
     c.pclk = simtime::tick_clock(config.profile.mclk_period);
     c.quantum = config.quantum;
     c.period = config.period;
@@ -78,8 +79,8 @@ platform_top::platform_top(const platform_config& config)
                                             m_engine, m_timeline);
     }
     m_engine.set_sdram_storage(m_cpu->sdram_storage(), m_cpu->sdram_storage_bytes());
-    // Injected bus and CPU faults (tb/faults, docs/faults.md).
-    for (const emif::ardy_fault& f : config.ardy_faults) m_engine.set_ardy_fault(f);
+    // Injected CPU faults (tb/faults, docs/faults.md); the bus's ARDY faults
+    // are the board glue's, in the island (model/emif/ardy_glue.h).
     if (config.cpu_slow_num != config.cpu_slow_den)
         m_cpu->set_cycle_scale(config.cpu_slow_num, config.cpu_slow_den,
                                emif::time_of_tick(config.cpu_slow_from));
