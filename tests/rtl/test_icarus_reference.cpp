@@ -40,8 +40,8 @@ constexpr simtime::ticks ticks_per_us = 18000;
 constexpr simtime::ticks window_ticks = 2000 * ticks_per_us;  // 2 ms from reset
 
 std::string repo_root() {
-    // This file is tests/rtl/test_icarus_reference.cpp under the repository.
-    return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path().string();
+    // From CMake, not __FILE__: ccache's base_dir makes __FILE__ relative.
+    return STEREOSIM_SOURCE_DIR;
 }
 
 double wall_since(std::chrono::steady_clock::time_point t0) {
