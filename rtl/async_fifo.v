@@ -43,14 +43,14 @@ module async_fifo #(
     localparam logic [AW:0] DEPTH_P = (AW + 1)'(DEPTH);
 
     function automatic logic [AW:0] bin2gray(input logic [AW:0] b);
-        return b ^ (b >> 1);
+        bin2gray = b ^ (b >> 1);
     endfunction
 
     function automatic logic [AW:0] gray2bin(input logic [AW:0] g);
         logic [AW:0] b;
         b[AW] = g[AW];
         for (int i = AW - 1; i >= 0; i--) b[i] = b[i+1] ^ g[i];
-        return b;
+        gray2bin = b;
     endfunction
 
     logic [DW-1:0] mem[DEPTH];
@@ -87,8 +87,10 @@ module async_fifo #(
                 if (wr_en && wr_full) wr_overflow <= 1'b1;
                 if (wr_level > wr_peak) wr_peak <= wr_level;
             end
+`ifndef SYNTHESIS  // immediate assertions with an action block: simulation only
             assert (wr_level <= DEPTH_P)
             else $error("write side level %0d above depth %0d", wr_level, DEPTH);
+`endif
         end
     end
 
@@ -116,9 +118,11 @@ module async_fifo #(
                 rbin_q  <= rbin_next;
                 rgray_q <= bin2gray(rbin_next);
             end
+`ifndef SYNTHESIS  // immediate assertions with an action block: simulation only
             assert (!(rd_en && rd_empty)) else $error("read of an empty FIFO");
             assert (rd_level <= DEPTH_P)
             else $error("read side level %0d above depth %0d", rd_level, DEPTH);
+`endif
         end
     end
 

@@ -229,7 +229,9 @@ module card_capture #(
                 discard_end_l   <= l_end;
                 discard_begin_r <= r_begin;
                 discard_end_r   <= r_end;
+`ifndef SYNTHESIS  // immediate assertions with an action block: simulation only
                 assert (!discard_pending) else $error("second discard region while one is pending");
+`endif
             end
             if (pair_good && fwd_now) begin
                 ready_end_l <= l_end;

@@ -86,7 +86,7 @@ module card_regfile #(
                                           input logic [3:0] be);
         logic [31:0] m;
         for (int i = 0; i < 4; i++) m[8*i+:8] = be[i] ? data[8*i+:8] : old[8*i+:8];
-        return m;
+        merge = m;
     endfunction
 
     // ---- read/write configuration registers -----------------------------------------
@@ -198,7 +198,7 @@ module card_regfile #(
     function automatic logic reached(input logic [AW:0] wptr, input logic [AW:0] end_ptr);
         logic [AW:0] ahead;
         ahead = wptr - end_ptr;
-        return ahead <= DEPTH_P;
+        reached = ahead <= DEPTH_P;
     endfunction
 
     wire pair_readable = frame_pending_q && reached(rd_wptr_l, pending_end_l_q) &&

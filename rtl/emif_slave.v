@@ -114,8 +114,10 @@ module emif_slave (
                 rd_busy_q <= 1'b0;
                 ready_q   <= 1'b0;
             end
+`ifndef SYNTHESIS  // immediate assertions with an action block: simulation only
             assert (!(sel_reg && sel_data)) else $error("CE2 and CE3 both asserted");
             assert (!(sel && !are_n && !awe_n)) else $error("ARE and AWE both asserted");
+`endif
         end
     end
 

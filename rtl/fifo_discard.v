@@ -44,7 +44,9 @@ module fifo_discard #(
             active_q <= 1'b1;
             begin_q  <= begin_ptr;
             end_q    <= end_ptr;
+`ifndef SYNTHESIS  // immediate assertions with an action block: simulation only
             assert (!active_q) else $error("new discard region while one is active");
+`endif
         end else if (active_q && !in_region && !behind) begin
             active_q <= 1'b0;
         end

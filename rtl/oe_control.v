@@ -79,7 +79,9 @@ module oe_control (
             if (state_q == S_IDLE) fails_q <= '0;
             else if (retry_evt) fails_q <= fails_q + 8'd1;
             else if (state_q == S_RUN && frame_end && !frame_sync_bad) fails_q <= '0;
+`ifndef SYNTHESIS  // immediate assertions with an action block: simulation only
             assert (state_q <= S_HARD_ERROR) else $error("illegal OE controller state %0d", state_q);
+`endif
         end
     end
 
