@@ -44,6 +44,11 @@ std::vector<std::string> words(const std::string& text) {
 const plan_entry smoke_faults[] = {
     {"skew:sensor=R,lines=3@frame=4", 8, 8},
     {"skew:sensor=L,pixels=1@frame=2", 8, 8},
+    // RETRY_LIMIT 0: every failed check is a card hard error and a firmware
+    // re-arm; two of them with good pairs between must not add up to a
+    // give-up. Seed 3's starts after each re-arm are in step by the truth
+    // (two out-of-step starts in a row would make the give-up right).
+    {"skew:sensor=R,lines=3@frame=3 skew:sensor=L,lines=2@frame=7", 12, 0},
     {"drop-line:sensor=L,line=100@frame=4", 8, 8},
     {"drop-frame:sensor=R@frame=4", 8, 8},
     {"extra-frame:sensor=L@frame=4", 8, 8},
@@ -51,7 +56,9 @@ const plan_entry smoke_faults[] = {
     {"drift:sensor=R,ppm=200", 10, 2},
     {"glitch:sensor=L,signal=href@ms=130.2", 10, 8},
     {"glitch:sensor=R,signal=vsync@ms=100", 8, 8},
-    {"dark-leak:sensor=R,level=80@frame=2", 10, 2},
+    // 48 - 6 sigma >= 32: flagged every frame; 48 + 6 sigma < 64: a
+    // threshold programmed one bit off would never see it.
+    {"dark-leak:sensor=R,level=48@frame=2", 10, 2},
     {"dark-leak:sensor=L,level=8", 8, 8},
     {"stuck-bit:sensor=L,bit=7", 10, 2},
     {"stuck-bit:sensor=R,bit=0", 8, 8},
