@@ -370,6 +370,14 @@ verdict check(const fault_observation& f, const fault_spec& s, const contract_pa
         run.hard_error_ms - f.onset_ms > bound * period)
         violate("hard error " + std::to_string(run.hard_error_ms - f.onset_ms) +
                 " ms after the onset (bound " + std::to_string(bound) + " periods)");
+    // Not before its re-arms either: the card's failed checks since the last
+    // good pair (none: a silent card, the watchdog's give-up).
+    const int due_checks = static_cast<int>((p.hard_error_rearms + 1) * (p.retry_limit + 1));
+    if (v.actual == outcome::hard_error && run.failed_checks_before_give_up > 0 &&
+        run.failed_checks_before_give_up < due_checks)
+        violate("the firmware gave up after " + std::to_string(run.failed_checks_before_give_up) +
+                " failed checks, before its " + std::to_string(p.hard_error_rearms) +
+                " re-arm(s): (re-arms + 1) x (RETRY_LIMIT + 1) = " + std::to_string(due_checks));
     if (v.actual == outcome::overrun && f.dropped_pairs.empty())
         violate("overrun without the dropped pairs named in a pair_dropped report");
     check_reports(f, s, p, violate);

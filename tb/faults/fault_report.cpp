@@ -144,6 +144,7 @@ void add_to_report(json& report, const fault_run_result& r) {
         {"sync_errors_before_onset", run.sync_errors_before_onset},
         {"hard_error", run.hard_error},
         {"hard_error_ms", null_if(run.hard_error, run.hard_error_ms)},
+        {"failed_checks_before_give_up", run.failed_checks_before_give_up},
         {"contract_params", params_json(r.params)},
         {"contract_ok", r.contract_ok()},
         {"violations", violations},
@@ -188,6 +189,7 @@ bool read_from_report(const json& report, fault_run_result* r, std::string* erro
     run.sync_errors_before_onset = integer(j, "sync_errors_before_onset");
     run.hard_error = j.value("hard_error", false);
     run.hard_error_ms = num(j, "hard_error_ms");
+    run.failed_checks_before_give_up = integer(j, "failed_checks_before_give_up");
     for (const json& f : report["faults"]) {
         std::string parse_error;
         const std::optional<fault_spec> spec =

@@ -85,6 +85,10 @@ struct run_observation {
     int sync_errors_before_onset = 0;
     bool hard_error = false;  // the firmware reported hard_error
     double hard_error_ms = -1;
+    // Card SYNC_ERROR pulses (failed checks) between the last FRAME_READY
+    // before the give-up and the give-up: a give-up before the documented
+    // count is as wrong as one after the bound.
+    int failed_checks_before_give_up = 0;
     std::vector<fault_observation> faults;
 };
 

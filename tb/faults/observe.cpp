@@ -421,6 +421,13 @@ void observe_run_rules(const run_sources& in, const std::vector<fault_spec>& spe
         if (e.event.kind == dsp::firmware_event::hard_error) stop = std::min(stop, e.tick);
     const simtime::ticks until = std::min(stop, in.top.end_tick() - window);
     account_pairs(in.score, in.events, 2 * window, stop, run);
+    if (run->hard_error) {
+        simtime::ticks last_good = -1;
+        for (simtime::ticks t : in.top.cycle_island().irq_rises(0))
+            if (t < stop) last_good = t;
+        for (simtime::ticks t : in.sync_errors)
+            run->failed_checks_before_give_up += t > last_good && t <= stop;
+    }
     run->unreported_sync_errors =
         unreported(in.sync_errors, in.events, dsp::firmware_event::sync_error, window, until);
     run->unreported_overflows =

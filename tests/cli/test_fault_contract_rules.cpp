@@ -134,6 +134,28 @@ TEST(FaultContractRules, AFaultThatNeverActedFails) {
     EXPECT_STREQ(faults::outcome_name(v.actual), "not_in_effect");
 }
 
+// Rule 4: no hang, and no give-up before the documented re-arms either.
+TEST(FaultContractRules, TheFirmwareGivesUpNeitherLateNorEarly) {
+    const faults::fault_spec leak = spec_of("dark-leak:sensor=R,level=48@frame=2");
+    faults::contract_params p = params();
+    p.retry_limit = 2;  // (1 + 1) x (2 + 1) = 6 failed checks, bound 8 periods
+    faults::fault_observation f = good_skew();
+    f.causes = 0x08;  // R_DARK
+    f.recovered = false;
+    faults::run_observation run = good_run();
+    run.end_ms = 245;
+    run.hard_error = true;
+    run.hard_error_ms = f.onset_ms + 7 * 24.5;
+    run.failed_checks_before_give_up = 6;
+    EXPECT_TRUE(faults::check(f, leak, p, run).ok);
+    run.failed_checks_before_give_up = 3;  // gave up at the card's first HARD_ERROR
+    EXPECT_TRUE(has_violation(faults::check(f, leak, p, run), "gave up after 3 failed checks"));
+    run.failed_checks_before_give_up = 0;  // a silent card: the watchdog's give-up
+    EXPECT_TRUE(faults::check(f, leak, p, run).ok);
+    run.hard_error_ms = f.onset_ms + 9 * 24.5;  // past the 8-period bound
+    EXPECT_FALSE(faults::check(f, leak, p, run).ok);
+}
+
 // Rule 5: dead / oe-stuck expectations follow the truth, not what the card
 // chose to do: a restart due (out-of-step start) requires the hard error.
 TEST(FaultContractRules, DeadSensorExpectationsFollowTheTruth) {
