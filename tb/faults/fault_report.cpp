@@ -145,6 +145,10 @@ void add_to_report(json& report, const fault_run_result& r) {
         {"hard_error", run.hard_error},
         {"hard_error_ms", null_if(run.hard_error, run.hard_error_ms)},
         {"failed_checks_before_give_up", run.failed_checks_before_give_up},
+        {"boxes_scored", run.boxes_scored},
+        {"points_scored", run.points_scored},
+        {"max_box_err_px", run.max_box_err_px},
+        {"max_depth_err_pct", run.max_depth_err_pct},
         {"contract_params", params_json(r.params)},
         {"contract_ok", r.contract_ok()},
         {"violations", violations},
@@ -190,6 +194,10 @@ bool read_from_report(const json& report, fault_run_result* r, std::string* erro
     run.hard_error = j.value("hard_error", false);
     run.hard_error_ms = num(j, "hard_error_ms");
     run.failed_checks_before_give_up = integer(j, "failed_checks_before_give_up");
+    run.boxes_scored = integer(j, "boxes_scored");
+    run.points_scored = integer(j, "points_scored");
+    run.max_box_err_px = num(j, "max_box_err_px", 0);
+    run.max_depth_err_pct = num(j, "max_depth_err_pct", 0);
     for (const json& f : report["faults"]) {
         std::string parse_error;
         const std::optional<fault_spec> spec =

@@ -89,6 +89,10 @@ struct run_observation {
     // before the give-up and the give-up: a give-up before the documented
     // count is as wrong as one after the bound.
     int failed_checks_before_give_up = 0;
+    // The firmware's output against the scene's ground truth (scoreboard):
+    // boxes and 3D points scored, and their worst errors.
+    int boxes_scored = 0, points_scored = 0;
+    double max_box_err_px = 0, max_depth_err_pct = 0;
     std::vector<fault_observation> faults;
 };
 

@@ -248,6 +248,10 @@ void count_run(const run_sources& in, run_observation* run) {
     run->unsynced_pairs_used = in.score.used_out_of_step;
     run->misses = in.score.forwarded_out_of_step;
     run->used_before_verdict = in.score.used_before_verdict;
+    run->boxes_scored = in.score.summary.box_scored_frames;
+    run->points_scored = in.score.summary.point_scored_frames;
+    run->max_box_err_px = in.score.summary.max_box_centre_err_px;
+    run->max_depth_err_pct = in.score.summary.max_abs_depth_err_pct;
     for (const platform::fw_event& e : in.events) {
         switch (e.event.kind) {
             case dsp::firmware_event::pair_rejected:

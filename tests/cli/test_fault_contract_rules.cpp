@@ -91,10 +91,28 @@ TEST(FaultContractRules, TheFirmwareMustKeepWorking) {
                               "processed no pair within 2 periods"));
 
     faults::run_observation empty;
-    empty.frames = 8;
+    empty.frames = 6;
     EXPECT_TRUE(has_violation(faults::check_clean(empty), "no pair processed"));
     empty.pairs_processed = 3;
     EXPECT_TRUE(faults::check_clean(empty).ok);
+}
+
+// Working means right: a clean run's boxes and 3D points against the
+// scene's ground truth.
+TEST(FaultContractRules, ACleanRunTracksTheObjectRightly) {
+    faults::run_observation clean = good_run();  // 8 frames
+    EXPECT_TRUE(has_violation(faults::check_clean(clean), "no 3D point"));
+    clean.boxes_scored = 2;
+    clean.points_scored = 2;
+    clean.max_box_err_px = 1.4;
+    clean.max_depth_err_pct = 0.3;
+    EXPECT_TRUE(faults::check_clean(clean).ok);
+    faults::run_observation off = clean;
+    off.max_box_err_px = 7;
+    EXPECT_TRUE(has_violation(faults::check_clean(off), "px off"));
+    off = clean;
+    off.max_depth_err_pct = 12;
+    EXPECT_TRUE(has_violation(faults::check_clean(off), "% off"));
 }
 
 // Rule 2: detected means reported by the firmware, per onset, in time,

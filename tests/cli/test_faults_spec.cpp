@@ -296,6 +296,7 @@ TEST(FaultContract, ViolationsAreReported) {
     faults::run_observation clean;
     clean.frames = 8;
     clean.pairs_processed = 4;
+    clean.points_scored = 2;
     EXPECT_TRUE(faults::check_clean(clean).ok);
     clean.false_alarms = 1;
     EXPECT_FALSE(faults::check_clean(clean).ok);

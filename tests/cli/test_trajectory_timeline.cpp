@@ -72,11 +72,9 @@ TEST(trajectory_timeline, plot_and_trace_of_a_tracked_run) {
     const std::string dir = temp_dir();
     ASSERT_FALSE(dir.empty());
     std::string out;
-    const int code =
-        run_command(std::string("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 ") + STEREOSIM_BINARY +
-                        " run --frames 8 --quiet --out " +
-                        dir,
-                    &out);
+    const int code = run_command(std::string("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 ") +
+                                     STEREOSIM_BINARY + " run --frames 8 --quiet --out " + dir,
+                                 &out);
     ASSERT_LE(code, 1) << out;
     const json report = json::parse(read_text(dir + "/report.json"));
     int estimates = 0;
