@@ -242,6 +242,9 @@ void invariants(const run_observation& run, verdict* v, bool allow_stale) {
     if (run.unreported_overflows > 0)
         violate(std::to_string(run.unreported_overflows) +
                 " card OVERFLOW(s) the firmware never reported");
+    if (run.unreported_in_step > 0)
+        violate(std::to_string(run.unreported_in_step) +
+                " OE start(s) whose pairs the firmware used without reporting in_step");
     if (run.identity_mismatches > 0)
         violate(std::to_string(run.identity_mismatches) +
                 " pair(s) processed with frames that are not the pair's own (pairs " +

@@ -129,6 +129,7 @@ void add_to_report(json& report, const fault_run_result& r) {
         {"unaccounted_pairs", run.unaccounted_pairs},
         {"unreported_sync_errors", run.unreported_sync_errors},
         {"unreported_overflows", run.unreported_overflows},
+        {"unreported_in_step", run.unreported_in_step},
         {"identity_checked", run.identity_checked},
         {"identity_mismatches", run.identity_mismatches},
         {"mismatched_pairs", run.mismatched_pairs},
@@ -178,6 +179,7 @@ bool read_from_report(const json& report, fault_run_result* r, std::string* erro
     run.unaccounted_pairs = pair_list(j, "unaccounted_pairs");
     run.unreported_sync_errors = integer(j, "unreported_sync_errors");
     run.unreported_overflows = integer(j, "unreported_overflows");
+    run.unreported_in_step = integer(j, "unreported_in_step");
     run.identity_checked = integer(j, "identity_checked");
     run.identity_mismatches = integer(j, "identity_mismatches");
     run.mismatched_pairs = pair_list(j, "mismatched_pairs");

@@ -70,6 +70,9 @@ struct run_observation {
     // Card SYNC_ERROR / OVERFLOW pulses the firmware did not report within a
     // period (before it gave up and a period before the end).
     int unreported_sync_errors = 0, unreported_overflows = 0;
+    // OE raises after which the firmware processed a pair without first
+    // reporting in_step (the host learns the card is in step from it).
+    int unreported_in_step = 0;
     // Pair identity at the point of use: the frames the firmware read for
     // each processed pair against the sensors' frames of the pair it names.
     int identity_checked = 0, identity_mismatches = 0;

@@ -436,6 +436,15 @@ void observe_run_rules(const run_sources& in, const std::vector<fault_spec>& spe
         unreported(in.sync_errors, in.events, dsp::firmware_event::sync_error, window, until);
     run->unreported_overflows =
         unreported(in.overflows, in.events, dsp::firmware_event::overflow, window, until);
+    bool awaiting = false;  // an OE raise not yet followed by in_step
+    for (const platform::fw_event& e : in.events) {
+        if (e.event.kind == dsp::firmware_event::oe_raised) awaiting = true;
+        if (e.event.kind == dsp::firmware_event::in_step) awaiting = false;
+        if (e.event.kind == dsp::firmware_event::pair_processed && awaiting) {
+            ++run->unreported_in_step;
+            awaiting = false;
+        }
+    }
     for (const platform::used_pair& u : in.top.used_pairs()) {
         if (!u.checked) continue;
         ++run->identity_checked;

@@ -132,6 +132,9 @@ TEST(FaultContractRules, DetectedMeansReportedPerOnset) {
     faults::run_observation overflow = good_run();
     overflow.unreported_overflows = 2;
     EXPECT_FALSE(faults::check(good_skew(), skew, params(), overflow).ok);
+    faults::run_observation silent_start = good_run();
+    silent_start.unreported_in_step = 1;
+    EXPECT_TRUE(has_violation(faults::check_clean(silent_start), "without reporting in_step"));
 }
 
 // Rule 3: false alarms over the whole run.
