@@ -108,6 +108,18 @@ bool attributable(const platform::platform_top& top, const platform::scoreboard_
     return (ft.faults & sensor::fault_bit(sensor_kind(s))) != 0;
 }
 
+// The pair numbers a pair_dropped report names ([pair - count, pair)),
+// clipped to the pairs the card forwarded: a firmware that garbles the
+// report must not make the testbench enumerate billions of numbers.
+std::vector<uint32_t> dropped_by(const dsp::event_record& e, size_t forwarded) {
+    std::vector<uint32_t> out;
+    const uint64_t end = std::min<uint64_t>(e.pair, forwarded + 1);
+    const uint64_t begin = e.value < e.pair ? e.pair - e.value : 1;
+    for (uint64_t n = std::max<uint64_t>(begin, 1); n < end; ++n)
+        out.push_back(static_cast<uint32_t>(n));
+    return out;
+}
+
 // Whether a SYNC_ERROR at `t` in start `start` is explained by fault `s`
 // (onset `onset`): a persistent fault explains every one after its onset, a
 // one-frame timing fault those of the start it hit (until the restart).
@@ -169,8 +181,7 @@ void account_pairs(const platform::scoreboard_report& score,
     std::set<uint32_t> dropped;
     for (const platform::fw_event& e : events)
         if (e.event.kind == dsp::firmware_event::pair_dropped)
-            for (uint32_t n = e.event.pair - e.event.value; n < e.event.pair; ++n)
-                dropped.insert(n);
+            for (uint32_t n : dropped_by(e.event, score.pairs.size())) dropped.insert(n);
     uint32_t last_processed = 0;
     for (const platform::pair_check& p : score.pairs)
         if (p.processed) last_processed = std::max(last_processed, p.pair);
@@ -258,7 +269,8 @@ void count_run(const run_sources& in, run_observation* run) {
                 ++run->pairs_rejected;
                 break;
             case dsp::firmware_event::pair_dropped:
-                run->pairs_dropped += static_cast<int>(e.event.value);
+                run->pairs_dropped +=
+                    static_cast<int>(dropped_by(e.event, in.score.pairs.size()).size());
                 break;
             case dsp::firmware_event::sync_error:
                 ++run->firmware_sync_errors;
@@ -357,9 +369,9 @@ void observe_pairs(const run_sources& in, simtime::ticks onset, fault_observatio
     }
     for (const platform::fw_event& e : in.events)
         if (e.event.kind == dsp::firmware_event::pair_dropped && e.tick >= onset) {
-            f->pairs_dropped += static_cast<int>(e.event.value);
-            for (uint32_t n = e.event.pair - e.event.value; n < e.event.pair; ++n)
+            for (uint32_t n : dropped_by(e.event, in.score.pairs.size()))
                 f->dropped_pairs.push_back(n);
+            f->pairs_dropped = static_cast<int>(f->dropped_pairs.size());
         }
 }
 
