@@ -79,13 +79,13 @@ const plan_entry full_faults[] = {
     {"skew:sensor=L,pixels=1@frame=2", 14, 8},
     {"skew:sensor=R,pixels=7@frame=6", 14, 8},
     {"drop-line:sensor=L,line=0@frame=4", 14, 8},
-    {"drop-line:sensor=R,line=100@frame=7", 14, 8},
+    {"drop-line:sensor=R,line=100@frame=7", 20, 8},
     {"drop-line:sensor=L,line=500@frame=3", 14, 8},
     {"drop-frame:sensor=R@frame=4", 14, 8},
     {"drop-frame:sensor=L@frame=6", 14, 8},
     {"extra-frame:sensor=L@frame=4", 14, 8},
-    {"drift:sensor=R,ppm=1", 14, 8},
-    {"drift:sensor=L,ppm=-1", 14, 8},
+    {"drift:sensor=R,ppm=1", 20, 8},
+    {"drift:sensor=L,ppm=-1", 20, 8},
     {"drift:sensor=R,ppm=200", 10, 2},
     {"drift:sensor=L,ppm=-50", 10, 2},
     {"glitch:sensor=L,signal=href@ms=130.2", 14, 8},
@@ -112,7 +112,7 @@ const plan_entry full_faults[] = {
     {"emif-wait:cycles=40,ce=2@frame=3", 14, 8},
     {"cpu-slow:factor=1.5@frame=4", 14, 8},
     {"cpu-slow:factor=3@frame=4", 14, 8},
-    {"cpu-slow:factor=20@frame=4", 14, 8},
+    {"cpu-slow:factor=20@frame=4", 20, 8},
 };
 
 // Full campaign: 84 clean runs of 12 frames = 1008 clean frames.

