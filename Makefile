@@ -2,7 +2,8 @@
 #   make test   install what is missing, configure, build, run the whole suite
 #   make demo   same set-up, then run the main job
 # Other targets: build, test-sanitize (ASan+UBSan build running the CI part),
-# bench (Google Benchmark programs, kept out of `make test`), lint, format.
+# bench (Google Benchmark programs, kept out of `make test`), lint, format,
+# synth (Yosys cell count of the card RTL).
 BUILD ?= build
 BUILD_SAN ?= build-asan
 BUILD_BENCH ?= build-bench
@@ -70,6 +71,15 @@ lint: deps
 	@for f in $$(find rtl -maxdepth 1 -name '*.v' | sort); do \
 		verilator --lint-only -Wall -Irtl $$f || exit 1; done; echo "lint: rtl clean"
 
+# Generic synthesis of the card with Yosys (docs/card.md "Synthesis"): cells
+# by type, flip-flops and memory bits of card_top, the FIFOs kept as memories;
+# summary printed and written to $(BUILD_SYNTH)/summary.txt with Yosys' log.
+BUILD_SYNTH ?= build-synth
+SYNTH_FIFO_AW ?= 17
+.PHONY: synth
+synth: deps
+	@bash scripts/synth-card $(BUILD_SYNTH) $(SYNTH_FIFO_AW)
+
 
 format:
 	clang-format -i $$(git ls-files '*.cpp' '*.h')
@@ -88,3 +98,36 @@ coverage-rtl: deps
 	rm -rf $(BUILD_COV)/coverage-rtl
 	cd $(BUILD_COV) && ctest --output-on-failure -j $(JOBS) -L rtl
 	bash rtl/coverage_report.sh $(BUILD_COV)/coverage-rtl 90
+
+# Mutation qualification of the fault campaign (docs/mutants.md): every
+# firmware mutant (tests/mutants/firmware/*.patch) and RTL mutant
+# (tests/mutants/rtl/generate) is built in its own tree under build-mutants/
+# and must be killed: firmware by the smoke campaign alone, RTL by
+# ctest -L rtl or the campaign. Reports in build-mutants/results*/mutants.txt.
+# MUTANT_JOBS mutants at a time (empty: the runner's default, 1).
+MUTANT_JOBS ?=
+MUTANTS_ARGS ?=
+# mutants-ci: a fixed slice the smoke campaign kills, three firmware mutants
+# of different kinds (hard-error path never taken, pair drops not counted,
+# the left frame processed twice) and one RTL mutant: MUTANTS_CI_RTL, or if
+# empty the first id the generator makes with seed MUTANTS_CI_RTL_SEED.
+MUTANTS_CI_FIRMWARE ?= fw-03-hard-error-never-taken,fw-09-pair-drops-not-counted,fw-15-left-frame-twice
+MUTANTS_CI_RTL ?=
+MUTANTS_CI_RTL_SEED ?= 1
+MUTANTS_CI_RTL_DIR ?= build-mutants/rtl-ci
+.PHONY: mutants mutants-ci
+mutants: build
+	python3 tests/mutants/run_mutants.py $(if $(MUTANT_JOBS),--jobs $(MUTANT_JOBS)) $(MUTANTS_ARGS)
+
+mutants-ci: build
+	@rtl="$(MUTANTS_CI_RTL)"; kind=firmware; rtl_args=""; \
+	if [ -x tests/mutants/rtl/generate ]; then \
+		tests/mutants/rtl/generate $(MUTANTS_CI_RTL_DIR) --seed $(MUTANTS_CI_RTL_SEED) || exit 2; \
+		[ -n "$$rtl" ] || rtl=$$(awk -F'\t' 'NR == 2 { print $$1 }' $(MUTANTS_CI_RTL_DIR)/rtl-mutants.tsv); \
+		kind=all; rtl_args="--rtl-dir $(MUTANTS_CI_RTL_DIR)"; \
+	else \
+		echo "mutants-ci: tests/mutants/rtl/generate does not exist yet: firmware mutants only"; rtl=""; \
+	fi; \
+	set -x; python3 tests/mutants/run_mutants.py --kind $$kind $$rtl_args \
+		--only $(MUTANTS_CI_FIRMWARE)$${rtl:+,$$rtl} --out build-mutants/results-ci \
+		$(if $(MUTANT_JOBS),--jobs $(MUTANT_JOBS)) $(MUTANTS_ARGS)

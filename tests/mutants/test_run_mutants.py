@@ -1,0 +1,230 @@
+#!/usr/bin/env python3
+"""Unit tests of run_mutants.py that need no build: the catalogue (every
+patch applies to the working tree), the RTL path with a hand-made generator
+OUTDIR (rtl/irq_pulse.v with one operator changed), tree syncing, report
+parsing and the score. Run: python3 tests/mutants/test_run_mutants.py"""
+
+import json
+import os
+import sys
+import time
+import tempfile
+import unittest
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import run_mutants as rm  # noqa: E402
+
+
+def fake_rtl_outdir(root):
+    """A generator OUTDIR by hand: one mutant of rtl/irq_pulse.v."""
+    original = (rm.REPO / "rtl" / "irq_pulse.v").read_text()
+    old = "if (count_q != '0) begin"
+    assert old in original
+    (root / "rtl-000").mkdir()
+    (root / "rtl-000" / "irq_pulse.v").write_text(
+        original.replace(old, "if (count_q == '0) begin"))
+    (root / "rtl-mutants.tsv").write_text(
+        "id\tmodule\tfile\tmutate\tlocation\tdescription\n"
+        "rtl-000\tirq_pulse\trtl/irq_pulse.v\tsed s/!=/==/\tirq_pulse.v:40\t"
+        "count compare inverted\n")
+
+
+SNAPSHOT = rm.snapshot_working_tree()
+
+
+class Catalogue(unittest.TestCase):
+    def test_at_least_16_firmware_mutants_with_descriptions(self):
+        mutants = rm.firmware_mutants()
+        self.assertGreaterEqual(len(mutants), 16)
+        for m in mutants:
+            self.assertTrue(m.description, m.id)
+            self.assertTrue(m.file.startswith("dsp/"), m.id)
+
+    def test_every_patch_applies_and_changes_its_file(self):
+        for m in rm.firmware_mutants():
+            with self.subTest(mutant=m.id):
+                changed = rm.mutated_contents(m, SNAPSHOT)
+                for path, content in changed.items():
+                    self.assertNotEqual(content, (rm.REPO / path).read_bytes())
+
+    def test_a_patch_that_does_not_apply_is_an_error(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            bad = Path(tmp) / "fw-99-bad.patch"
+            bad.write_text("# broken\n--- a/dsp/controller.cpp\n+++ b/dsp/controller.cpp\n"
+                           "@@ -1,1 +1,1 @@\n-no such line\n+other\n")
+            mutant = rm.firmware_mutants(Path(tmp))[0]
+            with self.assertRaisesRegex(RuntimeError, "does not apply"):
+                rm.mutated_contents(mutant, SNAPSHOT)
+
+
+class RtlPath(unittest.TestCase):
+    def test_catalogue_and_tree_from_a_fake_generator_outdir(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            root = Path(tmp)
+            (root / "gen").mkdir()
+            fake_rtl_outdir(root / "gen")
+            mutants = rm.read_rtl_catalogue(root / "gen")
+            self.assertEqual([m.id for m in mutants], ["rtl-000"])
+            m = mutants[0]
+            self.assertEqual((m.kind, m.file), ("rtl", "rtl/irq_pulse.v"))
+            self.assertIn("irq_pulse", m.description)
+            files = {k: SNAPSHOT[k] for k in ["rtl/irq_pulse.v", "rtl/oe_control.v"]}
+            src = root / "src"
+            rm.sync_tree(src, files, rm.mutated_contents(m, SNAPSHOT))
+            self.assertIn("count_q == '0", (src / "rtl/irq_pulse.v").read_text())
+            self.assertEqual((src / "rtl/oe_control.v").read_bytes(),
+                             (rm.REPO / "rtl/oe_control.v").read_bytes())
+            self.assertEqual(rm.label_targets(rm.REPO, "rtl")[:1], ["rtl_test_async_fifo"])
+
+
+class Tree(unittest.TestCase):
+    def test_sync_keeps_unchanged_files_and_removes_stale_ones(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            src = Path(tmp)
+            files = {k: SNAPSHOT[k] for k in ["dsp/controller.h", "rtl/irq_pulse.v"]}
+            rm.sync_tree(src, files, {})
+            stamp = (src / "dsp/controller.h").stat().st_mtime_ns
+            (src / "old.txt").write_text("stale")
+            rm.sync_tree(src, {"dsp/controller.h": files["dsp/controller.h"]}, {})
+            self.assertEqual((src / "dsp/controller.h").stat().st_mtime_ns, stamp)
+            self.assertFalse((src / "old.txt").exists())
+            self.assertFalse((src / "rtl").exists())
+
+    def test_snapshot_includes_untracked_files_like_this_one(self):
+        self.assertIn("tests/mutants/test_run_mutants.py", SNAPSHOT)
+        self.assertTrue(SNAPSHOT["tests/mutants/run_mutants.py"][1])  # executable
+
+
+class Parsing(unittest.TestCase):
+    def test_campaign_rows_broken(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            path = Path(tmp) / "campaign.json"
+            path.write_text(json.dumps({"rows": [
+                {"fault": "clean", "seed": 3, "contract_ok": True, "ran": True},
+                {"fault": "dead:sensor=R", "seed": 3, "contract_ok": False, "ran": True,
+                 "violations": ["outcome pending", "second"]},
+                {"fault": "clean", "seed": 4, "contract_ok": False, "ran": False,
+                 "error": "signal 11"}]}))
+            broken = rm.campaign_rows_broken(path)
+            self.assertEqual([entry for _, entry in broken],
+                             ["campaign:dead:sensor=R: outcome pending",
+                              "crash:campaign:clean(seed=4): signal 11"])
+            self.assertEqual(len({key for key, _ in broken}), 2)
+
+    def test_failed_tests(self):
+        out = ("90% tests passed, 2 tests failed out of 20\n\nTotal Test time (real) = 3 sec\n\n"
+               "The following tests FAILED:\n"
+               "\t  7 - dsp.ControlProgramCard.RearmsWhenTheCardGivesUp (Failed)\n"
+               "\t 12 - dsp.X.Y (Timeout)\nErrors while running CTest\n")
+        self.assertEqual(rm.failed_tests(out),
+                         [("dsp.ControlProgramCard.RearmsWhenTheCardGivesUp",
+                           "ctest:dsp.ControlProgramCard.RearmsWhenTheCardGivesUp (Failed)"),
+                          ("dsp.X.Y", "ctest:dsp.X.Y (Timeout)")])
+
+    def test_stillborn_needs_the_mutated_file_in_an_error(self):
+        log = "FAILED: dsp/CMakeFiles/dsp.dir/control_program.cpp.o\n"
+        self.assertTrue(rm.failure_in_mutated_file(log, "dsp/control_program.cpp"))
+        self.assertFalse(rm.failure_in_mutated_file("FAILED: tb/x.cpp.o\n",
+                                                    "dsp/control_program.cpp"))
+
+    def test_equivalents(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            path = Path(tmp) / "eq.txt"
+            path.write_text("# header\nfw-01 same code\n\nrtl-3  reason two # note\n")
+            self.assertEqual(rm.read_equivalents(path),
+                             {"fw-01": "same code", "rtl-3": "reason two"})
+
+
+class Baseline(unittest.TestCase):
+    """A fake `stereosim` that writes a campaign.json with one broken row."""
+
+    def fake_build(self, root, rows):
+        build = root / "build"
+        build.mkdir()
+        rows_json = json.dumps({"rows": rows})
+        (build / "stereosim").write_text(
+            "#!/bin/sh\n# faults --campaign smoke --jobs J --out DIR\n"
+            f"mkdir -p \"$7\"; echo '{rows_json}' > \"$7/campaign.json\"; exit 1\n")
+        (build / "stereosim").chmod(0o755)
+        return build
+
+    def test_rows_the_baseline_breaks_do_not_kill(self):
+        rows = [{"index": 0, "fault": "clean", "seed": 3, "ran": True, "contract_ok": False,
+                 "violations": ["v"]}]
+        with tempfile.TemporaryDirectory() as tmp:
+            build = self.fake_build(Path(tmp), rows)
+            result = rm.Result("m", "firmware", "f", "d")
+            baseline = rm.Baseline(broken_rows={"0:clean:3"})
+            self.assertFalse(rm.check_campaign(result, build, Path(tmp), 1, baseline))
+            self.assertIn("baseline breaks too", result.note)
+            result = rm.Result("m", "firmware", "f", "d")
+            self.assertTrue(rm.check_campaign(result, build, Path(tmp), 1, rm.Baseline()))
+            self.assertEqual(result.killed_by, ["campaign:clean(seed=3): v"])
+            self.assertEqual(rm.exit_code([], baseline), 1)
+
+
+def alive(pid):
+    """Running (not gone, not a zombie waiting for its new parent to reap it)."""
+    try:
+        stat = Path(f"/proc/{pid}/stat").read_text()
+    except FileNotFoundError:
+        return False
+    return stat.rsplit(")", 1)[1].split()[0] != "Z"
+
+
+class Processes(unittest.TestCase):
+    def test_a_second_run_cannot_take_the_lock(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            first = rm.lock_work_dir(Path(tmp))
+            self.assertIsNotNone(first)
+            self.assertIsNone(rm.lock_work_dir(Path(tmp)))
+            first.close()
+            self.assertIsNotNone(rm.lock_work_dir(Path(tmp)))
+
+    def test_sigterm_kills_the_steps_under_way(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            script = (
+                "import sys, os, signal, threading, time\n"
+                f"sys.path.insert(0, {str(Path(rm.__file__).parent)!r})\n"
+                "import run_mutants as rm\n"
+                "from pathlib import Path\n"
+                "signal.signal(signal.SIGTERM, rm.stop_on_signal)\n"
+                f"log = Path({tmp!r}) / 'step.log'\n"
+                "threading.Thread(target=rm.run_step, args=(['sh', '-c', 'echo $$ > "
+                f"{tmp}/pid; exec sleep 60'], '.', log, 100), daemon=True).start()\n"
+                "time.sleep(1)\n"
+                "os.kill(os.getpid(), signal.SIGTERM)\n"
+                "time.sleep(30)\n")
+            import subprocess
+            done = subprocess.run([sys.executable, "-c", script], capture_output=True,
+                                  text=True, timeout=20)
+            self.assertEqual(done.returncode, 128 + 15, done.stderr)
+            pid = int((Path(tmp) / "pid").read_text())
+            time.sleep(0.2)
+            self.assertFalse(alive(pid))
+
+
+class Reports(unittest.TestCase):
+    def test_score_and_exit_code(self):
+        results = [rm.Result("a", "firmware", "f", "d", status="killed", campaign_kills=True),
+                   rm.Result("b", "firmware", "f", "d", status="survived", campaign_kills=False),
+                   rm.Result("c", "rtl", "f", "d", status="stillborn")]
+        self.assertIn("mutation score 50.0 % (1/2)", rm.summary(results, 1.0))
+        self.assertEqual(rm.exit_code(results), 1)
+        rm.apply_equivalents(results, {"b": "why"})
+        self.assertEqual(results[1].status, "equivalent")
+        self.assertIn("mutation score 100.0 % (1/1)", rm.summary(results, 1.0))
+        self.assertEqual(rm.exit_code(results), 0)
+        with tempfile.TemporaryDirectory() as tmp:
+            text = rm.write_reports(results, Path(tmp), 2.0)
+            self.assertIn("equivalent", text)
+            rows = json.loads((Path(tmp) / "mutants.json").read_text())
+            self.assertEqual(rows[0]["campaign_kills"], True)
+            header = (Path(tmp) / "mutants.csv").read_text().splitlines()[0]
+            self.assertTrue(header.startswith("id,kind,file,description,status,killed_by,"
+                                              "campaign_kills,wall_s,build_s"))
+
+
+if __name__ == "__main__":
+    unittest.main()
