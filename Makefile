@@ -128,6 +128,6 @@ mutants-ci: build
 	else \
 		echo "mutants-ci: tests/mutants/rtl/generate does not exist yet: firmware mutants only"; rtl=""; \
 	fi; \
-	set -x; python3 tests/mutants/run_mutants.py --kind $$kind $$rtl_args \
+	set -x; python3 tests/mutants/run_mutants.py --kind $$kind $$rtl_args --no-baseline \
 		--only $(MUTANTS_CI_FIRMWARE)$${rtl:+,$$rtl} --out build-mutants/results-ci \
 		$(if $(MUTANT_JOBS),--jobs $(MUTANT_JOBS)) $(MUTANTS_ARGS)

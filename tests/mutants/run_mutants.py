@@ -623,7 +623,8 @@ def summary(results, wall_s):
              for s in ("killed", "survived", "equivalent", "stillborn", "error")}
     judged = len(results) - count["equivalent"] - count["stillborn"]
     score = 100.0 * count["killed"] / judged if judged else 0.0
-    firmware = [r for r in results if r.kind == "firmware" and r.campaign_kills is not None]
+    firmware = [r for r in results if r.kind == "firmware" and r.campaign_kills is not None
+                and r.status != "equivalent"]
     by_campaign = sum(bool(r.campaign_kills) for r in firmware)
     return (f"mutants: {len(results)} total, {count['killed']} killed, {count['survived']} "
             f"survived, {count['equivalent']} equivalent, {count['stillborn']} stillborn, "
