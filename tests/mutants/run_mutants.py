@@ -446,7 +446,9 @@ def failed_tests(ctest_output):
         if line.startswith("The following tests FAILED"):
             in_list = True
             continue
-        match = re.match(r"\s*\d+\s+-\s+(\S+)\s+\((.*)\)", line) if in_list else None
+        # A parameterized test's name is followed by "# GetParam() = ...";
+        # the reason is the last parenthesized word of the line.
+        match = re.match(r"\s*\d+\s+-\s+(\S+).*\((\w[^()]*)\)\s*$", line) if in_list else None
         if match:
             names.append((match.group(1), f"ctest:{match.group(1)} ({match.group(2)})"))
         elif in_list and line.strip() and not line.startswith(("\t", " ")):
