@@ -89,6 +89,17 @@ int start_of(const platform::scoreboard_report& score, simtime::ticks t) {
     return found;
 }
 
+// Whether the faulted sensor's first frame after OE start `c` carries the
+// fault (the sensors' truth); false if that sensor did not start.
+bool first_frame_carries(const platform::platform_top& top, const platform::start_check& c,
+                         const fault_spec& s) {
+    const int64_t frame = c.frame[s.camera];
+    if (frame < 0) return false;
+    const sensor::frame_truth& ft =
+        top.cycle_island().sensor(s.camera).truth()[static_cast<size_t>(frame)];
+    return (ft.faults & sensor::fault_bit(sensor_kind(s))) != 0;
+}
+
 // Whether a SYNC_ERROR at `t` can be the fault's doing: its OE start was in
 // step by the truth, or the start's first frame of the faulted sensor carries
 // the fault and the fault moves timing (dark-leak and stuck-bit do not: an
@@ -101,11 +112,7 @@ bool attributable(const platform::platform_top& top, const platform::scoreboard_
     const platform::start_check& c = score.starts[static_cast<size_t>(i)];
     if (c.truth_in_step) return true;
     if (s.type == fault_type::dark_leak || s.type == fault_type::stuck_bit) return false;
-    const int64_t frame = c.frame[s.camera];
-    if (frame < 0) return true;
-    const sensor::frame_truth& ft =
-        top.cycle_island().sensor(s.camera).truth()[static_cast<size_t>(frame)];
-    return (ft.faults & sensor::fault_bit(sensor_kind(s))) != 0;
+    return c.frame[s.camera] < 0 || first_frame_carries(top, c, s);
 }
 
 // The pair numbers a pair_dropped report names ([pair - count, pair)),
@@ -138,12 +145,7 @@ bool explains(const platform::platform_top& top, const platform::scoreboard_repo
     }
     const int start = start_of(score, t);
     if (start == start_of(score, onset)) return true;
-    if (start < 0) return false;
-    const int64_t frame = score.starts[static_cast<size_t>(start)].frame[s.camera];
-    if (frame < 0) return false;
-    const sensor::frame_truth& ft =
-        top.cycle_island().sensor(s.camera).truth()[static_cast<size_t>(frame)];
-    return (ft.faults & sensor::fault_bit(sensor_kind(s))) != 0;
+    return start >= 0 && first_frame_carries(top, score.starts[static_cast<size_t>(start)], s);
 }
 
 // Card interrupt pulses with no firmware report of `kind` within `window`
