@@ -129,8 +129,6 @@ void control_program::configure_card() {
     card_write(card_regs::irq_status, card_regs::irq_status_frame_ready_mask |
                                           card_regs::irq_status_sync_error_mask |
                                           card_regs::irq_status_overflow_mask);
-    // Weakened (docs/fault-contract.md): only a dark pixel reading 255 still
-    // raises L_DARK / R_DARK.
     card_write(card_regs::dark_threshold, c.dark_threshold);
     card_write(card_regs::h_start, c.h_start);
     card_write(card_regs::dark_cols_left, c.dark_cols_left);

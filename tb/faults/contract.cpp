@@ -43,9 +43,11 @@ contract_params params_for(const platform::platform_config& config) {
     p.black_level = config.profile.black_level;
     p.line_pclks = config.profile.line_pclks;
     p.frame_lines = config.profile.frame_lines;
-    // First to last active pixel: (active rows - 1) lines + a line's active columns.
-    p.active_span_pclks =
-        (config.profile.active_rows - 1) * config.profile.line_pclks + config.profile.active_cols;
+    // The frame's first clock to its last readout pixel: line first_row_line +
+    // readout_rows - 1, column href_start + readout_cols - 1.
+    const sensor::sensor_profile& prof = config.profile;
+    p.checked_span_pclks = (prof.first_row_line + prof.readout_rows() - 1) * prof.line_pclks +
+                           prof.href_start + prof.readout_cols();
     p.words_per_pair = 2.0 * config.profile.active_cols * config.profile.active_rows /
                        dsp::card_regs::pixels_per_word;
     // The card's CE3 read with the DSK's CECTL: RS + RST + RH = 2 + 10 + 2 ECLK
@@ -112,21 +114,33 @@ expectation expected_for(const fault_observation& f, const fault_spec& s, const 
                 "at most one pair (the repeat's) is used one scene frame stale";
             break;
         case fault_type::drift: {
-            const double slip = std::fabs(s.ppm) * 1e-6 * p.active_span_pclks;
-            if (slip >= 1.0) {
+            // A start puts the drifting sensor a phase lambda in [0, 1) clock
+            // ahead of its partner (it samples OE at its own first rising edge
+            // after the change, the partner a master clock later); the card
+            // sees the pair aligned while the lead stays within half a clock.
+            // Over a frame the lead moves by `slip`: down for a slower clock
+            // (positive ppm), up for a faster one, so a faster clock passes
+            // only from lambda <= 0.5 - slip (docs/fault-contract.md, drift).
+            const double slip = std::fabs(s.ppm) * 1e-6 * p.checked_span_pclks;
+            const bool slower = s.ppm > 0;
+            if (slower ? slip >= 1.0 : slip >= 0.5) {
                 e.allowed = {outcome::hard_error};
                 e.max_frames_to_detect = 1;
                 e.why =
-                    "slips >= 1 clock inside every frame's active data: every restart fails, "
-                    "the firmware gives up";
-            } else if (slip <= 0.5) {
+                    "no start phase keeps the pair within half a clock of the master for a "
+                    "frame: every restart fails, the firmware gives up";
+            } else if (slower && slip <= 0.5) {
                 e.allowed = {outcome::resync, outcome::harmless};
                 e.why =
-                    "slips < 1 clock per frame: detected again at each slip, each followed "
-                    "by a restart (harmless if no slip falls inside the run)";
+                    "a slower clock: half of the start phases pass and the phase after each "
+                    "slip is inside the window: a restart after each slip (harmless if none "
+                    "falls inside the run)";
             } else {
                 e.allowed = {outcome::resync, outcome::hard_error};
-                e.why = "slips about one clock per frame: restarts may or may not hold";
+                e.why =
+                    "only a start with phase <= 0.5 - slip (faster clock) passes; each restart "
+                    "walks the phase on: whether an in-step start lands in the window before "
+                    "the retries run out depends on the phase";
             }
             break;
         }
@@ -248,6 +262,11 @@ void invariants(const run_observation& run, verdict* v, bool allow_stale) {
     if (run.unreported_in_step > 0)
         violate(std::to_string(run.unreported_in_step) +
                 " OE start(s) whose pairs the firmware used without reporting in_step");
+    if (run.unrearmed_overflows > 0)
+        violate(std::to_string(run.unrearmed_overflows) +
+                " overflow(s) reported but not followed by the configured re-arm "
+                "(rearm_on_overflow: an OE restart within " +
+                std::to_string(static_cast<int>(rearm_window_ms)) + " ms)");
     if (run.identity_mismatches > 0)
         violate(std::to_string(run.identity_mismatches) +
                 " pair(s) processed with frames that are not the pair's own (pairs " +

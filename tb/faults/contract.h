@@ -54,7 +54,10 @@ struct contract_params {
     int black_level = 16;            // sensor profile
     double dark_sigma = 1.7;         // read + shot noise sigma of a dark pixel, DN (noise on)
     int line_pclks = 800, frame_lines = 525;
-    int active_span_pclks = 0;       // first to last active pixel of a frame, pixel clocks
+    // From a frame's first clock to its last readout pixel, pixel clocks: the
+    // span over which a drifting sensor's lead on the master clock, set at its
+    // start, must stay within half a clock (docs/fault-contract.md, drift).
+    int checked_span_pclks = 0;
     double words_per_pair = 153600;  // 32-bit words the DSP reads per pair
     double eclk_per_word = 14;       // the card's programmed read (CECTL, docs/card.md)
     double eclk_ns = 10;

@@ -34,7 +34,7 @@ json params_json(const contract_params& p) {
             {"dark_sigma", p.dark_sigma},
             {"line_pclks", p.line_pclks},
             {"frame_lines", p.frame_lines},
-            {"active_span_pclks", p.active_span_pclks},
+            {"checked_span_pclks", p.checked_span_pclks},
             {"words_per_pair", p.words_per_pair},
             {"eclk_per_word", p.eclk_per_word},
             {"eclk_ns", p.eclk_ns},
@@ -51,7 +51,7 @@ contract_params params_of(const json& j) {
     p.dark_sigma = num(j, "dark_sigma", p.dark_sigma);
     p.line_pclks = static_cast<int>(num(j, "line_pclks", p.line_pclks));
     p.frame_lines = static_cast<int>(num(j, "frame_lines", p.frame_lines));
-    p.active_span_pclks = static_cast<int>(num(j, "active_span_pclks", p.active_span_pclks));
+    p.checked_span_pclks = static_cast<int>(num(j, "checked_span_pclks", p.checked_span_pclks));
     p.words_per_pair = num(j, "words_per_pair", p.words_per_pair);
     p.eclk_per_word = num(j, "eclk_per_word", p.eclk_per_word);
     p.eclk_ns = num(j, "eclk_ns", p.eclk_ns);
@@ -130,6 +130,7 @@ void add_to_report(json& report, const fault_run_result& r) {
         {"unreported_sync_errors", run.unreported_sync_errors},
         {"unreported_overflows", run.unreported_overflows},
         {"unreported_in_step", run.unreported_in_step},
+        {"unrearmed_overflows", run.unrearmed_overflows},
         {"identity_checked", run.identity_checked},
         {"identity_mismatches", run.identity_mismatches},
         {"mismatched_pairs", run.mismatched_pairs},
@@ -180,6 +181,7 @@ bool read_from_report(const json& report, fault_run_result* r, std::string* erro
     run.unreported_sync_errors = integer(j, "unreported_sync_errors");
     run.unreported_overflows = integer(j, "unreported_overflows");
     run.unreported_in_step = integer(j, "unreported_in_step");
+    run.unrearmed_overflows = integer(j, "unrearmed_overflows");
     run.identity_checked = integer(j, "identity_checked");
     run.identity_mismatches = integer(j, "identity_mismatches");
     run.mismatched_pairs = pair_list(j, "mismatched_pairs");

@@ -55,6 +55,10 @@ struct fault_observation {
     int slowed_pairs = 0;
 };
 
+// Rule 10's window: a configured re-arm is a few register accesses after the
+// report (microseconds); a period is 24.5 ms.
+inline constexpr double rearm_window_ms = 1.0;
+
 // The whole run.
 struct run_observation {
     int frames = 0;
@@ -73,6 +77,10 @@ struct run_observation {
     // OE raises after which the firmware processed a pair without first
     // reporting in_step (the host learns the card is in step from it).
     int unreported_in_step = 0;
+    // Overflows the firmware reported that its configured recovery
+    // (dsp::control_program_config::rearm_on_overflow) did not follow with an
+    // OE restart on the card's pins within rearm_window_ms.
+    int unrearmed_overflows = 0;
     // Pair identity at the point of use: the frames the firmware read for
     // each processed pair against the sensors' frames of the pair it names.
     int identity_checked = 0, identity_mismatches = 0;

@@ -415,7 +415,26 @@ fault_observation observe_fault(const run_sources& in, const fault_spec& s, size
     return f;
 }
 
-// The rules over the whole run (docs/fault-contract.md 3, 5, 6, 7).
+// Rule 10: overflow reports the firmware's configured re-arm (ENABLE 0 -> 1:
+// OE low, then high again on the card's pins) did not follow within
+// rearm_window_ms. Only reports before the give-up (`stop`) and a window
+// before the end are judged. The card restarts OE by itself only after a
+// failed sync check, at a frame end; the re-arm is a few register accesses.
+int unrearmed_overflows(const run_sources& in, simtime::ticks stop) {
+    const auto window = static_cast<simtime::ticks>(rearm_window_ms * 1e6 * simtime::ticks_per_ns);
+    int missing = 0;
+    for (const platform::fw_event& e : in.events) {
+        if (e.event.kind != dsp::firmware_event::overflow) continue;
+        if (e.tick >= stop || e.tick + window > in.top.end_tick()) continue;
+        bool restarted = false;
+        for (const platform::start_check& c : in.score.starts)
+            restarted |= c.oe_rise > e.tick && c.oe_rise <= e.tick + window;
+        missing += !restarted;
+    }
+    return missing;
+}
+
+// The rules over the whole run (docs/fault-contract.md 3, 5, 6, 7, 10).
 void observe_run_rules(const run_sources& in, const std::vector<fault_spec>& specs,
                        const std::vector<simtime::ticks>& onsets, run_observation* run) {
     const simtime::ticks first_onset = *std::min_element(onsets.begin(), onsets.end());
@@ -459,6 +478,8 @@ void observe_run_rules(const run_sources& in, const std::vector<fault_spec>& spe
             awaiting = false;
         }
     }
+    if (platform::program_config(in.top.config()).rearm_on_overflow)
+        run->unrearmed_overflows = unrearmed_overflows(in, stop);
     for (const platform::used_pair& u : in.top.used_pairs()) {
         if (!u.checked) continue;
         ++run->identity_checked;

@@ -137,6 +137,16 @@ TEST(FaultContractRules, DetectedMeansReportedPerOnset) {
     EXPECT_TRUE(has_violation(faults::check_clean(silent_start), "without reporting in_step"));
 }
 
+// Rule 10: the firmware recovers as it is configured to: an overflow it
+// reports is followed by its re-arm (an OE restart on the card's pins).
+TEST(FaultContractRules, AnOverflowIsFollowedByTheConfiguredRearm) {
+    faults::run_observation run = good_run();
+    EXPECT_TRUE(faults::check(good_skew(), skew, params(), run).ok);
+    run.unrearmed_overflows = 1;
+    EXPECT_TRUE(has_violation(faults::check(good_skew(), skew, params(), run),
+                              "not followed by the configured re-arm"));
+}
+
 // Rule 3: false alarms over the whole run.
 TEST(FaultContractRules, FalseAlarmsCountOverTheWholeRun) {
     faults::run_observation run = good_run();

@@ -203,11 +203,19 @@ TEST(FaultContract, ThresholdsFollowTheCardAndTheProfile) {
     EXPECT_EQ(nominal("stuck-bit:sensor=L,bit=7", p), outcome::hard_error);
     EXPECT_EQ(nominal("stuck-bit:sensor=L,bit=3", p), outcome::harmless);
     EXPECT_EQ(nominal("stuck-bit:sensor=L,bit=7,value=0", p), outcome::harmless);
-    // Drift: |ppm| x active span (479 x 800 + 640 = 383,840 clocks) >= 1 clock.
-    EXPECT_EQ(p.active_span_pclks, 383840);
+    // Drift: the slip over a frame's first clock to its last readout pixel
+    // (line 27 + 488 - 1 = 514: 514 x 800 + 656 = 411,856 clocks); a slower
+    // clock (ppm > 0) fails every start from 1 clock, a faster one from 0.5.
+    EXPECT_EQ(p.checked_span_pclks, 411856);
     EXPECT_EQ(nominal("drift:sensor=R,ppm=200", p), outcome::hard_error);
     EXPECT_EQ(nominal("drift:sensor=R,ppm=-3", p), outcome::hard_error);
+    EXPECT_EQ(nominal("drift:sensor=L,ppm=-2", p), outcome::hard_error);
     EXPECT_EQ(nominal("drift:sensor=R,ppm=1", p), outcome::resync);
+    EXPECT_EQ(nominal("drift:sensor=R,ppm=2", p), outcome::resync);  // resync | hard_error
+    // -1 ppm: 0.41 clock; only starts with phase <= 0.09 pass: either.
+    EXPECT_EQ(nominal("drift:sensor=L,ppm=-1", p), outcome::resync);
+    EXPECT_EQ(faults::expected_for(f, parse_ok("drift:sensor=L,ppm=-1"), p, {}).allowed.size(),
+              2u);
     // A pair's read: 153,600 words x (14 + c) ECLK x 10 ns against 24.5 ms:
     // c = 2 gives 24.58 ms (overflow), c = 1 23.04 ms.
     EXPECT_EQ(nominal("emif-wait:cycles=2", p), outcome::overflow);
