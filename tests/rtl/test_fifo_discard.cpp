@@ -20,8 +20,8 @@ TEST(FifoDiscard, NeverDropsAWordBeforeItsRegion) {
     for (uint64_t begin = 0; begin <= bench::pointer_mask; ++begin) {
         for (uint64_t behind : {1u, 2u, 3u, 5u, 8u, 9u, 16u, 100u}) {
             const rtl_test::discard_outcome out = discard.drop(begin, 37, behind, 3);
-            ASSERT_EQ(out.first_error, "") << "region at " << begin << ", reader " << behind
-                                           << " word(s) behind";
+            ASSERT_EQ(out.first_error, "")
+                << "region at " << begin << ", reader " << behind << " word(s) behind";
         }
     }
 }

@@ -19,8 +19,8 @@ TEST(FifoDiscardWide, DropsAVgaFrameExactly) {
                            bench::pointer_mask - 100}) {
         for (uint64_t behind : {0u, 3u, 9u}) {
             const rtl_test::discard_outcome out = discard.drop(begin, vga_frame_words, behind, 1);
-            ASSERT_EQ(out.first_error, "") << "region at " << begin << ", reader " << behind
-                                           << " word(s) behind";
+            ASSERT_EQ(out.first_error, "")
+                << "region at " << begin << ", reader " << behind << " word(s) behind";
             EXPECT_EQ(out.region_pops, vga_frame_words);
         }
     }
