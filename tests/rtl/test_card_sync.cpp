@@ -473,6 +473,14 @@ TEST(CardSync, OverflowDropsThePairAndRemovesItsWordsFromTheFifos) {
     std::printf("after the overflow the DSP read pairs of frames");
     for (const auto& p : b.pairs) std::printf(" %u", p.serial_l);
     std::printf("\n");
+    // Every sensor frame up to the last one read that the DSP did not get
+    // was dropped by an overflow or skipped while the discard ran: SKIPPED
+    // is exactly the rest (counted from what the DSP model read).
+    const uint32_t unread = b.pairs.back().serial_l + 1 - static_cast<uint32_t>(b.pairs.size());
+    // Read a few times, a few pixel clocks apart: the counter holds between events.
+    for (int read = 0; read < 4; ++read)
+        EXPECT_EQ(b.read_reg(regs::skipped), unread - b.read_reg(regs::overflows))
+            << unread << " frames unread, read " << read;
     expect_clean_protocol(b);
 }
 
