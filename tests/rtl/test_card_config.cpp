@@ -31,6 +31,7 @@ struct dark_run {
     uint32_t mismatches = 0;
     uint32_t verdict_causes = 0;
     uint32_t pairs_ok = 0;
+    uint32_t mismatch_pos = 0;
 };
 
 // Readout pixel (row, col) of the left sensor's frame 1 reads `value`.
@@ -46,6 +47,7 @@ dark_run run_with_left_pixel(const rtl_test::sensor_layout& layout, uint32_t thr
     r.mismatches = b.read_reg(regs::mismatches);
     r.verdict_causes = b.read_reg(regs::verdict) & 0xFFu;
     r.pairs_ok = b.read_reg(regs::pairs_ok);
+    r.mismatch_pos = b.read_reg(regs::mismatch_pos);
     EXPECT_EQ(b.context().errorCount(), 0);
     return r;
 }
@@ -118,6 +120,13 @@ TEST(CardConfig, OddWindowOffsetsPassAndForwardTheActivePixels) {
             const dark_run r = run_with_left_pixel(layout, 32, l.row, l.col, 200);
             EXPECT_EQ(r.mismatches, 1u) << name << ": leak in the " << l.where;
             EXPECT_EQ(r.verdict_causes, regs::verdict_l_dark_mask) << name << ", " << l.where;
+            // MISMATCH_POS: the leak's line and pixel clock in the common frame
+            // (VSYNC rises at line 0 column 0; readout row r is line V_START + r,
+            // readout column c pixel clock H_START + c).
+            const uint32_t line = static_cast<uint32_t>(layout.v_start + l.row);
+            const uint32_t col = static_cast<uint32_t>(layout.h_start + l.col);
+            EXPECT_EQ(r.mismatch_pos, line << 16 | col)
+                << name << ", " << l.where << ": MISMATCH_POS 0x" << std::hex << r.mismatch_pos;
         }
     }
 }
