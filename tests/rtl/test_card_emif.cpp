@@ -219,6 +219,11 @@ TEST_P(CardEmif, PixelPortReadsPopOneWordEachInOrder) {
     empty_read.addr = regs::data_right;
     EXPECT_EQ(b.access(empty_read).data, 0u);
     EXPECT_EQ(b.read_reg(regs::underflows), 1u);
+    // Every one counts, past the counter's low bits (a firmware polling an
+    // empty port for a frame makes thousands).
+    empty_read.addr = regs::data_left;
+    for (int i = 0; i < 1100; ++i) b.access(empty_read);
+    EXPECT_EQ(b.read_reg(regs::underflows), 1101u);
 
     EXPECT_EQ(b.ed_conflicts, 0u);
     EXPECT_EQ(b.ed_outside_ce, 0u);
