@@ -178,8 +178,13 @@ TEST(CardConfig, EveryConfigRegisterResetsAndReadsBackItsFieldBits) {
         EXPECT_EQ(b.read_reg(r.offset), r.reset) << r.name << " after reset";
         for (uint32_t pattern : {0xFFFFFFFFu, 0xA5A5A5A5u, 0x5A5A5A5Au, 0u}) {
             b.write_reg(r.offset, pattern);
-            EXPECT_EQ(b.read_reg(r.offset), pattern & r.mask)
-                << r.name << " written 0x" << std::hex << pattern;
+            // Read at three bus-clock phases: a register holds between writes.
+            for (uint64_t idle_eclk = 0; idle_eclk < 3; ++idle_eclk) {
+                b.run_ticks(idle_eclk * b.opt.eclk_ticks);
+                EXPECT_EQ(b.read_reg(r.offset), pattern & r.mask)
+                    << r.name << " written 0x" << std::hex << pattern << ", read after "
+                    << idle_eclk << " idle ECLK";
+            }
         }
     }
     EXPECT_EQ(b.context().errorCount(), 0);
