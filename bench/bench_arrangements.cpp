@@ -38,7 +38,7 @@
 // verilated.h, seeing SystemC, expects sc_time_stamp in the global namespace.
 using sc_core::sc_time_stamp;
 #include "Vcard.h"
-#include "tb/output/vcd_writer.h"
+#include "tb/app/output/vcd_writer.h"
 #include "tb/platform/platform.h"
 #include "tests/rtl/card_bench.h"
 #include "tests/rtl/icarus/card_stimulus.h"

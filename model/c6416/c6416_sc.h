@@ -31,7 +31,7 @@
 // charge_cycles(n) waits from the CPU edge at or after now to the edge n
 // cycles later, each edge placed at to_fs(its exact tick): no rounded period
 // is ever accumulated. The SystemC time resolution must be 1 fs
-// (tb/sc_test_main.cpp).
+// (tests/support/sc_test_main.cpp).
 // "CPU too slow" fault: set_cycle_scale(num, den, from): cycles charged
 // after `from` are multiplied by num / den (rounded up).
 //

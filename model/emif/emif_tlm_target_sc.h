@@ -14,7 +14,7 @@
 //
 // The engine is stepped by someone else: emif_pins_sc (pin-level, one
 // SC_METHOD per ECLK edge) or emif_cycle_driver (the fast island). Requires
-// 1 fs time resolution (tb/sc_test_main.cpp): tick edges are placed with
+// 1 fs time resolution (tests/support/sc_test_main.cpp): tick edges are placed with
 // simtime::to_fs.
 #pragma once
 

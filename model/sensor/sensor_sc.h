@@ -1,6 +1,6 @@
 // SystemC pin wrappers around the plain C++ cores (library sensor_sc; the
 // user links SystemC, e.g. through tb_sc_test_main). The time resolution must
-// be 1 fs (tb/sc_test_main.cpp): every edge is placed at simtime::to_fs of its
+// be 1 fs (tests/support/sc_test_main.cpp): every edge is placed at simtime::to_fs of its
 // exact tick, never by adding rounded periods.
 #pragma once
 

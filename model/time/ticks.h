@@ -5,7 +5,7 @@
 // exact integers: pixel clock 120/7 MHz = 1050 ticks, EMIF 100/120/125 MHz =
 // 180/150/144, CPU 600/720/1000 MHz = 30/25/18.
 //
-// SystemC runs at 1 fs resolution (tb/sc_test_main.cpp). A tick is 55555.5...
+// SystemC runs at 1 fs resolution (tests/support/sc_test_main.cpp). A tick is 55555.5...
 // fs, so each edge is rounded to fs ONCE, from its exact tick count
 // (to_fs(ticks)); adding up rounded periods would drift by 1/3 fs per 1050-tick
 // period, 333 ns after 10^9 edges. Both the fast RTL island and the SystemC pin

@@ -142,7 +142,7 @@ class island : public sc_core::sc_module {
     virtual void finish();
 
   protected:
-    // For another arrangement of the same cores (tb/pins/pins_island_sc.h):
+    // For another arrangement of the same cores (tb/platform/arrangements/pins/pins_island.h):
     // the observers only; no card, no sensor cores, no stepping thread. The
     // derived module steps the pins, calls attach_sensor for both cameras
     // and feeds the observers below exactly as advance() does.

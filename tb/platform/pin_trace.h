@@ -34,7 +34,7 @@ namespace platform {
 using trace_id = uint32_t;
 
 // What the viewer should do with a signal's value (a GTKWave translate
-// filter names the values of an enumerated signal; tb/output/gtkw_writer.h).
+// filter names the values of an enumerated signal; tb/app/output/gtkw_writer.h).
 enum class trace_format : uint8_t {
     bits,            // a wire or a bus shown in hex
     decimal,         // a count (FIFO level)

@@ -4,7 +4,7 @@
 
 #include "dsp/c6416_regs.h"
 #include "dsp/kernel_costs.h"
-#include "tb/pins/pins_island_sc.h"
+#include "tb/platform/arrangements/pins/pins_island.h"
 
 namespace platform {
 

@@ -1,11 +1,11 @@
 #include "tb/platform/platform_config.h"
 
-#include "tb/host/stereo_runner.h"
+#include "tb/platform/scoring/frame_record.h"
 
 namespace platform {
 
 dsp::controller_config pipeline_config(const platform_config& config) {
-    dsp::controller_config c = host::controller_config_for(config.scenario.scene.rig);
+    dsp::controller_config c = platform::controller_config_for(config.scenario.scene.rig);
     c.cfa = config.profile.cfa;
     if (config.track_search_radius > 0) c.track.search_radius = config.track_search_radius;
     if (config.detect_threshold >= 0)

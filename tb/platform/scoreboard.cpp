@@ -93,7 +93,7 @@ scoreboard_report score(const platform_top& top) {
     const std::vector<simtime::ticks>& ready = isl.irq_rises(0);
     const std::vector<fw_result>& results = top.probe().results();
     const scene::scenario& scenario = top.config().scenario;
-    std::vector<host::frame_record> records;
+    std::vector<platform::frame_record> records;
     for (size_t n = 0; n < ready.size(); ++n) {
         pair_check p;
         p.pair = static_cast<uint32_t>(n + 1);
@@ -131,7 +131,7 @@ scoreboard_report score(const platform_top& top) {
                 p.record.truth = scene::ball_truth_at(scenario.scene.rig, scenario.scene.balls[0],
                                                       p.record.time_s);
             }
-            p.errors = host::score_frame(p.record);
+            p.errors = platform::score_frame(p.record);
             records.push_back(p.record);
         }
         if (p.processed) {
@@ -196,7 +196,7 @@ scoreboard_report score(const platform_top& top) {
             r.max_depth_err_pct = std::max(r.max_depth_err_pct, pct);
         }
     }
-    r.summary = host::summarize(records, r.first_motion_frame);
+    r.summary = platform::summarize(records, r.first_motion_frame);
     return r;
 }
 

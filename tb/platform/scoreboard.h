@@ -16,8 +16,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "tb/host/error_metrics.h"
-#include "tb/host/stereo_runner.h"
+#include "tb/platform/scoring/error_metrics.h"
+#include "tb/platform/scoring/frame_record.h"
 #include "tb/platform/platform.h"
 
 namespace platform {
@@ -49,8 +49,8 @@ struct pair_check {
     simtime::ticks result_tick = 0;
     bool used_after_verdict = false;  // result after FRAME_READY, FRAME_READY after its last pixel
     double latency_ms = 0.0;          // first active pixel -> 3D output
-    host::frame_record record;        // the firmware's output with the scene's truth
-    host::frame_errors errors;
+    platform::frame_record record;        // the firmware's output with the scene's truth
+    platform::frame_errors errors;
 };
 
 struct scoreboard_report {
@@ -82,7 +82,7 @@ struct scoreboard_report {
     int depth_within_2pct = 0;  // ... of which within 2 %
     double max_box_err_px = 0.0;
     double max_depth_err_pct = 0.0;
-    host::run_summary summary;  // over every processed pair
+    platform::run_summary summary;  // over every processed pair
     double latency_ms_min = 0.0, latency_ms_max = 0.0;
 };
 

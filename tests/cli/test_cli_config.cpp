@@ -1,4 +1,4 @@
-// The config key table (tb/cli/config_keys.h) without a simulation: docs/config.md
+// The config key table (tb/app/cli/config_keys.h) without a simulation: docs/config.md
 // lists exactly its keys, values are type- and range-checked with one-line
 // messages, a misspelled key gets the nearest name, a scenario's settings
 // apply before other keys, and the default setup renders exactly the
@@ -13,8 +13,8 @@
 #include <string>
 
 #include "model/scene/sequence.h"
-#include "tb/cli/config_keys.h"
-#include "tb/cli/scenarios.h"
+#include "tb/app/cli/config_keys.h"
+#include "tb/app/cli/scenarios.h"
 
 namespace {
 

@@ -7,8 +7,8 @@
 
 #include <string>
 
-#include "tb/faults/contract.h"
-#include "tb/faults/fault_spec.h"
+#include "tb/app/faults/contract.h"
+#include "tb/app/faults/fault_spec.h"
 #include "tb/platform/platform_config.h"
 
 namespace {

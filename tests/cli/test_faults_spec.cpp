@@ -7,9 +7,9 @@
 #include <sstream>
 #include <string>
 
-#include "tb/faults/campaign.h"
-#include "tb/faults/contract.h"
-#include "tb/faults/fault_spec.h"
+#include "tb/app/faults/campaign.h"
+#include "tb/app/faults/contract.h"
+#include "tb/app/faults/fault_spec.h"
 
 namespace {
 

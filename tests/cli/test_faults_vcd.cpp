@@ -22,8 +22,8 @@
 
 #include "model/sensor/profile.h"
 #include "model/time/ticks.h"
-#include "tb/faults/fault_spec.h"
-#include "tb/output/vcd_writer.h"
+#include "tb/app/faults/fault_spec.h"
+#include "tb/app/output/vcd_writer.h"
 
 namespace {
 

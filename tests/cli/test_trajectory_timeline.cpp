@@ -18,7 +18,7 @@
 #include <sstream>
 #include <string>
 
-#include "tb/output/trajectory_plot.h"
+#include "tb/app/output/trajectory_plot.h"
 
 namespace {
 

@@ -19,8 +19,8 @@
 
 #include "dsp/card_regs.h"
 #include "model/sensor/profile.h"
-#include "tb/output/gtkw_writer.h"
-#include "tb/output/vcd_writer.h"
+#include "tb/app/output/gtkw_writer.h"
+#include "tb/app/output/vcd_writer.h"
 #include "tb/platform/pin_trace.h"
 
 namespace {

@@ -27,9 +27,9 @@
 #include "dsp/c6416_regs.h"
 #include "dsp/card_regs.h"
 #include "dsp/control_program.h"
-#include "tb/host/counting_hal.h"
-#include "tb/host/scenarios.h"
-#include "tb/host/stereo_runner.h"
+#include "tests/support/host/counting_hal.h"
+#include "tests/support/host/scenarios.h"
+#include "tests/support/host/stereo_runner.h"
 #include "tests/support/heap_counter.h"
 
 
@@ -1073,7 +1073,7 @@ TEST(ControlProgramRules, RunAllocatesNothingAfterInit) {
 TEST(ControlProgramPipeline, ResultsEqualTheControllerOnTheSamePairs) {
     const scene::scenario scenario = host::circling_scenario(2.0, 2, 10);
     const dsp::controller_config controller_config =
-        host::controller_config_for(scenario.scene.rig);
+        platform::controller_config_for(scenario.scene.rig);
     host::stereo_runner renderer(scenario, controller_config);
     std::vector<scene::gray_image> left, right;
     for (int n = 0; n < scenario.frame_count; ++n) {

@@ -13,35 +13,35 @@
 #include <vector>
 
 #include "dsp/controller.h"
-#include "tb/host/error_metrics.h"
-#include "tb/host/scenarios.h"
-#include "tb/host/stereo_runner.h"
+#include "tb/platform/scoring/error_metrics.h"
+#include "tests/support/host/scenarios.h"
+#include "tests/support/host/stereo_runner.h"
 
 namespace {
 
 using dsp::tracker_state;
 
-std::vector<host::frame_record> run(const scene::scenario& scenario,
+std::vector<platform::frame_record> run(const scene::scenario& scenario,
                                     const dsp::controller_config& config) {
     host::stereo_runner runner(scenario, config);
     return runner.run(0, scenario.frame_count);
 }
 
 dsp::controller_config default_config(const scene::scenario& scenario) {
-    return host::controller_config_for(scenario.scene.rig);
+    return platform::controller_config_for(scenario.scene.rig);
 }
 
 // "D" detect, "T" track, "L" lost per frame, for the log.
-std::string state_timeline(const std::vector<host::frame_record>& records) {
+std::string state_timeline(const std::vector<platform::frame_record>& records) {
     std::string s;
-    for (const host::frame_record& r : records) s += dsp::tracker_state_name(r.out.state)[0];
+    for (const platform::frame_record& r : records) s += dsp::tracker_state_name(r.out.state)[0];
     return s;
 }
 
 // The distinct states in order, e.g. DETECT TRACK LOST DETECT TRACK.
-std::vector<tracker_state> state_runs(const std::vector<host::frame_record>& records) {
+std::vector<tracker_state> state_runs(const std::vector<platform::frame_record>& records) {
     std::vector<tracker_state> runs;
-    for (const host::frame_record& r : records)
+    for (const platform::frame_record& r : records)
         if (runs.empty() || runs.back() != r.out.state) runs.push_back(r.out.state);
     return runs;
 }
@@ -58,8 +58,8 @@ TEST(ControllerStates, BallLeavesTheViewAndComesBack) {
     host::stereo_runner runner(scenario, config);
     const host::exit_return_frames when =
         host::exit_return_timing(runner.sequence(), scenario.frame_count);
-    const std::vector<host::frame_record> records = runner.run(0, scenario.frame_count);
-    const int first_motion = host::first_motion_frame(runner.sequence(), scenario.frame_count);
+    const std::vector<platform::frame_record> records = runner.run(0, scenario.frame_count);
+    const int first_motion = platform::first_motion_frame(runner.sequence(), scenario.frame_count);
     std::printf(
         "truth: first motion %d, wholly in view until %d, out of view %d..%d, wholly back at %d\n",
         first_motion, when.last_inside, when.first_outside, when.last_outside,
@@ -77,7 +77,7 @@ TEST(ControllerStates, BallLeavesTheViewAndComesBack) {
     EXPECT_EQ(state_runs(records), expected_runs);
 
     int first_track = -1, first_lost = -1, second_track = -1;
-    for (const host::frame_record& r : records) {
+    for (const platform::frame_record& r : records) {
         if (r.out.state == tracker_state::track && first_track < 0) first_track = r.index;
         if (r.out.state == tracker_state::lost && first_lost < 0) first_lost = r.index;
         if (r.out.state == tracker_state::track && first_lost >= 0 && second_track < 0)
@@ -109,7 +109,7 @@ TEST(ControllerStates, BallLeavesTheViewAndComesBack) {
     ASSERT_GE(second_track, 0);
     EXPECT_LE(second_track - when.first_inside_again, 3);
     for (int n = second_track; n < scenario.frame_count; ++n) {
-        const host::frame_errors e = host::score_frame(records[n]);
+        const platform::frame_errors e = platform::score_frame(records[n]);
         EXPECT_EQ(records[n].out.state, tracker_state::track) << "frame " << n;
         ASSERT_TRUE(e.box_scored) << "frame " << n;
         const double diameter = 2.0 * std::sqrt(records[n].truth.right.area_px / std::acos(-1.0));
@@ -124,8 +124,8 @@ TEST(ControllerStates, BallLeavesTheViewAndComesBack) {
     // Every 3D point reported in the whole run, also next to the borders,
     // is within 2 % (the disparity range-end rule withholds the rest).
     int points = 0, withheld_near_border = 0;
-    for (const host::frame_record& r : records) {
-        const host::frame_errors e = host::score_frame(r);
+    for (const platform::frame_record& r : records) {
+        const platform::frame_errors e = platform::score_frame(r);
         if (r.out.has_object && !r.out.has_point) ++withheld_near_border;
         if (!e.point_scored) continue;
         ++points;
@@ -138,9 +138,9 @@ TEST(ControllerStates, BallLeavesTheViewAndComesBack) {
 // third on and finds nothing; the state never leaves DETECT.
 TEST(ControllerStates, StaticSceneIsNeverDetected) {
     const scene::scenario scenario = host::static_scenario(40);
-    const std::vector<host::frame_record> records = run(scenario, default_config(scenario));
+    const std::vector<platform::frame_record> records = run(scenario, default_config(scenario));
     int detect_runs = 0;
-    for (const host::frame_record& r : records) {
+    for (const platform::frame_record& r : records) {
         EXPECT_EQ(r.out.state, tracker_state::detect) << "frame " << r.index;
         EXPECT_FALSE(r.out.motion_found) << "frame " << r.index;
         EXPECT_FALSE(r.out.has_object) << "frame " << r.index;
@@ -165,7 +165,7 @@ lighting_run run_lighting(double gain, int ramp_frames, bool compensation) {
     dsp::controller_config config = default_config(scenario);
     config.brightness.enabled = compensation;
     lighting_run out;
-    for (const host::frame_record& r : run(scenario, config)) {
+    for (const platform::frame_record& r : run(scenario, config)) {
         out.gains.push_back(r.out.gain_q8_right);
         if (!r.out.motion_found) continue;
         if (out.first_motion_frame < 0) out.first_motion_frame = r.index;

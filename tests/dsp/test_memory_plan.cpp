@@ -13,8 +13,8 @@
 
 #include "dsp/controller.h"
 #include "dsp/motion_detect.h"
-#include "tb/host/scenarios.h"
-#include "tb/host/stereo_runner.h"
+#include "tests/support/host/scenarios.h"
+#include "tests/support/host/stereo_runner.h"
 #include "tests/support/data_path.h"
 
 namespace {
@@ -164,7 +164,7 @@ TEST(MemoryPlan, PackedThreeFrameDifferenceEqualsThePlainFormulaOnVtest) {
 // Every detection's motion box equals a plain detector's on the three frames.
 TEST(MemoryPlan, ControllerHistoryStaysConsecutiveOnARenderedSequence) {
     const scene::scenario scenario = host::exit_return_scenario(4);
-    host::stereo_runner runner(scenario, host::controller_config_for(scenario.scene.rig));
+    host::stereo_runner runner(scenario, platform::controller_config_for(scenario.scene.rig));
     const dsp::controller_config& config = runner.firmware().config();
     dsp::motion_detector plain;
     plain.init(config.max_width, config.max_height);
@@ -173,7 +173,7 @@ TEST(MemoryPlan, ControllerHistoryStaysConsecutiveOnARenderedSequence) {
     long mismatches = 0;
     dsp::tracker_state previous = dsp::tracker_state::detect;
     for (int n = 0; n < scenario.frame_count; ++n) {
-        const host::frame_record r = runner.step(n);
+        const platform::frame_record r = runner.step(n);
         right.push_back(copy_of(runner.firmware().gray_right()));
         if (right.size() >= 2) {
             mismatches +=

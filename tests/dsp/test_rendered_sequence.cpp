@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "model/scene/sequence.h"
-#include "tb/host/error_metrics.h"
-#include "tb/host/scenarios.h"
-#include "tb/host/stereo_runner.h"
+#include "tb/platform/scoring/error_metrics.h"
+#include "tests/support/host/scenarios.h"
+#include "tests/support/host/stereo_runner.h"
 
 namespace {
 
@@ -34,23 +34,23 @@ double ball_diameter_px(const scene::ball_truth& truth) {
 }
 
 struct run_result {
-    std::vector<host::frame_record> records;
-    host::run_summary summary;
+    std::vector<platform::frame_record> records;
+    platform::run_summary summary;
 };
 
 run_result run(const scene::scenario& scenario, int frames) {
-    host::stereo_runner runner(scenario, host::controller_config_for(scenario.scene.rig));
+    host::stereo_runner runner(scenario, platform::controller_config_for(scenario.scene.rig));
     run_result r;
     r.records = runner.run(0, frames);
-    r.summary = host::summarize(r.records, host::first_motion_frame(runner.sequence(), frames));
+    r.summary = platform::summarize(r.records, platform::first_motion_frame(runner.sequence(), frames));
     return r;
 }
 
 void print_errors(const char* name, const run_result& r) {
     std::printf("%s: frame state  box_err_px (diam)  dX_mm   dY_mm   depth_err_%%  disp_err_px\n",
                 name);
-    for (const host::frame_record& rec : r.records) {
-        const host::frame_errors e = host::score_frame(rec);
+    for (const platform::frame_record& rec : r.records) {
+        const platform::frame_errors e = platform::score_frame(rec);
         std::printf("%s: %5d %-6s", name, rec.index, dsp::tracker_state_name(rec.out.state));
         if (e.box_scored) {
             std::printf(" %6.2f (%5.1f)", e.box_centre_err_px, ball_diameter_px(rec.truth));
@@ -64,7 +64,7 @@ void print_errors(const char* name, const run_result& r) {
             std::printf(" %7s %7s %9s %9s\n", "-", "-", "-", "-");
         }
     }
-    const host::run_summary& s = r.summary;
+    const platform::run_summary& s = r.summary;
     std::printf(
         "%s: first motion %d, detection %d, tracked %d, points %d, depth within 2%% %d, "
         "RMSE x %.1f y %.1f z %.1f mm, max |depth err| %.2f%%, box err mean %.2f max %.2f px\n",
@@ -73,7 +73,7 @@ void print_errors(const char* name, const run_result& r) {
         s.mean_box_centre_err_px, s.max_box_centre_err_px);
 }
 
-void record(const std::string& prefix, const host::run_summary& s) {
+void record(const std::string& prefix, const platform::run_summary& s) {
     ::testing::Test::RecordProperty(prefix + "_detection_delay_frames",
                                     s.detection_frame - s.first_motion_frame);
     ::testing::Test::RecordProperty(prefix + "_depth_max_abs_err_pct_x100",
@@ -90,7 +90,7 @@ void record(const std::string& prefix, const host::run_summary& s) {
 // max_xy_error_mm (after `settle` frames for the box to grow to the ball), a
 // 3D point in every frame with depth within 2 % of the visible surface.
 void expect_detected_and_tracked(const run_result& r, int settle) {
-    const host::run_summary& s = r.summary;
+    const platform::run_summary& s = r.summary;
     ASSERT_GE(s.first_motion_frame, 3) << "the sequence must start with still frames";
     ASSERT_GE(s.detection_frame, 0) << "never detected";
     // Three-frame differencing needs a change on both sides of f(t-1): the
@@ -98,8 +98,8 @@ void expect_detected_and_tracked(const run_result& r, int settle) {
     EXPECT_GT(s.detection_frame, s.first_motion_frame);
     EXPECT_LE(s.detection_frame - s.first_motion_frame, max_detection_delay);
 
-    for (const host::frame_record& rec : r.records) {
-        const host::frame_errors e = host::score_frame(rec);
+    for (const platform::frame_record& rec : r.records) {
+        const platform::frame_errors e = platform::score_frame(rec);
         if (rec.index < s.detection_frame) {
             EXPECT_FALSE(rec.out.motion_found) << "frame " << rec.index;
             EXPECT_FALSE(rec.out.has_object) << "frame " << rec.index;

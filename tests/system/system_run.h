@@ -13,7 +13,7 @@
 
 #include "dsp/c6416_regs.h"
 #include "dsp/kernel_costs.h"
-#include "tb/host/stereo_runner.h"
+#include "tests/support/host/stereo_runner.h"
 #include "tb/platform/budget.h"
 #include "tb/platform/closed_form.h"
 #include "tb/platform/platform.h"
@@ -51,7 +51,7 @@ inline double host_max_processing_ms(const platform::platform_config& config, in
     host::stereo_runner runner(config.scenario, platform::pipeline_config(config));
     uint64_t max_cycles = 0;
     for (int n = 0; n < frames; ++n) {
-        const host::frame_record record = runner.step(n);
+        const platform::frame_record record = runner.step(n);
         uint64_t cycles = config.capture_cycles;
         for (int s = 0; s < dsp::stage_count; ++s) cycles += record.out.stage_cycles[s];
         max_cycles = std::max(max_cycles, cycles);

@@ -33,7 +33,7 @@
 #include <vector>
 
 #include "model/c6416/dsk_profile.h"
-#include "tb/output/vcd_writer.h"
+#include "tb/app/output/vcd_writer.h"
 #include "tb/platform/budget.h"
 #include "tb/platform/platform.h"
 #include "tb/platform/report.h"

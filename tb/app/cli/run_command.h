@@ -1,0 +1,57 @@
+// `stereosim run` (docs/cli.md): options -> config keys -> platform_config,
+// one co-simulation, report.json / frames.csv (and the extensions' files)
+// staged and renamed into --out DIR, the summary on a terminal.
+//
+// Exit codes: 0 within budget, 1 over budget (a result, not an error),
+// 2 bad input (nothing written), 3 the run failed (nothing written).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tb/app/cli/run_outputs.h"
+
+namespace CLI {
+class App;
+}
+
+namespace cli {
+
+enum exit_code : int {
+    exit_within_budget = 0,
+    exit_over_budget = 1,
+    exit_bad_input = 2,
+    exit_run_failed = 3
+};
+
+struct run_options {
+    std::string scenario;
+    std::string config_file;
+    std::string frames, seed, dsk, cpu_mhz, mode, replay;  // checked as config keys
+    std::vector<std::string> sets;                         // key=value
+    std::string out_dir;
+    bool quiet = false;
+    bool force_progress = false;  // --progress: the progress line even off a terminal
+    bool force_summary = false;   // --summary: the summary even off a terminal
+};
+
+class run_command {
+  public:
+    // Adds the `run` subcommand (and the extensions' options) to the app.
+    // `extensions`: the run extensions in the order they run (run_outputs.h).
+    run_command(CLI::App& app, std::vector<std::unique_ptr<run_extension>> extensions);
+    CLI::App* subcommand() const { return m_run; }
+    // Runs it after parsing; returns the exit code.
+    int execute();
+
+  private:
+    CLI::App* m_run = nullptr;
+    run_options m_options;
+    std::vector<std::unique_ptr<run_extension>> m_extensions;
+};
+
+// Shown by `stereosim run` errors: "stereosim: error: <message>".
+void print_error(const std::string& message);
+
+}  // namespace cli

@@ -1,0 +1,358 @@
+#include "tb/app/cli/run_report.h"
+
+#include <algorithm>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+#include "dsp/kernel_costs.h"
+#include "dsp/stage.h"
+#include "tb/app/cli/config_keys.h"
+#include "tb/platform/island_sc.h"
+#include "tb/platform/report.h"
+
+namespace cli {
+
+namespace {
+
+using nlohmann::json;
+
+// Reports carry 6 decimals (ms: 1 ns; mm: 1 nm): enough for any figure here,
+// and short enough to read.
+double round6(double v) {
+    return std::round(v * 1e6) / 1e6;
+}
+
+double ticks_to_ms(simtime::ticks t) {
+    return static_cast<double>(t) / (static_cast<double>(simtime::ticks_per_ns) * 1e6);
+}
+
+json box_json(const dsp::box& b) {
+    if (b.empty()) return nullptr;
+    return json{{"x", b.x}, {"y", b.y}, {"width", b.width}, {"height", b.height}};
+}
+
+json stage_ms_json(const double* ms) {
+    json out = json::object();
+    for (int s = 0; s < dsp::stage_count; ++s)
+        out[dsp::stage_name(static_cast<dsp::stage>(s))] = round6(ms[s]);
+    return out;
+}
+
+std::string hex64(uint64_t v) {
+    char text[20];
+    std::snprintf(text, sizeof text, "%016" PRIx64, v);
+    return text;
+}
+
+// The period index holding a tick.
+int period_of(simtime::ticks tick, simtime::ticks period) {
+    return static_cast<int>(tick / period);
+}
+
+json frame_row(const platform::period_budget& period, const platform::platform_top& top,
+               const platform::scoreboard_report& score, const platform::budget_report& budget,
+               const std::set<int>& over_budget_periods) {
+    json row;
+    row["frame"] = period.index;
+    row["start_ms"] = round6(ticks_to_ms(period.begin));
+
+    // ---- sync: the card's verdicts in this period, the truth of its pair
+    const platform::island& isl = top.cycle_island();
+    auto rises_in = [&](const std::vector<simtime::ticks>& rises) {
+        int n = 0;
+        for (simtime::ticks t : rises) n += t >= period.begin && t < period.end;
+        return n;
+    };
+    const int ready = rises_in(isl.irq_rises(0));
+    const int sync_errors = rises_in(isl.irq_rises(1));
+    const platform::pair_check* pair = nullptr;
+    size_t pair_index = 0;
+    for (size_t i = 0; i < score.pairs.size(); ++i) {
+        if (score.pairs[i].ready >= period.begin && score.pairs[i].ready < period.end) {
+            pair = &score.pairs[i];
+            pair_index = i;
+            break;
+        }
+    }
+    int oe_restarts = 0;
+    for (size_t s = 1; s < score.starts.size(); ++s)
+        oe_restarts +=
+            score.starts[s].oe_rise >= period.begin && score.starts[s].oe_rise < period.end;
+    json sync;
+    sync["card"] = sync_errors > 0 ? "sync_error" : ready > 0 ? "frame_ready" : "none";
+    sync["oe_restarts"] = oe_restarts;
+    sync["pair"] = pair ? json(pair->pair) : json(nullptr);
+    sync["in_step"] = pair ? json(pair->truth_in_step) : json(nullptr);
+    row["sync"] = sync;
+
+    // ---- budget of the period
+    json b;
+    b["judged"] = period.judged;
+    b["over_budget"] = over_budget_periods.count(period.index) > 0;
+    b["cpu_busy_ms"] = round6(period.cpu_busy_ms);
+    b["emif_busy_ms"] = round6(period.emif_busy_ms);
+    b["slack_ms"] = round6(budget.period_ms - std::max(period.cpu_busy_ms, period.emif_busy_ms));
+    b["fifo_peak_words"] = {{"left", period.fifo_peak_words[0]},
+                            {"right", period.fifo_peak_words[1]}};
+    b["overflow"] = period.overflow;
+    b["drops"] = period.drops;
+    row["budget"] = b;
+
+    // ---- the pair forwarded in this period and what the firmware made of it
+    json estimate = nullptr, truth = nullptr, errors = nullptr, stage_ms = nullptr;
+    json state = nullptr, box_right = nullptr, box_left = nullptr, disparity = nullptr;
+    json pair_json = nullptr;
+    if (pair) {
+        const platform::pair_budget& pb = budget.pairs[pair_index];
+        pair_json = {
+            {"number", pair->pair},
+            {"scene_frame", pair->scene_frame},
+            {"captured", pair->captured},
+            {"processed", pair->processed},
+            {"capture_ms", round6(pb.capture_ms)},
+            {"processing_ms", pair->processed ? json(round6(pb.processing_ms)) : json(nullptr)},
+            {"latency_ms", pair->processed ? json(round6(pair->latency_ms)) : json(nullptr)}};
+        if (pair->processed) {
+            const dsp::frame_output& out = pair->record.out;
+            const platform::frame_errors& e = pair->errors;
+            stage_ms = stage_ms_json(pb.stage_ms);
+            state = dsp::tracker_state_name(out.state);
+            if (out.has_object) {
+                box_right = box_json(out.box_right);
+                box_left = box_json(out.box_left);
+            }
+            if (out.has_point) {
+                disparity = round6(out.disparity_q8 / 256.0);
+                estimate = {{"x", round6(out.point.x / 1000.0)},
+                            {"y", round6(out.point.y / 1000.0)},
+                            {"z", round6(out.point.z / 1000.0)}};
+            }
+            if (pair->record.has_truth) {
+                const scene::ball_truth& t = pair->record.truth;
+                truth = {{"x", round6(t.centre_m.x * 1000.0)},
+                         {"y", round6(t.centre_m.y * 1000.0)},
+                         {"z", round6(t.centre_m.z * 1000.0)},
+                         {"z_visible", round6(t.visible_mean_depth_m * 1000.0)}};
+            }
+            errors = {
+                {"x_mm", e.point_scored ? json(round6(e.err_x_mm)) : json(nullptr)},
+                {"y_mm", e.point_scored ? json(round6(e.err_y_mm)) : json(nullptr)},
+                {"z_mm", e.point_scored ? json(round6(e.err_z_mm)) : json(nullptr)},
+                {"depth_pct", e.point_scored ? json(round6(e.depth_err_pct)) : json(nullptr)},
+                {"disparity_px", e.point_scored ? json(round6(e.disparity_err_px)) : json(nullptr)},
+                {"box_centre_px",
+                 e.box_scored ? json(round6(e.box_centre_err_px)) : json(nullptr)}};
+        }
+    }
+    row["pair"] = pair_json;
+    row["stage_ms"] = stage_ms;
+    row["tracker_state"] = state;
+    row["box_right"] = box_right;
+    row["box_left"] = box_left;
+    row["disparity_px"] = disparity;
+    row["estimate"] = estimate;
+    row["truth"] = truth;
+    row["errors"] = errors;
+    return row;
+}
+
+}  // namespace
+
+std::vector<std::string> stage_names() {
+    std::vector<std::string> names;
+    for (int s = 0; s < dsp::stage_count; ++s)
+        names.push_back(dsp::stage_name(static_cast<dsp::stage>(s)));
+    return names;
+}
+
+json build_report(const run_setup& setup, const platform::platform_top& top,
+                  const platform::scoreboard_report& score, const platform::budget_report& budget) {
+    const simtime::ticks period_ticks = top.config().period;
+
+    // Periods with an overrun: a period's own, or the period its pair became ready in.
+    std::set<int> over;
+    json overruns = json::array();
+    for (const platform::overrun& o : budget.overruns) {
+        int period = o.period;
+        if (period < 0) {
+            for (const platform::pair_check& p : score.pairs)
+                if (p.pair == o.pair) period = period_of(p.ready, period_ticks);
+        }
+        if (period >= 0) over.insert(period);
+        overruns.push_back({{"resource", platform::resource_name(o.what)},
+                            {"stage", dsp::stage_name(o.stage)},
+                            {"period", o.period >= 0 ? json(o.period) : json(nullptr)},
+                            {"pair", o.pair > 0 ? json(o.pair) : json(nullptr)},
+                            {"value_ms", round6(o.value_ms)},
+                            {"limit_ms", round6(o.limit_ms)},
+                            {"text", o.describe()}});
+    }
+
+    json report;
+    report["schema_version"] = report_schema_version;
+    report["tool"] = {{"name", "stereosim"}, {"cost_model", dsp::cost::model().id()}};
+    report["config"] = config_json(setup);
+    report["verdict"] = budget.fits ? "within_budget" : "over_budget";
+    report["overruns"] = overruns;
+
+    json summary;
+    summary["sync"] = {
+        {"mismatches_detected", score.card_sync_errors},
+        {"resyncs", score.oe_restarts},
+        {"unsynced_pairs_used", score.used_out_of_step},
+        {"oe_starts", score.starts.size()},
+        {"starts_agreeing_with_truth", score.starts_agreeing},
+        {"firmware_sync_errors", score.firmware_sync_errors},
+        {"pairs_forwarded", score.pairs.size()},
+        {"forwarded_out_of_step", score.forwarded_out_of_step},
+        {"used_before_verdict", score.used_before_verdict},
+        {"first_in_step_ms", score.first_in_step_ready >= 0
+                                 ? json(round6(ticks_to_ms(score.first_in_step_ready)))
+                                 : json(nullptr)}};
+
+    json stage_ms = json::object();
+    for (int s = 0; s < dsp::stage_count; ++s)
+        stage_ms[dsp::stage_name(static_cast<dsp::stage>(s))] = {
+            {"mean", round6(budget.stage_ms_mean[s])}, {"max", round6(budget.stage_ms_max[s])}};
+    summary["timing"] = {
+        {"budget_ms", round6(budget.period_ms)},
+        {"frames_over_budget", over.size()},
+        {"judged_periods", budget.judged_periods},
+        {"stage_ms", stage_ms},
+        {"capture_ms",
+         {{"mean", round6(budget.mean_capture_ms)}, {"max", round6(budget.max_capture_ms)}}},
+        {"processing_ms_max", round6(budget.max_processing_ms)},
+        {"latency_ms_max", round6(budget.latency_ms_max)},
+        {"cpu_busy_ms_max", round6(budget.max_cpu_busy_ms)},
+        {"emif_busy_ms_max", round6(budget.max_emif_busy_ms)},
+        {"fifo_peak_words",
+         {{"left", budget.fifo_peak_words[0]}, {"right", budget.fifo_peak_words[1]}}},
+        {"fifo_capacity_words", platform::card_fifo_words},
+        {"drops", budget.drops},
+        {"overflows", budget.overflows},
+        {"cpu_mhz", round6(budget.cpu_hz / 1e6)}};
+
+    const platform::run_summary& s = score.summary;
+    const bool scored = s.point_scored_frames > 0;
+    summary["accuracy"] = {
+        {"frames_tracked", s.tracked_frames},
+        {"first_motion_frame",
+         score.first_motion_frame >= 0 ? json(score.first_motion_frame) : json(nullptr)},
+        {"detection_frame",
+         score.detection_frame >= 0 ? json(score.detection_frame) : json(nullptr)},
+        {"detect_latency_frames", score.first_motion_frame >= 0 && score.detection_frame >= 0
+                                      ? json(score.detection_frame - score.first_motion_frame)
+                                      : json(nullptr)},
+        {"points_scored", s.point_scored_frames},
+        {"rmse_mm",
+         {{"x", scored ? json(round6(s.rmse_x_mm)) : json(nullptr)},
+          {"y", scored ? json(round6(s.rmse_y_mm)) : json(nullptr)},
+          {"z", scored ? json(round6(s.rmse_z_mm)) : json(nullptr)}}},
+        {"box_err_px_max", round6(score.max_box_err_px)},
+        {"depth_err_pct_max", round6(score.max_depth_err_pct)}};
+    summary["data_path"] = {{"pairs_checked", score.integrity_checked},
+                            {"pairs_intact", score.integrity_equal}};
+    const platform::run_figures f = platform::figures_of(top);
+    summary["sim"] = {{"simulated_s", round6(f.sim_s)},
+                      {"wall_s", round6(f.wall_s)},
+                      {"ratio", round6(f.sim_per_wall())}};
+    summary["hashes"] = {
+        {"pins",
+         top.config().hash_pins ? json(hex64(top.cycle_island().pin_hash())) : json(nullptr)},
+        {"timeline", hex64(top.events().hash())}};
+    report["summary"] = summary;
+
+    json frames = json::array();
+    for (const platform::period_budget& p : budget.periods)
+        frames.push_back(frame_row(p, top, score, budget, over));
+    report["frames"] = frames;
+    return report;
+}
+
+const std::vector<std::pair<std::string, std::string>>& frame_csv_columns() {
+    static const std::vector<std::pair<std::string, std::string>> columns = [] {
+        std::vector<std::pair<std::string, std::string>> c = {
+            {"frame", "/frame"},
+            {"start_ms", "/start_ms"},
+            {"card_verdict", "/sync/card"},
+            {"oe_restarts", "/sync/oe_restarts"},
+            {"pair", "/sync/pair"},
+            {"in_step", "/sync/in_step"},
+            {"judged", "/budget/judged"},
+            {"over_budget", "/budget/over_budget"},
+            {"cpu_busy_ms", "/budget/cpu_busy_ms"},
+            {"emif_busy_ms", "/budget/emif_busy_ms"},
+            {"slack_ms", "/budget/slack_ms"},
+            {"fifo_peak_left", "/budget/fifo_peak_words/left"},
+            {"fifo_peak_right", "/budget/fifo_peak_words/right"},
+            {"overflow", "/budget/overflow"},
+            {"drops", "/budget/drops"},
+            {"scene_frame", "/pair/scene_frame"},
+            {"captured", "/pair/captured"},
+            {"processed", "/pair/processed"},
+            {"capture_ms", "/pair/capture_ms"},
+            {"processing_ms", "/pair/processing_ms"},
+            {"latency_ms", "/pair/latency_ms"}};
+        for (const std::string& s : stage_names())
+            c.push_back({"stage_" + s + "_ms", "/stage_ms/" + s});
+        const std::vector<std::pair<std::string, std::string>> rest = {
+            {"tracker_state", "/tracker_state"},
+            {"box_right_x", "/box_right/x"},
+            {"box_right_y", "/box_right/y"},
+            {"box_right_width", "/box_right/width"},
+            {"box_right_height", "/box_right/height"},
+            {"box_left_x", "/box_left/x"},
+            {"box_left_y", "/box_left/y"},
+            {"box_left_width", "/box_left/width"},
+            {"box_left_height", "/box_left/height"},
+            {"disparity_px", "/disparity_px"},
+            {"est_x_mm", "/estimate/x"},
+            {"est_y_mm", "/estimate/y"},
+            {"est_z_mm", "/estimate/z"},
+            {"true_x_mm", "/truth/x"},
+            {"true_y_mm", "/truth/y"},
+            {"true_z_mm", "/truth/z"},
+            {"true_z_visible_mm", "/truth/z_visible"},
+            {"err_x_mm", "/errors/x_mm"},
+            {"err_y_mm", "/errors/y_mm"},
+            {"err_z_mm", "/errors/z_mm"},
+            {"err_depth_pct", "/errors/depth_pct"},
+            {"err_disparity_px", "/errors/disparity_px"},
+            {"err_box_centre_px", "/errors/box_centre_px"}};
+        c.insert(c.end(), rest.begin(), rest.end());
+        return c;
+    }();
+    return columns;
+}
+
+std::string frames_csv(const json& report) {
+    std::string out;
+    const auto& columns = frame_csv_columns();
+    for (size_t i = 0; i < columns.size(); ++i) out += (i ? "," : "") + columns[i].first;
+    out += "\n";
+    for (const json& row : report.at("frames")) {
+        for (size_t i = 0; i < columns.size(); ++i) {
+            if (i) out += ",";
+            // A null parent (no pair) makes every field under it empty.
+            const json* value = nullptr;
+            try {
+                value = &row.at(json::json_pointer(columns[i].second));
+            } catch (const json::exception&) {
+                value = nullptr;
+            }
+            if (!value || value->is_null()) continue;
+            if (value->is_boolean())
+                out += value->get<bool>() ? "1" : "0";
+            else if (value->is_string())
+                out += value->get<std::string>();
+            else
+                out += value->dump();
+        }
+        out += "\n";
+    }
+    return out;
+}
+
+}  // namespace cli

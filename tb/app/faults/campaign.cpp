@@ -1,0 +1,518 @@
+#include "tb/app/faults/campaign.h"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+extern char** environ;
+
+namespace faults {
+
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+struct plan_entry {
+    const char* fault;  // nullptr: clean; several specs space-separated
+    int frames;
+    int retry_limit;
+    const char* settings = nullptr;  // space-separated KEY=VALUE for --set
+};
+
+std::vector<std::string> words(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string w; in >> w;) out.push_back(w);
+    return out;
+}
+
+// Short runs (CI): one spec per kind and regime. Faults that must end in a
+// hard error run with RETRY_LIMIT 2 so the firmware's give-up bound,
+// (1 + 1) x (2 + 1) + 2 = 8 periods, fits in 10 frames.
+const plan_entry smoke_faults[] = {
+    {"skew:sensor=R,lines=3@frame=4", 8, 8},
+    {"skew:sensor=L,pixels=1@frame=2", 8, 8},
+    // RETRY_LIMIT 0: every failed check is a card hard error and a firmware
+    // re-arm; two of them with good pairs between must not add up to a
+    // give-up. Seed 3's starts after each re-arm are in step by the truth
+    // (two out-of-step starts in a row would make the give-up right).
+    {"skew:sensor=R,lines=3@frame=3 skew:sensor=L,lines=2@frame=7", 12, 0},
+    {"drop-line:sensor=L,line=100@frame=4", 8, 8},
+    {"drop-frame:sensor=R@frame=4", 8, 8},
+    {"extra-frame:sensor=L@frame=4", 8, 8},
+    {"drift:sensor=R,ppm=1", 8, 8},
+    {"drift:sensor=R,ppm=200", 10, 2},
+    {"glitch:sensor=L,signal=href@ms=130.2", 10, 8},
+    {"glitch:sensor=R,signal=vsync@ms=100", 8, 8},
+    // 48 - 6 sigma >= 32: flagged every frame; 48 + 6 sigma < 64: a
+    // threshold programmed one bit off would never see it.
+    {"dark-leak:sensor=R,level=48@frame=2", 10, 2},
+    {"dark-leak:sensor=L,level=8", 8, 8},
+    {"stuck-bit:sensor=L,bit=7", 10, 2},
+    {"stuck-bit:sensor=R,bit=0", 8, 8},
+    {"dead:sensor=R", 10, 2},
+    {"oe-stuck:sensor=L", 10, 2},
+    // Both sensors silent and a START_TIMEOUT longer than the run: the card
+    // never flags anything, only the firmware's own watchdog can give up.
+    {"dead:sensor=L dead:sensor=R", 10, 2,
+     "firmware.watchdog_ms=50 firmware.card_start_timeout=65535"},
+    {"emif-wait:cycles=40@frame=3", 8, 8},
+    {"cpu-slow:factor=20@frame=4", 14, 8},
+};
+
+const plan_entry full_faults[] = {
+    {"skew:sensor=R,lines=1@frame=4", 14, 8},
+    {"skew:sensor=L,lines=3@frame=5", 14, 8},
+    {"skew:sensor=R,lines=40@frame=3", 14, 8},
+    {"skew:sensor=L,pixels=1@frame=2", 14, 8},
+    {"skew:sensor=R,pixels=7@frame=6", 14, 8},
+    {"drop-line:sensor=L,line=0@frame=4", 14, 8},
+    {"drop-line:sensor=R,line=100@frame=7", 20, 8},
+    {"drop-line:sensor=L,line=500@frame=3", 14, 8},
+    {"drop-frame:sensor=R@frame=4", 14, 8},
+    {"drop-frame:sensor=L@frame=6", 14, 8},
+    {"extra-frame:sensor=L@frame=4", 14, 8},
+    {"drift:sensor=R,ppm=1", 20, 8},
+    {"drift:sensor=L,ppm=-1", 20, 8},
+    {"drift:sensor=R,ppm=200", 10, 2},
+    {"drift:sensor=L,ppm=-50", 10, 2},
+    {"glitch:sensor=L,signal=href@ms=130.2", 14, 8},
+    {"glitch:sensor=R,signal=href,width=50@ms=100", 14, 8},
+    {"glitch:sensor=R,signal=vsync@ms=100", 14, 8},
+    {"glitch:sensor=L,signal=vsync,width=50@ms=150.7", 14, 8},
+    {"dark-leak:sensor=L,level=8", 14, 8},
+    {"dark-leak:sensor=R,level=40@frame=2", 10, 2},
+    {"dark-leak:sensor=R,level=80@frame=2", 10, 2},
+    {"stuck-bit:sensor=L,bit=0", 14, 8},
+    {"stuck-bit:sensor=R,bit=3", 14, 8},
+    {"stuck-bit:sensor=L,bit=4", 14, 8},
+    {"stuck-bit:sensor=R,bit=5", 10, 2},
+    {"stuck-bit:sensor=L,bit=7", 10, 2},
+    {"stuck-bit:sensor=R,bit=7,value=0", 14, 8},
+    {"dead:sensor=L", 10, 2},
+    {"dead:sensor=R", 10, 2},
+    {"dead:sensor=L dead:sensor=R", 10, 2,
+     "firmware.watchdog_ms=50 firmware.card_start_timeout=65535"},
+    {"oe-stuck:sensor=L", 10, 2},
+    {"oe-stuck:sensor=R", 10, 2},
+    {"emif-wait:cycles=2@frame=3", 14, 8},
+    {"emif-wait:cycles=40@frame=3", 14, 8},
+    {"emif-wait:cycles=40,ce=2@frame=3", 14, 8},
+    {"cpu-slow:factor=1.5@frame=4", 14, 8},
+    {"cpu-slow:factor=3@frame=4", 14, 8},
+    {"cpu-slow:factor=20@frame=4", 20, 8},
+};
+
+// Full campaign: 84 clean runs of 12 frames = 1008 clean frames.
+constexpr int full_clean_runs = 84, full_clean_frames = 12;
+
+std::string csv_field(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string out = "\"";
+    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+std::string fmt(double v, int decimals = 1) {
+    if (v < 0) return "-";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return buf;
+}
+
+std::string this_program() {
+    std::error_code ec;
+    const fs::path p = fs::read_symlink("/proc/self/exe", ec);
+    return ec ? std::string("stereosim") : p.string();
+}
+
+// One child: `binary run ...`, output to the run's folder.
+pid_t spawn_run(const campaign_options& o, const campaign_run& r, const std::string& dir,
+                std::string* error) {
+    std::vector<std::string> args = {o.binary,
+                                     "run",
+                                     "--quiet",
+                                     "--frames",
+                                     std::to_string(r.frames),
+                                     "--seed",
+                                     std::to_string(r.seed),
+                                     "--card-retry-limit",
+                                     std::to_string(r.retry_limit),
+                                     "--out",
+                                     dir + "/out"};
+    for (const std::string& spec : words(r.fault)) {
+        args.push_back("--fault");
+        args.push_back(spec);
+    }
+    for (const std::string& setting : r.settings) {
+        args.push_back("--set");
+        args.push_back(setting);
+    }
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    const std::string log = dir + "/log.txt";
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
+                                     O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+    pid_t pid = -1;
+    const int rc = posix_spawn(&pid, o.binary.c_str(), &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (rc != 0) {
+        *error = "cannot start " + o.binary + ": " + std::strerror(rc);
+        return -1;
+    }
+    return pid;
+}
+
+void collect(campaign_row& row, const std::string& dir, int status) {
+    row.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    std::ifstream in(dir + "/out/report.json");
+    if (!in) {
+        std::ifstream log(dir + "/log.txt");
+        std::string line, last;
+        while (std::getline(log, line))
+            if (!line.empty()) last = line;
+        row.error = "exit " + std::to_string(row.exit_code) + ", no report.json" +
+                    (last.empty() ? "" : ": " + last);
+        return;
+    }
+    try {
+        const json report = json::parse(in);
+        std::string error;
+        if (!read_from_report(report, &row.result, &error)) {
+            row.error = error;
+            return;
+        }
+        row.ran = true;
+    } catch (const std::exception& e) {
+        row.error = std::string("unreadable report.json: ") + e.what();
+    }
+}
+
+json row_json(const campaign_row& r) {
+    json j = {{"index", r.run.index},
+              {"fault", r.run.fault.empty() ? "clean" : r.run.fault},
+              {"seed", r.run.seed},
+              {"frames", r.run.frames},
+              {"retry_limit", r.run.retry_limit},
+              {"ran", r.ran},
+              {"exit_code", r.exit_code},
+              {"wall_s", r.wall_s},
+              {"contract_ok", r.ok()}};
+    if (!r.ran) {
+        j["error"] = r.error;
+        return j;
+    }
+    const run_observation& run = r.result.run;
+    const verdict& v = r.result.verdicts.front();
+    j["kind"] = r.result.specs.empty() ? "clean" : fault_type_name(r.result.specs[0].type);
+    j["expected"] = v.expected_text;
+    j["actual"] = outcome_name(v.actual);
+    if (!run.faults.empty()) {
+        const fault_observation& f = run.faults[0];
+        j["onset_ms"] = f.in_effect ? json(f.onset_ms) : json(nullptr);
+        j["detected_by"] = f.detected_by;
+        j["reported_by"] = f.reported_by;
+        j["verdict_causes"] = f.causes;
+        j["frames_to_detect"] = f.detected ? json(f.frames_to_detect) : json(nullptr);
+        j["frames_to_recover"] = f.recovered ? json(f.frames_to_recover) : json(nullptr);
+        j["failed_starts"] = f.failed_starts;
+        j["pairs_discarded"] = f.pairs_discarded;
+        j["pairs_used_after_onset"] = f.pairs_used;
+        j["pairs_dropped_after_onset"] = f.pairs_dropped;
+    } else {
+        j["pairs_discarded"] = run.card_sync_errors + run.card_overflows;
+    }
+    j["unsynced_pairs_used"] = run.unsynced_pairs_used;
+    j["misses"] = run.misses;
+    j["false_alarms"] = run.false_alarms;
+    j["sync_errors"] = run.card_sync_errors;
+    j["pairs_forwarded"] = run.pairs_forwarded;
+    j["pairs_in_step"] = run.pairs_in_step;
+    j["pairs_processed"] = run.pairs_processed;
+    j["pairs_dropped"] = run.pairs_dropped;
+    j["pairs_unaccounted"] = run.pairs_unaccounted;
+    j["unreported_sync_errors"] = run.unreported_sync_errors;
+    j["unreported_overflows"] = run.unreported_overflows;
+    j["identity_checked"] = run.identity_checked;
+    j["identity_mismatches"] = run.identity_mismatches;
+    j["hard_error_ms"] = run.hard_error ? json(run.hard_error_ms) : json(nullptr);
+    json violations = json::array();
+    for (const verdict& x : r.result.verdicts)
+        for (const std::string& s : x.violations) violations.push_back(s);
+    j["violations"] = violations;
+    return j;
+}
+
+const char* const csv_columns[] = {"index",
+                                   "fault",
+                                   "kind",
+                                   "seed",
+                                   "frames",
+                                   "retry_limit",
+                                   "expected",
+                                   "actual",
+                                   "detected_by",
+                                   "reported_by",
+                                   "verdict_causes",
+                                   "frames_to_detect",
+                                   "frames_to_recover",
+                                   "failed_starts",
+                                   "pairs_discarded",
+                                   "pairs_used_after_onset",
+                                   "unsynced_pairs_used",
+                                   "misses",
+                                   "false_alarms",
+                                   "sync_errors",
+                                   "pairs_forwarded",
+                                   "pairs_in_step",
+                                   "pairs_processed",
+                                   "pairs_dropped",
+                                   "pairs_unaccounted",
+                                   "unreported_sync_errors",
+                                   "unreported_overflows",
+                                   "identity_checked",
+                                   "identity_mismatches",
+                                   "hard_error_ms",
+                                   "contract_ok",
+                                   "wall_s",
+                                   "violations"};
+
+std::string csv_value(const json& j, const char* key) {
+    if (!j.contains(key) || j[key].is_null()) return "";
+    const json& v = j[key];
+    if (v.is_string()) return csv_field(v.get<std::string>());
+    if (v.is_array()) {
+        std::string all;
+        for (const json& s : v) all += (all.empty() ? "" : "; ") + s.get<std::string>();
+        return csv_field(all);
+    }
+    if (v.is_boolean()) return v.get<bool>() ? "1" : "0";
+    if (v.is_number_float()) return fmt(v.get<double>(), 3);
+    return v.dump();
+}
+
+}  // namespace
+
+std::vector<campaign_run> campaign_plan(const std::string& name, int seeds) {
+    std::vector<campaign_run> runs;
+    const bool smoke = name == "smoke";
+    if (!smoke && name != "full") return runs;
+    if (seeds <= 0) seeds = smoke ? 1 : 3;
+    const uint64_t first_seed = smoke ? 3 : 11;
+    const auto add = [&](const plan_entry& e, uint64_t seed) {
+        campaign_run r;
+        r.index = static_cast<int>(runs.size());
+        r.fault = e.fault ? e.fault : "";
+        r.seed = seed;
+        r.frames = e.frames;
+        r.retry_limit = e.retry_limit;
+        if (e.settings) r.settings = words(e.settings);
+        runs.push_back(r);
+    };
+    if (smoke) {
+        for (int s = 0; s < 2 * seeds; ++s) add({nullptr, 8, 8}, first_seed + s);
+        for (const plan_entry& e : smoke_faults)
+            for (int s = 0; s < seeds; ++s) add(e, first_seed + s);
+    } else {
+        for (int s = 0; s < full_clean_runs; ++s) add({nullptr, full_clean_frames, 8}, 100 + s);
+        for (const plan_entry& e : full_faults)
+            for (int s = 0; s < seeds; ++s) add(e, first_seed + s);
+    }
+    return runs;
+}
+
+std::vector<campaign_run> shard_of(const std::vector<campaign_run>& runs, int shard, int shards) {
+    std::vector<campaign_run> out;
+    for (const campaign_run& r : runs)
+        if (r.index % shards == shard - 1) out.push_back(r);
+    return out;
+}
+
+std::vector<campaign_row> run_campaign(const campaign_options& given, std::FILE* log,
+                                       std::string* error) {
+    campaign_options o = given;
+    if (o.binary.empty()) o.binary = this_program();
+    if (o.out_dir.empty()) o.out_dir = "campaign-" + o.name;
+    std::vector<campaign_run> plan;
+    for (const campaign_run& r : shard_of(campaign_plan(o.name, o.seeds), o.shard, o.shards)) {
+        const std::string spec = r.fault.empty() ? "clean" : r.fault;
+        // --match A|B: runs whose spec contains A or B.
+        bool hit = false;
+        for (size_t from = 0; from <= o.match.size();) {
+            const size_t bar = std::min(o.match.find('|', from), o.match.size());
+            hit |= spec.find(o.match.substr(from, bar - from)) != std::string::npos;
+            from = bar + 1;
+        }
+        if (hit) plan.push_back(r);
+    }
+    std::vector<campaign_row> rows(plan.size());
+    std::error_code ec;
+    fs::create_directories(o.out_dir + "/runs", ec);
+    if (ec) {
+        *error = "cannot create " + o.out_dir + "/runs: " + ec.message();
+        return {};
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    std::map<pid_t, size_t> running;
+    std::vector<std::chrono::steady_clock::time_point> started(plan.size());
+    const auto run_dir = [&](size_t i) {
+        return o.out_dir + "/runs/" + std::to_string(plan[i].index);
+    };
+    size_t next = 0, done = 0;
+    while (done < plan.size()) {
+        while (next < plan.size() && static_cast<int>(running.size()) < o.jobs) {
+            rows[next].run = plan[next];
+            const std::string dir = run_dir(next);
+            fs::remove_all(dir, ec);
+            fs::create_directories(dir, ec);
+            std::string spawn_error;
+            const pid_t pid = spawn_run(o, plan[next], dir, &spawn_error);
+            if (pid < 0) {
+                rows[next].error = spawn_error;
+                ++done;
+            } else {
+                running[pid] = next;
+                started[next] = std::chrono::steady_clock::now();
+            }
+            ++next;
+        }
+        if (running.empty()) continue;
+        int status = 0;
+        const pid_t pid = waitpid(-1, &status, 0);
+        if (pid < 0) break;
+        const auto it = running.find(pid);
+        if (it == running.end()) continue;
+        const size_t i = it->second;
+        running.erase(it);
+        campaign_row& row = rows[i];
+        row.wall_s =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - started[i]).count();
+        collect(row, run_dir(i), status);
+        if (!o.keep_runs && row.ran) fs::remove_all(run_dir(i), ec);
+        ++done;
+        if (log) {
+            std::fprintf(log, "[%zu/%zu] %-45s seed %-4llu %s%s (%.1f s)\n", done, plan.size(),
+                         row.run.fault.empty() ? "clean" : row.run.fault.c_str(),
+                         static_cast<unsigned long long>(row.run.seed),
+                         row.ran ? outcome_name(row.result.verdicts.front().actual) : "NOT RUN",
+                         row.ok() ? "" : "  CONTRACT BROKEN", row.wall_s);
+            std::fflush(log);
+        }
+    }
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    // Files.
+    json all = json::array();
+    for (const campaign_row& r : rows) all.push_back(row_json(r));
+    int broken = 0, clean_frames = 0, false_alarms = 0;
+    for (const campaign_row& r : rows) {
+        broken += !r.ok();
+        if (r.ran && r.run.fault.empty()) {
+            clean_frames += r.run.frames;
+            false_alarms += r.result.run.false_alarms;
+        }
+    }
+    const json doc = {{"campaign", o.name},
+                      {"shard", std::to_string(o.shard) + "/" + std::to_string(o.shards)},
+                      {"seeds", o.seeds},
+                      {"jobs", o.jobs},
+                      {"runs", rows.size()},
+                      {"contract_broken", broken},
+                      {"clean_frames", clean_frames},
+                      {"clean_false_alarms", false_alarms},
+                      {"wall_s", wall},
+                      {"rows", all}};
+    std::ofstream(o.out_dir + "/campaign.json") << doc.dump(2) << "\n";
+    std::ofstream csv(o.out_dir + "/campaign.csv");
+    for (size_t c = 0; c < std::size(csv_columns); ++c) csv << (c ? "," : "") << csv_columns[c];
+    csv << "\n";
+    for (const json& r : all) {
+        for (size_t c = 0; c < std::size(csv_columns); ++c)
+            csv << (c ? "," : "") << csv_value(r, csv_columns[c]);
+        csv << "\n";
+    }
+    std::ofstream(o.out_dir + "/campaign.txt") << campaign_table(rows, o, wall);
+    return rows;
+}
+
+std::string campaign_table(const std::vector<campaign_row>& rows, const campaign_options& o,
+                           double wall_s) {
+    std::ostringstream out;
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "%-4s %-46s %5s %3s  %-22s %-13s %-12s %4s %4s %4s %4s %4s %4s %4s %4s %4s "
+                  "%s\n",
+                  "run", "fault", "seed", "fr", "expected", "actual", "detected_by", "det", "rec",
+                  "disc", "fwd", "proc", "drop", "unsy", "miss", "fals", "contract");
+    out << line;
+    int broken = 0, clean_frames = 0, false_alarms = 0, unsynced = 0;
+    for (const campaign_row& r : rows) {
+        const std::string fault = r.run.fault.empty() ? "clean" : r.run.fault;
+        if (!r.ran) {
+            std::snprintf(line, sizeof line, "%-4d %-46s %5llu %3d  NOT RUN: %s\n", r.run.index,
+                          fault.c_str(), static_cast<unsigned long long>(r.run.seed), r.run.frames,
+                          r.error.c_str());
+            out << line;
+            ++broken;
+            continue;
+        }
+        const run_observation& run = r.result.run;
+        const verdict& v = r.result.verdicts.front();
+        const fault_observation* f = run.faults.empty() ? nullptr : &run.faults[0];
+        const auto opt = [](bool have, int v) {
+            return have ? std::to_string(v) : std::string("-");
+        };
+        std::snprintf(
+            line, sizeof line,
+            "%-4d %-46s %5llu %3d  %-22s %-13s %-12s %4s %4s %4d %4d %4d %4d %4d %4d %4d %s\n",
+            r.run.index, fault.c_str(), static_cast<unsigned long long>(r.run.seed), r.run.frames,
+            v.expected_text.c_str(), outcome_name(v.actual), f ? f->detected_by.c_str() : "-",
+            opt(f && f->detected, f ? f->frames_to_detect : 0).c_str(),
+            opt(f && f->recovered, f ? f->frames_to_recover : 0).c_str(),
+            f ? f->pairs_discarded : run.card_sync_errors + run.card_overflows, run.pairs_forwarded,
+            run.pairs_processed, run.pairs_dropped, run.unsynced_pairs_used, run.misses,
+            run.false_alarms, r.ok() ? "ok" : "BROKEN");
+        out << line;
+        for (const verdict& x : r.result.verdicts)
+            for (const std::string& why : x.violations) out << "       violation: " << why << "\n";
+        broken += !r.ok();
+        unsynced += run.unsynced_pairs_used;
+        if (r.run.fault.empty()) {
+            clean_frames += r.run.frames;
+            false_alarms += run.false_alarms;
+        }
+    }
+    std::snprintf(line, sizeof line,
+                  "\ncampaign %s shard %d/%d: %zu runs, %d break the contract; clean "
+                  "frames %d with %d false alarms; unsynced pairs used (all runs) %d; wall %.1f s "
+                  "with %d jobs\n",
+                  o.name.c_str(), o.shard, o.shards, rows.size(), broken, clean_frames,
+                  false_alarms, unsynced, wall_s, o.jobs);
+    out << line;
+    out << "columns: det = frames from onset to detection, rec = frames from detection to the "
+           "first in-step pair forwarded, disc = pairs discarded (SYNC_ERROR + OVERFLOW) from the "
+           "onset, fwd / proc / drop = pairs forwarded by the card / processed / dropped by the "
+           "firmware's overrun policy, unsy = unsynced pairs used, miss = out-of-step pairs "
+           "forwarded, fals = false "
+           "alarms\n";
+    return out.str();
+}
+
+}  // namespace faults

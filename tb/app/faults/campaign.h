@@ -1,0 +1,63 @@
+// The fault campaign (docs/fault-contract.md "The campaign"): every fault
+// kind over a range of parameters and seeds, plus clean runs, each an
+// independent `stereosim run ... --out <dir>` child process (posix_spawn,
+// `jobs` at a time), each checked against the contract from its report.json.
+// Writes campaign.json, campaign.csv and campaign.txt (the table also goes
+// to stdout); `shard K/M` runs the K-th of M deterministic slices.
+#pragma once
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "tb/app/faults/fault_report.h"
+
+namespace faults {
+
+struct campaign_run {
+    int index = 0;      // position in the whole campaign (before sharding)
+    std::string fault;  // spec(s), space-separated; empty for a clean run
+    uint64_t seed = 3;
+    int frames = 8;
+    int retry_limit = 8;                // --card-retry-limit
+    std::vector<std::string> settings;  // --set KEY=VALUE each (docs/config.md)
+};
+
+// The runs of a named campaign ("smoke" or "full"; else empty). `seeds`:
+// seeds per fault spec (0: the campaign's default).
+std::vector<campaign_run> campaign_plan(const std::string& name, int seeds);
+
+// Runs index % shards == shard - 1 (shard 1-based).
+std::vector<campaign_run> shard_of(const std::vector<campaign_run>& runs, int shard, int shards);
+
+struct campaign_options {
+    std::string name = "smoke";
+    int seeds = 0;
+    int jobs = 2;
+    int shard = 1, shards = 1;
+    std::string out_dir;     // default: campaign-<name>
+    std::string binary;      // the stereosim to spawn (default: this program)
+    bool keep_runs = false;  // keep each run's folder (report.json, frames.csv)
+    std::string match;       // only runs whose spec contains this ("clean": clean runs)
+};
+
+struct campaign_row {
+    campaign_run run;
+    bool ran = false;  // the child wrote a report.json we could read
+    int exit_code = -1;
+    double wall_s = 0;
+    std::string error;  // why it did not run
+    fault_run_result result;
+    bool ok() const { return ran && result.contract_ok(); }
+};
+
+// Runs the campaign; returns the rows (in plan order) and writes the files.
+// Progress lines go to `log` (may be null).
+std::vector<campaign_row> run_campaign(const campaign_options& options, std::FILE* log,
+                                       std::string* error);
+
+// The readable table (campaign.txt).
+std::string campaign_table(const std::vector<campaign_row>& rows, const campaign_options& options,
+                           double wall_s);
+
+}  // namespace faults

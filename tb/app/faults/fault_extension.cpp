@@ -1,0 +1,91 @@
+#include "tb/app/faults/fault_extension.h"
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+
+#include "tb/app/faults/fault_report.h"
+#include "tb/app/faults/fault_spec.h"
+
+namespace faults {
+
+namespace {
+
+class fault_extension final : public cli::run_extension {
+  public:
+    void add_options(CLI::App& run) override {
+        run.add_option("--fault", m_texts,
+                       "inject a fault KIND:KEY=VALUE,...[@frame=N|@ms=T] (repeatable; "
+                       "stereosim faults --list, docs/faults.md)");
+        run.add_option("--card-retry-limit", m_retry_limit,
+                       "the card's RETRY_LIMIT: OE restarts before HARD_ERROR (default 8)");
+        run.add_option("--hard-error-rearms", m_rearms,
+                       "the firmware's re-arms after a card hard error before it gives up "
+                       "(default 1)");
+    }
+
+    bool configure(const cli::run_setup& /*setup*/, platform::platform_config& config,
+                   std::string* error) override {
+        for (const std::string& text : m_texts) {
+            const std::optional<fault_spec> spec = parse_fault_spec(text, error);
+            if (!spec) return false;
+            apply(*spec, config);
+            m_specs.push_back(*spec);
+        }
+        if (m_retry_limit < 0 || m_retry_limit > 255) {
+            *error = "--card-retry-limit: " + std::to_string(m_retry_limit) +
+                     " out of range 0..255 (RETRY_LIMIT is 8 bits)";
+            return false;
+        }
+        if (m_rearms < 0 || m_rearms > 1000) {
+            *error = "--hard-error-rearms: " + std::to_string(m_rearms) + " out of range 0..1000";
+            return false;
+        }
+        config.card_retry_limit = static_cast<uint32_t>(m_retry_limit);
+        config.hard_error_rearms = static_cast<uint32_t>(m_rearms);
+        return true;
+    }
+
+    void attach(platform::platform_top& top) override { m_top = &top; }
+
+    void add_to_report(nlohmann::json& report, const cli::run_result& run) override {
+        if (!m_top) return;
+        m_result = evaluate(*m_top, run.score, m_specs);
+        faults::add_to_report(report, m_result);
+    }
+
+    std::vector<std::string> summary_lines(const cli::run_result& /*run*/) override {
+        std::vector<std::string> lines;
+        for (size_t i = 0; i < m_result.specs.size(); ++i) {
+            const fault_observation& f = m_result.run.faults[i];
+            const verdict& v = m_result.verdicts[i];
+            char line[512];
+            std::snprintf(line, sizeof line,
+                          "fault %s: %s (contract %s) onset %.3f ms, detected %s, %s",
+                          f.spec.c_str(), outcome_name(v.actual), v.expected_text.c_str(),
+                          f.onset_ms, f.detected ? f.detected_by.c_str() : "no",
+                          v.ok ? "contract kept" : "CONTRACT BROKEN");
+            lines.push_back(line);
+            for (const std::string& why : v.violations) lines.push_back("  violation: " + why);
+        }
+        if (m_result.specs.empty() && !m_result.verdicts.empty() && !m_result.verdicts[0].ok)
+            for (const std::string& why : m_result.verdicts[0].violations)
+                lines.push_back("violation: " + why);
+        return lines;
+    }
+
+  private:
+    std::vector<std::string> m_texts;
+    int m_retry_limit = 8;
+    int m_rearms = 1;
+    std::vector<fault_spec> m_specs;
+    platform::platform_top* m_top = nullptr;
+    fault_run_result m_result;
+};
+
+}  // namespace
+
+std::unique_ptr<cli::run_extension> make_fault_extension() {
+    return std::make_unique<fault_extension>();
+}
+
+}  // namespace faults

@@ -1,0 +1,253 @@
+#include "tb/app/faults/fault_report.h"
+
+namespace faults {
+
+using nlohmann::json;
+
+namespace {
+
+json null_if(bool have, double v) {
+    return have ? json(v) : json(nullptr);
+}
+
+double num(const json& j, const char* key, double fallback = -1) {
+    return j.contains(key) && j[key].is_number() ? j[key].get<double>() : fallback;
+}
+
+int integer(const json& j, const char* key) {
+    return j.contains(key) && j[key].is_number() ? j[key].get<int>() : 0;
+}
+
+std::vector<uint32_t> pair_list(const json& j, const char* key) {
+    std::vector<uint32_t> out;
+    if (j.contains(key) && j[key].is_array())
+        for (const json& n : j[key])
+            if (n.is_number_unsigned()) out.push_back(n.get<uint32_t>());
+    return out;
+}
+
+json params_json(const contract_params& p) {
+    return {{"retry_limit", p.retry_limit},
+            {"hard_error_rearms", p.hard_error_rearms},
+            {"dark_threshold", p.dark_threshold},
+            {"black_level", p.black_level},
+            {"dark_sigma", p.dark_sigma},
+            {"line_pclks", p.line_pclks},
+            {"frame_lines", p.frame_lines},
+            {"checked_span_pclks", p.checked_span_pclks},
+            {"words_per_pair", p.words_per_pair},
+            {"eclk_per_word", p.eclk_per_word},
+            {"eclk_ns", p.eclk_ns},
+            {"period_ms", p.period_ms},
+            {"hard_error_bound_periods", hard_error_bound_periods(p)}};
+}
+
+contract_params params_of(const json& j) {
+    contract_params p;
+    p.retry_limit = static_cast<uint32_t>(num(j, "retry_limit", p.retry_limit));
+    p.hard_error_rearms = static_cast<uint32_t>(num(j, "hard_error_rearms", p.hard_error_rearms));
+    p.dark_threshold = static_cast<uint32_t>(num(j, "dark_threshold", p.dark_threshold));
+    p.black_level = static_cast<int>(num(j, "black_level", p.black_level));
+    p.dark_sigma = num(j, "dark_sigma", p.dark_sigma);
+    p.line_pclks = static_cast<int>(num(j, "line_pclks", p.line_pclks));
+    p.frame_lines = static_cast<int>(num(j, "frame_lines", p.frame_lines));
+    p.checked_span_pclks = static_cast<int>(num(j, "checked_span_pclks", p.checked_span_pclks));
+    p.words_per_pair = num(j, "words_per_pair", p.words_per_pair);
+    p.eclk_per_word = num(j, "eclk_per_word", p.eclk_per_word);
+    p.eclk_ns = num(j, "eclk_ns", p.eclk_ns);
+    p.period_ms = num(j, "period_ms", p.period_ms);
+    return p;
+}
+
+}  // namespace
+
+bool fault_run_result::contract_ok() const {
+    for (const verdict& v : verdicts)
+        if (!v.ok) return false;
+    return true;
+}
+
+void add_to_report(json& report, const fault_run_result& r) {
+    json list = json::array();
+    for (size_t i = 0; i < r.specs.size(); ++i) {
+        const fault_observation& f = r.run.faults[i];
+        const verdict& v = r.verdicts[i];
+        list.push_back({
+            {"spec", r.specs[i].text},
+            {"canonical", f.spec},
+            {"kind", fault_type_name(f.type)},
+            {"hook", kind_of(f.type).hook},
+            {"in_effect", f.in_effect},
+            {"onset_ms", null_if(f.in_effect, f.onset_ms)},
+            {"onset_frame", f.in_effect ? json(f.onset_frame) : json(nullptr)},
+            {"detected", f.detected},
+            {"detected_by", f.detected_by},
+            {"detect_ms", null_if(f.detected, f.detect_ms)},
+            {"frames_to_detect", f.detected ? json(f.frames_to_detect) : json(nullptr)},
+            {"masked_checks", f.masked_checks},
+            {"verdict_causes", f.causes},
+            {"reported", f.reported},
+            {"reported_by", f.reported_by},
+            {"report_ms", null_if(f.reported, f.report_ms)},
+            {"onset_start_out_of_step", f.onset_start_out_of_step},
+            {"resumed_ms", null_if(f.resumed_ms >= 0, f.resumed_ms)},
+            {"pair_ms_min", null_if(f.pair_ms_min >= 0, f.pair_ms_min)},
+            {"slowed_ms_max", null_if(f.slowed_ms_max >= 0, f.slowed_ms_max)},
+            {"slowed_pairs", f.slowed_pairs},
+            {"dropped_pairs", f.dropped_pairs},
+            {"recovered", f.recovered},
+            {"recover_ms", null_if(f.recovered, f.recover_ms)},
+            {"frames_to_recover", f.recovered ? json(f.frames_to_recover) : json(nullptr)},
+            {"failed_starts", f.failed_starts},
+            {"oe_starts_after", f.oe_starts_after},
+            {"pairs_discarded", f.pairs_discarded},
+            {"pairs_used", f.pairs_used},
+            {"unsynced_pairs_used", f.unsynced_pairs_used},
+            {"stale_pairs_used", f.stale_pairs_used},
+            {"pairs_dropped", f.pairs_dropped},
+            {"outcome", outcome_name(v.actual)},
+            {"expected", v.expected_text},
+            {"contract_ok", v.ok},
+            {"violations", v.violations},
+        });
+    }
+    report["faults"] = list;
+    const run_observation& run = r.run;
+    json violations = json::array();
+    for (const verdict& v : r.verdicts)
+        for (const std::string& s : v.violations) violations.push_back(s);
+    report["fault_run"] = {
+        {"frames", run.frames},
+        {"period_ms", run.period_ms},
+        {"end_ms", run.end_ms},
+        {"pairs_forwarded", run.pairs_forwarded},
+        {"pairs_processed", run.pairs_processed},
+        {"pairs_rejected", run.pairs_rejected},
+        {"pairs_dropped", run.pairs_dropped},
+        {"pairs_in_step", run.pairs_in_step},
+        {"pairs_unaccounted", run.pairs_unaccounted},
+        {"unaccounted_pairs", run.unaccounted_pairs},
+        {"unreported_sync_errors", run.unreported_sync_errors},
+        {"unreported_overflows", run.unreported_overflows},
+        {"unreported_in_step", run.unreported_in_step},
+        {"unrearmed_overflows", run.unrearmed_overflows},
+        {"identity_checked", run.identity_checked},
+        {"identity_mismatches", run.identity_mismatches},
+        {"mismatched_pairs", run.mismatched_pairs},
+        {"card_sync_errors", run.card_sync_errors},
+        {"card_overflows", run.card_overflows},
+        {"firmware_sync_errors", run.firmware_sync_errors},
+        {"oe_starts", run.oe_starts},
+        {"rearms", run.rearms},
+        {"unsynced_pairs_used", run.unsynced_pairs_used},
+        {"misses", run.misses},
+        {"used_before_verdict", run.used_before_verdict},
+        {"false_alarms", run.false_alarms},
+        {"sync_errors_before_onset", run.sync_errors_before_onset},
+        {"hard_error", run.hard_error},
+        {"hard_error_ms", null_if(run.hard_error, run.hard_error_ms)},
+        {"failed_checks_before_give_up", run.failed_checks_before_give_up},
+        {"boxes_scored", run.boxes_scored},
+        {"points_scored", run.points_scored},
+        {"max_box_err_px", run.max_box_err_px},
+        {"max_depth_err_pct", run.max_depth_err_pct},
+        {"contract_params", params_json(r.params)},
+        {"contract_ok", r.contract_ok()},
+        {"violations", violations},
+    };
+}
+
+bool read_from_report(const json& report, fault_run_result* r, std::string* error) {
+    if (!report.contains("fault_run") || !report["fault_run"].is_object() ||
+        !report.contains("faults") || !report["faults"].is_array()) {
+        *error = "report.json has no faults / fault_run";
+        return false;
+    }
+    const json& j = report["fault_run"];
+    *r = fault_run_result{};
+    r->params = params_of(j.value("contract_params", json::object()));
+    run_observation& run = r->run;
+    run.frames = integer(j, "frames");
+    run.period_ms = num(j, "period_ms", 24.5);
+    run.end_ms = num(j, "end_ms", 0);
+    run.firmware_started = true;
+    run.pairs_forwarded = integer(j, "pairs_forwarded");
+    run.pairs_processed = integer(j, "pairs_processed");
+    run.pairs_rejected = integer(j, "pairs_rejected");
+    run.pairs_dropped = integer(j, "pairs_dropped");
+    run.pairs_in_step = integer(j, "pairs_in_step");
+    run.pairs_unaccounted = integer(j, "pairs_unaccounted");
+    run.unaccounted_pairs = pair_list(j, "unaccounted_pairs");
+    run.unreported_sync_errors = integer(j, "unreported_sync_errors");
+    run.unreported_overflows = integer(j, "unreported_overflows");
+    run.unreported_in_step = integer(j, "unreported_in_step");
+    run.unrearmed_overflows = integer(j, "unrearmed_overflows");
+    run.identity_checked = integer(j, "identity_checked");
+    run.identity_mismatches = integer(j, "identity_mismatches");
+    run.mismatched_pairs = pair_list(j, "mismatched_pairs");
+    run.card_sync_errors = integer(j, "card_sync_errors");
+    run.card_overflows = integer(j, "card_overflows");
+    run.firmware_sync_errors = integer(j, "firmware_sync_errors");
+    run.oe_starts = integer(j, "oe_starts");
+    run.rearms = integer(j, "rearms");
+    run.unsynced_pairs_used = integer(j, "unsynced_pairs_used");
+    run.misses = integer(j, "misses");
+    run.used_before_verdict = integer(j, "used_before_verdict");
+    run.false_alarms = integer(j, "false_alarms");
+    run.sync_errors_before_onset = integer(j, "sync_errors_before_onset");
+    run.hard_error = j.value("hard_error", false);
+    run.hard_error_ms = num(j, "hard_error_ms");
+    run.failed_checks_before_give_up = integer(j, "failed_checks_before_give_up");
+    run.boxes_scored = integer(j, "boxes_scored");
+    run.points_scored = integer(j, "points_scored");
+    run.max_box_err_px = num(j, "max_box_err_px", 0);
+    run.max_depth_err_pct = num(j, "max_depth_err_pct", 0);
+    for (const json& f : report["faults"]) {
+        std::string parse_error;
+        const std::optional<fault_spec> spec =
+            parse_fault_spec(f.value("spec", std::string()), &parse_error);
+        if (!spec) {
+            *error = parse_error;
+            return false;
+        }
+        fault_observation o;
+        o.spec = f.value("canonical", canonical(*spec));
+        o.type = spec->type;
+        o.in_effect = f.value("in_effect", false);
+        o.onset_ms = num(f, "onset_ms");
+        o.onset_frame = static_cast<int64_t>(num(f, "onset_frame"));
+        o.detected = f.value("detected", false);
+        o.detected_by = f.value("detected_by", std::string("none"));
+        o.detect_ms = num(f, "detect_ms");
+        o.frames_to_detect = static_cast<int>(num(f, "frames_to_detect"));
+        o.causes = static_cast<uint32_t>(integer(f, "verdict_causes"));
+        o.masked_checks = integer(f, "masked_checks");
+        o.reported = f.value("reported", false);
+        o.reported_by = f.value("reported_by", std::string("none"));
+        o.report_ms = num(f, "report_ms");
+        o.onset_start_out_of_step = f.value("onset_start_out_of_step", false);
+        o.resumed_ms = num(f, "resumed_ms");
+        o.pair_ms_min = num(f, "pair_ms_min");
+        o.slowed_ms_max = num(f, "slowed_ms_max");
+        o.slowed_pairs = integer(f, "slowed_pairs");
+        o.dropped_pairs = pair_list(f, "dropped_pairs");
+        o.recovered = f.value("recovered", false);
+        o.recover_ms = num(f, "recover_ms");
+        o.frames_to_recover = static_cast<int>(num(f, "frames_to_recover"));
+        o.failed_starts = integer(f, "failed_starts");
+        o.oe_starts_after = integer(f, "oe_starts_after");
+        o.pairs_discarded = integer(f, "pairs_discarded");
+        o.pairs_used = integer(f, "pairs_used");
+        o.unsynced_pairs_used = integer(f, "unsynced_pairs_used");
+        o.stale_pairs_used = integer(f, "stale_pairs_used");
+        o.pairs_dropped = integer(f, "pairs_dropped");
+        r->specs.push_back(*spec);
+        run.faults.push_back(o);
+    }
+    if (r->specs.empty()) r->verdicts.push_back(check_clean(run));
+    for (size_t i = 0; i < r->specs.size(); ++i)
+        r->verdicts.push_back(check(run.faults[i], r->specs[i], r->params, run));
+    return true;
+}
+
+}  // namespace faults

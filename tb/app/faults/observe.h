@@ -1,0 +1,24 @@
+// What a platform run shows about its injected faults, taken after the run
+// from the sensors' timing truth, the card's interrupt pins and the
+// firmware's reports (the same sources as the scoreboard). These are the
+// figures report.json carries in `faults` / `fault_run` and the contract
+// (tb/app/faults/contract.h) checks.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "tb/app/faults/fault_spec.h"
+#include "tb/app/faults/observation.h"
+#include "tb/platform/platform.h"
+#include "tb/platform/scoreboard.h"
+
+namespace faults {
+
+// Builds the observation; adds each fault's onset to the platform's
+// timeline (event_kind::fault).
+run_observation observe(platform::platform_top& top, const platform::scoreboard_report& score,
+                        const std::vector<fault_spec>& specs);
+
+}  // namespace faults

@@ -1,0 +1,211 @@
+#include "tb/app/output/output_extensions.h"
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "tb/app/output/gtkw_writer.h"
+#include "tb/app/output/trace_events.h"
+#include "tb/app/output/trajectory_plot.h"
+#include "tb/app/output/vcd_writer.h"
+
+namespace output {
+
+namespace {
+
+using simtime::ticks;
+
+bool write_text(const std::string& path, const std::string& text, std::string* error) {
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    if (!f) {
+        *error = "cannot write " + path + ": " + std::strerror(errno);
+        return false;
+    }
+    const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+    if (std::fclose(f) != 0 || !ok) {
+        *error = "cannot write " + path;
+        return false;
+    }
+    return true;
+}
+
+std::string format_ms(double ms) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", ms);
+    return text;
+}
+
+// A file name from the scenario name (letters, digits, - and _).
+std::string file_name_of(const std::string& name) {
+    std::string s;
+    for (char c : name)
+        s.push_back(std::isalnum(static_cast<unsigned char>(c)) || c == '-' ? c : '_');
+    return s.empty() ? std::string("run") : s;
+}
+
+class waveform_output final : public cli::run_extension {
+  public:
+    void add_options(CLI::App& run) override {
+        m_run = &run;
+        run.add_flag("--vcd", m_enabled,
+                     "write a VCD of a window of the run into DIR/waves/ with a GTKWave save file");
+        run.add_option("--vcd-from", m_from_ms, "window start, simulated ms (default 49)");
+        run.add_option("--vcd-to", m_to_ms, "window end, simulated ms (default from + 1)");
+        run.add_option("--vcd-scope", m_scope,
+                       "signals to trace: sensors,card,emif,firmware (default all)");
+    }
+
+    bool configure(const cli::run_setup& setup, platform::platform_config& config,
+                   std::string* error) override {
+        const bool window_given = m_run->count("--vcd-from") + m_run->count("--vcd-to") > 0;
+        if (!m_enabled) {
+            if (window_given || m_run->count("--vcd-scope") > 0) {
+                *error = "--vcd-from, --vcd-to and --vcd-scope need --vcd";
+                return false;
+            }
+            return true;
+        }
+        if (m_run->count("--out") == 0) {
+            *error = "--vcd needs --out DIR (the VCD goes to DIR/waves/)";
+            return false;
+        }
+        const double run_ms = static_cast<double>(config.period * config.frames) /
+                              (static_cast<double>(simtime::ticks_per_ns) * 1e6);
+        // Default: 1 ms from 49 ms (the default scenario's first FRAME_READY is
+        // at 49.24 ms), or the run's first ms if it is shorter.
+        double from = m_run->count("--vcd-from") ? m_from_ms : (run_ms >= 50.0 ? 49.0 : 0.0);
+        double to = m_run->count("--vcd-to") ? m_to_ms : std::min(from + 1.0, run_ms);
+        if (!std::isfinite(from) || !std::isfinite(to) || from < 0 || to < 0) {
+            *error = "--vcd window " + format_ms(from) + ".." + format_ms(to) +
+                     " ms: times must not be negative";
+            return false;
+        }
+        if (from >= to) {
+            *error = "--vcd window " + format_ms(from) + ".." + format_ms(to) +
+                     " ms: --vcd-from must be before --vcd-to";
+            return false;
+        }
+        if (to > run_ms) {
+            *error = "--vcd window " + format_ms(from) + ".." + format_ms(to) +
+                     " ms is beyond the run (" + format_ms(run_ms) + " ms)";
+            return false;
+        }
+        unsigned groups = platform::trace_all_groups;
+        std::string bad;
+        if (!m_scope.empty() && !parse_trace_groups(m_scope, &groups, &bad)) {
+            *error = "--vcd-scope: unknown scope '" + bad + "' (sensors, card, emif, firmware)";
+            return false;
+        }
+        const auto tick_of = [](double ms) {
+            return static_cast<ticks>(std::llround(ms * simtime::ticks_per_ns * 1e6));
+        };
+        m_window = {tick_of(from), tick_of(to)};
+        m_name = file_name_of(setup.scenario.name);
+        m_vcd = std::make_unique<vcd_writer>(m_window, groups);
+        config.trace = m_vcd.get();
+        config.trace_window = m_window;
+        return true;
+    }
+
+    bool open_outputs(cli::staged_files& files, std::string* error) override {
+        if (!m_vcd) return true;
+        if (!m_vcd->open(files.staged_path("waves/" + m_name + ".vcd"))) {
+            *error = m_vcd->error();
+            return false;
+        }
+        return true;
+    }
+
+    bool write(const cli::run_result& run, cli::staged_files& files, std::string* error) override {
+        if (!m_vcd) return true;
+        if (!m_vcd->ok()) {
+            *error = m_vcd->error();
+            return false;
+        }
+        // Fault onsets are on the timeline only now (the fault extension marks
+        // them in add_to_report, after the run finished the VCD): merge them in.
+        std::vector<fault_marker> markers;
+        for (const platform::timeline_event& e : run.top.events().events())
+            if (e.kind == platform::event_kind::fault)
+                markers.push_back({e.tick, static_cast<uint8_t>(1 + e.b)});
+        if (!markers.empty() && m_vcd->finished() && !m_vcd->add_fault_markers(markers)) {
+            *error = m_vcd->error();
+            return false;
+        }
+        m_gtkw = run.out_dir + "/waves/" + m_name + ".gtkw";
+        // The view opens on the window's first 10 us (or the whole window).
+        const ticks span = std::min<ticks>(m_window.to - m_window.from, 10 * 18000);
+        return write_gtkw(
+            [&files](const std::string& f) { return files.staged_path("waves/" + f); }, m_name,
+            *m_vcd, m_window.from, span, error);
+    }
+
+    std::vector<std::string> summary_lines(const cli::run_result& run) override {
+        if (!m_vcd || run.out_dir.empty()) return {};
+        char line[160];
+        std::snprintf(line, sizeof line, "waveform: %.3f..%.3f ms, %llu changes, %.1f MB",
+                      static_cast<double>(m_window.from) / 18e6,
+                      static_cast<double>(m_window.to) / 18e6,
+                      static_cast<unsigned long long>(m_vcd->changes_written()),
+                      static_cast<double>(m_vcd->bytes_written()) / 1e6);
+        return {line, "open it with: gtkwave " + m_gtkw};
+    }
+
+  private:
+    CLI::App* m_run = nullptr;
+    bool m_enabled = false;
+    double m_from_ms = 0.0, m_to_ms = 0.0;
+    std::string m_scope;
+    platform::tick_window m_window;
+    std::string m_name;
+    std::string m_gtkw;
+    std::unique_ptr<vcd_writer> m_vcd;
+};
+
+class plot_and_trace_output final : public cli::run_extension {
+  public:
+    bool write(const cli::run_result& run, cli::staged_files& files, std::string* error) override {
+        if (!write_text(files.staged_path("timeline.json"), trace_events_json(run.top), error))
+            return false;
+        const std::string script = files.staged_path("trajectory.gp");
+        // frames.csv is staged beside it (the run command writes it first).
+        const std::string dir = script.substr(0, script.rfind('/'));
+        bool truth = false, estimates = false;
+        trajectory_series_present(dir + "/frames.csv", &truth, &estimates);
+        if (!write_text(script, trajectory_gnuplot_script(truth || !estimates, estimates), error))
+            return false;
+        std::string why = "no true or estimated position in frames.csv";
+        if ((truth || estimates) && run_gnuplot(dir, &why)) {
+            files.staged_path("trajectory.png");
+            m_plot_note.clear();
+        } else {
+            std::remove((dir + "/trajectory.png").c_str());
+            m_plot_note = "trajectory.png not drawn: " + why;
+        }
+        return true;
+    }
+
+    std::vector<std::string> summary_lines(const cli::run_result& /*run*/) override {
+        if (m_plot_note.empty()) return {};
+        return {m_plot_note};
+    }
+
+  private:
+    std::string m_plot_note;
+};
+
+}  // namespace
+
+std::unique_ptr<cli::run_extension> make_waveform_output() {
+    return std::make_unique<waveform_output>();
+}
+
+std::unique_ptr<cli::run_extension> make_plot_and_trace_output() {
+    return std::make_unique<plot_and_trace_output>();
+}
+
+}  // namespace output

@@ -1,0 +1,19 @@
+// The stereosim run extensions of tb/output (docs/waveforms.md), plugged
+// into `stereosim run` through tb/app/cli/run_outputs.h:
+//   waveforms  --vcd [--vcd-from MS --vcd-to MS] [--vcd-scope LIST]: a pin
+//              trace of the window into DIR/waves/<scenario>.vcd, its GTKWave
+//              save file and translate filters beside it;
+//   run files  with --out DIR: trajectory.gp + trajectory.png (gnuplot) and
+//              timeline.json (Chrome trace events).
+#pragma once
+
+#include <memory>
+
+#include "tb/app/cli/run_outputs.h"
+
+namespace output {
+
+std::unique_ptr<cli::run_extension> make_waveform_output();
+std::unique_ptr<cli::run_extension> make_plot_and_trace_output();
+
+}  // namespace output

@@ -1,0 +1,165 @@
+#include "tb/app/output/trace_events.h"
+
+#include "tb/app/faults/fault_spec.h"
+
+#include <nlohmann/json.hpp>
+
+#include "dsp/controller.h"
+#include "dsp/hal.h"
+#include "dsp/stage.h"
+
+namespace output {
+
+using nlohmann::json;
+using platform::event_kind;
+using simtime::ticks;
+
+namespace {
+
+enum track : int { cpu = 1, edma = 2, card = 3, sensors = 4 };
+
+double us_of(ticks t) {
+    return static_cast<double>(t) / (static_cast<double>(simtime::ticks_per_ns) * 1000.0);
+}
+
+json complete(const char* name, const char* cat, int tid, ticks begin, ticks end) {
+    return json{{"name", name},
+                {"cat", cat},
+                {"ph", "X"},
+                {"pid", 1},
+                {"tid", tid},
+                {"ts", us_of(begin)},
+                {"dur", us_of(end - begin)}};
+}
+
+json instant(const std::string& name, const char* cat, int tid, ticks t) {
+    return json{{"name", name}, {"cat", cat}, {"ph", "i"},     {"s", "t"},
+                {"pid", 1},     {"tid", tid}, {"ts", us_of(t)}};
+}
+
+json thread_name(int tid, const char* name) {
+    return json{
+        {"name", "thread_name"}, {"ph", "M"}, {"pid", 1}, {"tid", tid}, {"args", {{"name", name}}}};
+}
+
+const char* const irq_names[3] = {"EXT_INT4 FRAME_READY", "EXT_INT5 SYNC_ERROR",
+                                  "EXT_INT6 OVERFLOW"};
+
+}  // namespace
+
+std::string trace_events_json(const platform::platform_top& top) {
+    json events = json::array();
+    events.push_back(
+        json{{"name", "process_name"}, {"ph", "M"}, {"pid", 1}, {"args", {{"name", "stereosim"}}}});
+    events.push_back(thread_name(cpu, "CPU (firmware)"));
+    events.push_back(thread_name(edma, "EDMA"));
+    events.push_back(thread_name(card, "card"));
+    events.push_back(thread_name(sensors, "sensors"));
+    const ticks end = top.end_tick();
+
+    // ---- CPU: stages, sleeps, interrupts taken, reports --------------------------------------
+    // A stage's pair: the pair of the next pair_processed report (the one it
+    // worked on); a capture stage's: the next pair_captured.
+    const std::vector<platform::timeline_event>& tl = top.events().events();
+    std::vector<uint32_t> next_processed(tl.size() + 1, 0), next_captured(tl.size() + 1, 0);
+    for (size_t i = tl.size(); i-- > 0;) {
+        next_processed[i] = next_processed[i + 1];
+        next_captured[i] = next_captured[i + 1];
+        if (tl[i].kind != event_kind::firmware) continue;
+        if (tl[i].a == static_cast<uint8_t>(dsp::firmware_event::pair_processed))
+            next_processed[i] = tl[i].b;
+        if (tl[i].a == static_cast<uint8_t>(dsp::firmware_event::pair_captured))
+            next_captured[i] = tl[i].b;
+    }
+    ticks stage_begin = -1, sleep_begin = -1, oe_begin = -1;
+    for (size_t i = 0; i < tl.size(); ++i) {
+        const platform::timeline_event& e = tl[i];
+        switch (e.kind) {
+            case event_kind::stage_begin:
+                stage_begin = e.tick;
+                break;
+            case event_kind::stage_end: {
+                if (stage_begin < 0) break;
+                const auto s = static_cast<dsp::stage>(e.a);
+                json x = complete(dsp::stage_name(s), "stage", cpu, stage_begin, e.tick);
+                // The capture stage ends just before its pair_captured report.
+                x["args"] = {
+                    {"cycles", e.b},
+                    {"pair", s == dsp::stage::capture ? next_captured[i] : next_processed[i]}};
+                events.push_back(x);
+                stage_begin = -1;
+                break;
+            }
+            case event_kind::cpu_sleep:
+                sleep_begin = e.tick;
+                break;
+            case event_kind::cpu_wake:
+                if (sleep_begin >= 0)
+                    events.push_back(complete("sleep", "idle", cpu, sleep_begin, e.tick));
+                sleep_begin = -1;
+                events.push_back(
+                    instant(e.a == 255 ? std::string("stop") : "INT" + std::to_string(e.a),
+                            "interrupt", cpu, e.tick));
+                break;
+            case event_kind::firmware: {
+                const auto kind = static_cast<dsp::firmware_event>(e.a);
+                json x = instant(dsp::firmware_event_name(kind), "firmware", cpu, e.tick);
+                x["args"] = {{"pair", e.b}, {"value", e.c}};
+                events.push_back(x);
+                break;
+            }
+            case event_kind::irq:
+                if (e.b == 1 && e.a >= 4 && e.a <= 6)
+                    events.push_back(instant(irq_names[e.a - 4], "interrupt", card, e.tick));
+                break;
+            case event_kind::oe:
+                if (e.a == 1) {
+                    oe_begin = e.tick;
+                } else if (oe_begin >= 0) {
+                    events.push_back(complete("OE high", "oe", card, oe_begin, e.tick));
+                    oe_begin = -1;
+                }
+                break;
+            case event_kind::sensor_frame:
+                events.push_back(
+                    instant(e.a == 0 ? "VSYNC L" : "VSYNC R", "frame", sensors, e.tick));
+                break;
+            case event_kind::fault: {  // an injected fault's onset (tb/faults, docs/faults.md)
+                json x = instant(std::string("fault ") +
+                                     faults::fault_type_name(static_cast<faults::fault_type>(e.b)),
+                                 "fault", sensors, e.tick);
+                x["args"] = {{"index", e.a}, {"frame", e.c}};
+                events.push_back(x);
+                break;
+            }
+            default:  // results: in report.json
+                break;
+        }
+    }
+    if (sleep_begin >= 0) events.push_back(complete("sleep", "idle", cpu, sleep_begin, end));
+    if (oe_begin >= 0) events.push_back(complete("OE high", "oe", card, oe_begin, end));
+
+    // ---- EDMA: capture chains and bursts ----------------------------------------------------
+    const std::vector<ticks>& ready = top.cycle_island().irq_rises(0);
+    const std::vector<ticks>& bursts = top.cycle_island().edma_completions();
+    for (size_t p = 0; p < ready.size(); ++p) {
+        const ticks next = p + 1 < ready.size() ? ready[p + 1] : end;
+        ticks last = -1;
+        for (ticks t : bursts)
+            if (t > ready[p] && t <= next) last = t;
+        if (last < 0) continue;
+        json x = complete("capture", "edma", edma, ready[p], last);
+        x["args"] = {{"pair", p + 1}};
+        events.push_back(x);
+    }
+    for (ticks t : bursts) events.push_back(instant("burst", "edma", edma, t));
+
+    json doc{{"traceEvents", events},
+             {"displayTimeUnit", "ns"},
+             {"otherData",
+              {{"generator", "stereosim (tb/app/output/trace_events.cpp)"},
+               {"time_base", "simulated time; 1 tick = 1/18 ns"}}}};
+    return doc.dump() + "\n";
+}
+
+}  // namespace output

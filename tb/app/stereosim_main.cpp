@@ -1,0 +1,97 @@
+// stereosim: the command a firmware or hardware engineer types (docs/cli.md).
+//   stereosim run [options]       one co-simulation, report.json, frames.csv
+//   stereosim scenarios           the built-in scenarios, one line each
+//   stereosim config --list       every config key: type, range, default, doc
+// Exit codes: 0 within budget, 1 over budget, 2 bad input, 3 the run failed.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <cstdlib>
+#include <systemc>
+
+#include "tb/app/cli/config_keys.h"
+#include "tb/app/cli/run_command.h"
+#include "tb/app/cli/scenarios.h"
+#include "tb/app/faults/faults_command.h"
+#include "tb/app/run_extensions.h"
+
+namespace {
+
+// SystemC's messages: info is dropped, warnings are one line on stderr,
+// errors keep their actions (throw) so the run command reports them.
+void report_handler(const sc_core::sc_report& report, const sc_core::sc_actions& actions) {
+    if (report.get_severity() == sc_core::SC_INFO) return;
+    if (report.get_severity() == sc_core::SC_WARNING) {
+        std::fprintf(stderr, "stereosim: SystemC warning: %s\n", report.get_msg());
+        return;
+    }
+    sc_core::sc_report_handler::default_handler(report,
+                                                actions & ~(sc_core::SC_DISPLAY | sc_core::SC_LOG));
+}
+
+void print_scenarios() {
+    for (const cli::builtin_scenario& s : cli::builtin_scenarios())
+        std::printf("%-13s %s\n", s.name, s.description);
+}
+
+void print_config_keys(bool markdown) {
+    const cli::run_setup defaults;
+    if (markdown) {
+        std::printf("| key | type / range | default | what |\n|---|---|---|---|\n");
+        for (const cli::config_key& k : cli::config_keys())
+            std::printf("| `%s` | %s | `%s` | %s |\n", k.name.c_str(), k.range_text().c_str(),
+                        k.get(defaults).dump().c_str(), k.doc.c_str());
+        return;
+    }
+    for (const cli::config_key& k : cli::config_keys())
+        std::printf("%-30s %-34s default %-12s %s\n", k.name.c_str(), k.range_text().c_str(),
+                    k.get(defaults).dump().c_str(), k.doc.c_str());
+}
+
+}  // namespace
+
+// Our own main instead of libsystemc's: SystemC prints its banner on stderr
+// as it starts (before sc_main), unless this variable is set first.
+int main(int argc, char* argv[]) {
+    setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
+    return sc_core::sc_elab_and_sim(argc, argv);
+}
+
+int sc_main(int argc, char* argv[]) {
+    sc_core::sc_set_time_resolution(1, sc_core::SC_FS);
+    sc_core::sc_report_handler::set_handler(report_handler);
+
+    CLI::App app{"stereosim: co-simulation of the C6416 DSK stereo vision platform (docs/cli.md)"};
+    app.require_subcommand(1);
+    cli::run_command run(app, ::app::make_run_extensions());
+    CLI::App* scenarios = app.add_subcommand("scenarios", "the built-in scenarios, one line each");
+    CLI::App* config = app.add_subcommand("config", "the config keys (docs/config.md)");
+    bool list = false, markdown = false;
+    config->add_flag("--list", list, "every key: type, range, default, doc line");
+    config->add_flag("--markdown", markdown, "the same as a Markdown table (docs/config.md)");
+    // Further subcommands (e.g. `stereosim faults`) are added here.
+    faults::faults_command faults(app);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::string what = e.what();
+        for (char& c : what)
+            if (c == '\n') c = ' ';
+        cli::print_error(what + " (stereosim --help)");
+        return cli::exit_bad_input;
+    }
+    if (*scenarios) {
+        print_scenarios();
+        return 0;
+    }
+    if (*faults.subcommand()) return faults.execute();
+    if (*config) {
+        print_config_keys(markdown);
+        return 0;
+    }
+    return run.execute();
+}

@@ -1,0 +1,28 @@
+#include "tb/platform/scoring/frame_record.h"
+
+#include <vector>
+
+namespace platform {
+
+dsp::controller_config controller_config_for(const scene::stereo_rig& rig) {
+    dsp::controller_config config;
+    config.max_width = rig.width;
+    config.max_height = rig.height;
+    config.rig = scene::to_dsp_rig(rig);
+    return config;
+}
+
+int first_motion_frame(const scene::sequence& sequence, int frames) {
+    scene::vec3 previous{};
+    for (int n = 0; n < frames; ++n) {
+        const std::vector<scene::ball_truth> truth = sequence.truth(n);
+        if (truth.empty()) return -1;
+        const scene::vec3 centre = truth.front().centre_m;
+        if (n > 0 && (centre.x != previous.x || centre.y != previous.y || centre.z != previous.z))
+            return n;
+        previous = centre;
+    }
+    return -1;
+}
+
+}  // namespace platform

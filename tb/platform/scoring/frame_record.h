@@ -1,0 +1,29 @@
+// One processed stereo pair beside the scene's truth, and what the platform
+// and the host harness (tests/support/host) both need to score it: the
+// firmware's configuration for a scene rig and the first frame that moves.
+#pragma once
+
+#include "dsp/controller.h"
+#include "model/scene/sequence.h"
+
+namespace platform {
+
+// One processed pair: the firmware's output and the truth of the scene's
+// first ball (has_truth is false for a scene with no ball).
+struct frame_record {
+    int index = 0;
+    double time_s = 0.0;
+    dsp::frame_output out;
+    bool has_truth = false;
+    scene::ball_truth truth;
+};
+
+// The controller configuration for a scene rig: image size, the firmware's
+// integer rig, everything else at its default.
+dsp::controller_config controller_config_for(const scene::stereo_rig& rig);
+
+// The first frame whose ball centre differs from the previous frame's, or
+// -1 if the ball never moves within [0, frames).
+int first_motion_frame(const scene::sequence& sequence, int frames);
+
+}  // namespace platform

@@ -1,0 +1,81 @@
+#include "tests/support/host/scenarios.h"
+
+#include <cmath>
+
+namespace host {
+
+namespace {
+
+// The default scene with one ball on `path`.
+scene::scenario one_ball_scenario(const scene::trajectory& path, int frames) {
+    scene::scenario s;
+    s.scene.background =
+        scene::background_desc::procedural_plane(scene::procedural_texture_params{}, 5.0);
+    scene::ball_desc ball;
+    ball.radius_m = 0.05;  // DESIGN.md default ball
+    ball.path = path;
+    s.scene.balls.push_back(ball);
+    s.frame_count = frames;
+    return s;
+}
+
+// Motion starts at the last still frame's time, so frames 0 .. still-1 are identical.
+double motion_start_s(int still_frames, double period_s) {
+    return (still_frames > 0 ? still_frames - 1 : 0) * period_s;
+}
+
+}  // namespace
+
+scene::scenario static_scenario(int frames) {
+    return one_ball_scenario(scene::trajectory::still({-0.3, 0.0, 2.6}), frames);
+}
+
+scene::scenario circling_scenario(double depth_m, int still_frames, int frames) {
+    const double period = scene::scenario{}.frame_period_s;
+    const double pi = std::acos(-1.0);
+    const double radius = 0.15 * depth_m, speed = 0.41 * depth_m;  // m, m/s
+    return one_ball_scenario(
+        scene::trajectory::circle({0.0, 0.0, depth_m}, radius, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0},
+                                  speed / radius, pi, motion_start_s(still_frames, period)),
+        frames);
+}
+
+scene::scenario exit_return_scenario(int still_frames) {
+    const double period = scene::scenario{}.frame_period_s;
+    const double radius = 0.5, speed = 1.2;  // m, m/s
+    const double pi = std::acos(-1.0);
+    // Phase pi: the leftmost point; increasing angle goes up (-Y) first.
+    return one_ball_scenario(
+        scene::trajectory::circle({0.7, 0.0, 2.5}, radius, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0},
+                                  speed / radius, pi, motion_start_s(still_frames, period)),
+        still_frames + 110);
+}
+
+exit_return_frames exit_return_timing(const scene::sequence& sequence, int frames) {
+    exit_return_frames f;
+    for (int n = 0; n < frames; ++n) {
+        const scene::sphere_image image = sequence.truth(n).front().right;
+        const bool inside = image.valid && image.inside_image;
+        const bool outside = !image.valid || image.pixel_box.empty();
+        if (f.first_outside < 0) {
+            if (inside) f.last_inside = n;
+            if (outside) f.first_outside = n;
+        } else if (f.first_inside_again < 0) {
+            if (outside) f.last_outside = n;
+            if (inside) f.first_inside_again = n;
+        }
+    }
+    return f;
+}
+
+scene::scenario lighting_change_scenario(int change_frame, double gain, int ramp_frames,
+                                         int frames) {
+    scene::scenario s = static_scenario(frames);
+    const double t0 = change_frame * s.frame_period_s;
+    s.scene.light = ramp_frames > 0
+                        ? scene::lighting::with_ramp(t0, t0 + ramp_frames * s.frame_period_s, gain)
+                        : scene::lighting::with_step(t0, gain);
+    return s;
+}
+
+}  // namespace host

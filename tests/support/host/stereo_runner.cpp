@@ -1,0 +1,48 @@
+#include "tests/support/host/stereo_runner.h"
+
+#include <utility>
+
+#include "model/scene/bayer_mosaic.h"
+
+namespace host {
+
+stereo_runner::stereo_runner(scene::scenario scenario, const dsp::controller_config& config)
+    : m_sequence(std::move(scenario)), m_cfa(config.cfa) {
+    m_controller.init(config, m_hal);
+}
+
+void stereo_runner::render(int n) {
+    m_sequence.render(n, &m_frame);
+    m_raw_left.resize(m_frame.left.width, m_frame.left.height);
+    m_raw_right.resize(m_frame.right.width, m_frame.right.height);
+    scene::mosaic(m_frame.left.view(), m_cfa, m_raw_left.plane());
+    scene::mosaic(m_frame.right.view(), m_cfa, m_raw_right.plane());
+    m_rendered = n;
+}
+
+frame_record stereo_runner::process() {
+    frame_record record;
+    record.index = m_rendered;
+    record.time_s = m_frame.time_s;
+    m_hal.begin_frame();
+    record.out = m_controller.process_pair(m_raw_left.view(), m_raw_right.view());
+    if (!m_frame.balls.empty()) {
+        record.has_truth = true;
+        record.truth = m_frame.balls.front();
+    }
+    return record;
+}
+
+frame_record stereo_runner::step(int n) {
+    render(n);
+    return process();
+}
+
+std::vector<frame_record> stereo_runner::run(int first, int count) {
+    std::vector<frame_record> records;
+    records.reserve(static_cast<size_t>(count > 0 ? count : 0));
+    for (int n = first; n < first + count; ++n) records.push_back(step(n));
+    return records;
+}
+
+}  // namespace host
