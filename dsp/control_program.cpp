@@ -505,7 +505,7 @@ void control_program::process_buffer(int buffer) {
         const frame_output out =
             m_controller.process_pair(gray_cplane{left, w, h, w}, gray_cplane{right, w, h, w});
         ++m_stats.pairs_processed;
-        m_hal->report_result(out);
+        m_hal->report_result(pair, out);
         report(firmware_event::pair_processed, pair, static_cast<uint32_t>(buffer),
                out.has_point ? 1u : 0u);
     }

@@ -171,8 +171,12 @@ class hal {
 
     // ---- reports and stop ------------------------------------------------------------------
     virtual void report(const event_record& e) { (void)e; }
-    // The pipeline's result for one processed pair (the 3D point).
-    virtual void report_result(const frame_output& out) { (void)out; }
+    // The pipeline's result for one processed pair (the 3D point), with the
+    // pair's number (the card's PAIRS_OK count copied with it).
+    virtual void report_result(uint32_t pair, const frame_output& out) {
+        (void)pair;
+        (void)out;
+    }
     // The platform asks the firmware to end its loop (checked between pairs).
     virtual bool stop_requested() { return false; }
 };

@@ -44,7 +44,12 @@ module card_top #(
     // ---- interrupts (J3 peripheral connector) ----
     output logic        ext_int4,   // frame pair ready
     output logic        ext_int5,   // sync error
-    output logic        ext_int6    // FIFO overflow
+    output logic        ext_int6,   // FIFO overflow
+    // ---- debug outputs (test points, not on a connector) ----
+    // The FIFOs' write-side levels, words: what the testbench's budget checker
+    // samples for the FIFO peaks and the waveform shows (docs/card.md).
+    output logic [FIFO_AW:0] dbg_fifo_level_l,
+    output logic [FIFO_AW:0] dbg_fifo_level_r
 );
     localparam int AW = FIFO_AW;
 
@@ -106,7 +111,7 @@ module card_top #(
     // ---- FIFOs ---------------------------------------------------------------------------
     logic l_wr_en, r_wr_en, l_wr_full, r_wr_full, fifo_clear;
     logic [31:0] l_wr_data, r_wr_data, l_rd_data, r_rd_data;
-    logic [AW:0] l_wr_level_unused, r_wr_level_unused, l_wr_peak, r_wr_peak, l_wr_ptr, r_wr_ptr;
+    logic [AW:0] l_wr_peak, r_wr_peak, l_wr_ptr, r_wr_ptr;
     logic l_overflow, r_overflow;
     logic l_rd_en, r_rd_en, l_empty, r_empty;
     logic [AW:0] l_rd_level, r_rd_level, l_rd_ptr, r_rd_ptr, l_rd_wptr, r_rd_wptr;
@@ -118,7 +123,7 @@ module card_top #(
         .wr_data(l_wr_data),
         .wr_clear(fifo_clear),
         .wr_full(l_wr_full),
-        .wr_level(l_wr_level_unused),
+        .wr_level(dbg_fifo_level_l),
         .wr_peak(l_wr_peak),
         .wr_overflow(l_overflow),
         .wr_ptr(l_wr_ptr),
@@ -138,7 +143,7 @@ module card_top #(
         .wr_data(r_wr_data),
         .wr_clear(fifo_clear),
         .wr_full(r_wr_full),
-        .wr_level(r_wr_level_unused),
+        .wr_level(dbg_fifo_level_r),
         .wr_peak(r_wr_peak),
         .wr_overflow(r_overflow),
         .wr_ptr(r_wr_ptr),

@@ -47,7 +47,7 @@ class c6416_sc::firmware_hal final : public dsp::hal {
     void clear_interrupt_flags(uint32_t mask) override { m_chip.m_ifr &= ~mask; }
     int wait_for_interrupt() override { return m_chip.wait_for_interrupt(); }
     void report(const dsp::event_record& e) override { m_chip.report(e); }
-    void report_result(const dsp::frame_output& out) override {
+    void report_result(uint32_t /*pair*/, const dsp::frame_output& out) override {
         if (m_chip.m_result_observer) m_chip.m_result_observer(sc_core::sc_time_stamp(), out);
     }
     bool stop_requested() override { return m_chip.m_stop; }

@@ -82,69 +82,67 @@ int largest(const double* ms) {
 // a nanosecond of rounding).
 constexpr double saturated_slack_ms = 1e-6;
 
-}  // namespace
+// What every measure of the run reads.
+struct run_view {
+    const platform_config& config;
+    const island& isl;
+    const probe_hal& probe;
+    simtime::ticks steady_from;  // the first in-step FRAME_READY: judging starts there
+    simtime::ticks run_end;
+    double eclk_ns;
+    double cpu_hz;
+    double cycles_ms(uint64_t cycles) const { return 1e3 * static_cast<double>(cycles) / cpu_hz; }
+};
 
-budget_report check_budget(const platform_top& top, const scoreboard_report& score) {
-    budget_report b;
-    const platform_config& config = top.config();
-    const island& isl = top.cycle_island();
-    const probe_hal& probe = top.probe();
-    b.period_ms = ticks_to_ms(config.period);
-    b.cpu_hz = static_cast<double>(config.dsk.cpu_hz);
-    const double eclk_ns = static_cast<double>(top.engine().config().eclk.period_num()) /
-                           static_cast<double>(top.engine().config().eclk.period_den()) /
-                           simtime::ticks_per_ns;
-    const simtime::ticks steady_from = score.first_in_step_ready;
-    const simtime::ticks run_end = top.end_tick();
-    const auto cycles_ms = [&](uint64_t cycles) {
-        return 1e3 * static_cast<double>(cycles) / b.cpu_hz;
-    };
+period_budget measure_period(const run_view& run, size_t k, const period_sample& sample) {
+    period_budget p;
+    const simtime::ticks period = run.config.period;
+    p.index = static_cast<int>(k);
+    p.begin = period * static_cast<simtime::ticks>(k);
+    p.end = p.begin + period;
+    p.judged = run.steady_from >= 0 && p.begin >= run.steady_from && p.end <= run.run_end;
+    simtime::ticks asleep = 0;
+    for (const tick_interval& s : run.probe.sleeps())
+        asleep += overlap(s.begin, s.end, p.begin, p.end);
+    if (run.probe.asleep_since() >= 0)
+        asleep += overlap(run.probe.asleep_since(), run.run_end, p.begin, p.end);
+    p.cpu_busy_ms = ticks_to_ms(period - asleep);
+    p.emif_busy_ms = 1e-6 * run.eclk_ns * static_cast<double>(sample.emif_busy_edges);
+    p.cpu_words = sample.cpu_words;
+    for (int c = 0; c < 2; ++c) p.fifo_peak_words[c] = sample.fifo_peak_words[c];
+    p.overflow = sample.fifo_overflow[0] || sample.fifo_overflow[1];
+    for (const charge_record& c : run.probe.charges())
+        p.stage_ms[static_cast<int>(c.stage)] +=
+            ticks_to_ms(overlap(c.begin, c.end, p.begin, p.end));
+    return p;
+}
 
-    // ---- per period ----------------------------------------------------------------------
-    const std::vector<period_sample>& samples = isl.periods();
-    for (size_t k = 0; k < samples.size(); ++k) {
-        period_budget p;
-        p.index = static_cast<int>(k);
-        p.begin = config.period * static_cast<simtime::ticks>(k);
-        p.end = p.begin + config.period;
-        p.judged = steady_from >= 0 && p.begin >= steady_from && p.end <= run_end;
-        simtime::ticks asleep = 0;
-        for (const tick_interval& s : probe.sleeps())
-            asleep += overlap(s.begin, s.end, p.begin, p.end);
-        if (probe.asleep_since() >= 0)
-            asleep += overlap(probe.asleep_since(), run_end, p.begin, p.end);
-        p.cpu_busy_ms = ticks_to_ms(config.period - asleep);
-        p.emif_busy_ms = 1e-6 * eclk_ns * static_cast<double>(samples[k].emif_busy_edges);
-        p.cpu_words = samples[k].cpu_words;
-        for (int c = 0; c < 2; ++c) p.fifo_peak_words[c] = samples[k].fifo_peak_words[c];
-        p.overflow = samples[k].fifo_overflow[0] || samples[k].fifo_overflow[1];
-        for (const charge_record& c : probe.charges())
-            p.stage_ms[static_cast<int>(c.stage)] +=
-                ticks_to_ms(overlap(c.begin, c.end, p.begin, p.end));
-        b.periods.push_back(p);
-    }
-    // Drops, by the period their FRAME_READY came in.
-    const std::vector<simtime::ticks>& ready = isl.irq_rises(0);
-    for (const fw_event& e : probe.fw_events()) {
+// Drops, by the period their FRAME_READY came in.
+void count_drops(const run_view& run, budget_report& b) {
+    const std::vector<simtime::ticks>& ready = run.isl.irq_rises(0);
+    for (const fw_event& e : run.probe.fw_events()) {
         if (e.event.kind != dsp::firmware_event::pair_dropped) continue;
         for (uint32_t n = e.event.pair - e.event.value; n < e.event.pair; ++n) {
             if (n == 0 || n > ready.size()) continue;
             const simtime::ticks t = ready[n - 1];
-            const size_t k = static_cast<size_t>(t / config.period);
+            const size_t k = static_cast<size_t>(t / run.config.period);
             ++b.drops;
             if (k >= b.periods.size()) continue;
             ++b.periods[k].drops;
             if (b.periods[k].judged) {
                 overrun o;
                 o.what = resource::pair_buffers;
-                o.stage = stage_at(probe.charges(), t);
+                o.stage = stage_at(run.probe.charges(), t);
                 o.period = static_cast<int>(k);
                 o.pair = n;
                 b.overruns.push_back(o);
             }
         }
     }
+}
 
+// Peaks over every period; overruns of the judged ones (CPU, bus, FIFO).
+void judge_periods(budget_report& b) {
     for (period_budget& p : b.periods) {
         for (int c = 0; c < 2; ++c)
             b.fifo_peak_words[c] = std::max(b.fifo_peak_words[c], p.fifo_peak_words[c]);
@@ -177,71 +175,114 @@ budget_report check_budget(const platform_top& top, const scoreboard_report& sco
             b.overruns.push_back(o);
         }
     }
+}
 
-    // ---- per pair ----------------------------------------------------------------------------
-    const std::vector<simtime::ticks>& edma = isl.edma_completions();
+// One forwarded pair: its capture (FRAME_READY to the EDMA chain's last
+// burst) and, if processed, its stages. *chain_done: the capture ended in the run.
+pair_budget measure_pair(const run_view& run, const pair_check& pc, bool* chain_done) {
+    pair_budget pb;
+    const std::vector<simtime::ticks>& ready = run.isl.irq_rises(0);
+    pb.pair = pc.pair;
+    pb.judged = run.steady_from >= 0 && pc.ready >= run.steady_from;
+    const simtime::ticks next = pc.pair < ready.size() ? ready[pc.pair] : run.run_end;
+    simtime::ticks last = -1;
+    for (simtime::ticks t : run.isl.edma_completions())
+        if (t > pc.ready && t <= next) last = t;
+    *chain_done = last >= 0;
+    // The run's last pair: its chain may still be running at the end.
+    if (pc.pair >= ready.size()) *chain_done = *chain_done && pc.processed;
+    if (*chain_done) pb.capture_ms = ticks_to_ms(last - pc.ready);
+    if (pc.processed) {
+        pb.processed = true;
+        const dsp::frame_output& out = pc.record.out;
+        for (int s = 0; s < dsp::stage_count; ++s)
+            pb.stage_ms[s] = run.cycles_ms(out.stage_cycles[s]);
+        pb.stage_ms[static_cast<int>(dsp::stage::capture)] +=
+            run.cycles_ms(run.config.capture_cycles);
+        for (int s = 0; s < dsp::stage_count; ++s) pb.processing_ms += pb.stage_ms[s];
+        pb.latency_ms = pc.latency_ms;
+    }
+    return pb;
+}
+
+// Sums for the means over the judged captures and the processed pairs.
+struct pair_sums {
     int captures = 0;
-    double capture_sum = 0.0;
+    double capture_ms = 0.0;
     int processed = 0;
-    double stage_sum[dsp::stage_count] = {};
-    for (const pair_check& pc : score.pairs) {
-        pair_budget pb;
-        pb.pair = pc.pair;
-        pb.judged = steady_from >= 0 && pc.ready >= steady_from;
-        const simtime::ticks next = pc.pair < ready.size() ? ready[pc.pair] : run_end;
-        simtime::ticks last = -1;
-        for (simtime::ticks t : edma)
-            if (t > pc.ready && t <= next) last = t;
-        bool chain_done = last >= 0;
-        if (pc.pair >= ready.size()) {
-            // The run's last pair: its chain may still be running at the end.
-            chain_done = chain_done && pc.processed;
+    double stage_ms[dsp::stage_count] = {};
+};
+
+// A pair's maxima, means and overruns (capture longer than a period,
+// processing longer than a period).
+void judge_pair(budget_report& b, const pair_budget& pb, bool chain_done, pair_sums& sums) {
+    if (pb.processed) {
+        ++sums.processed;
+        for (int s = 0; s < dsp::stage_count; ++s) {
+            sums.stage_ms[s] += pb.stage_ms[s];
+            b.stage_ms_max[s] = std::max(b.stage_ms_max[s], pb.stage_ms[s]);
         }
-        if (chain_done) pb.capture_ms = ticks_to_ms(last - pc.ready);
-        if (pc.processed) {
-            pb.processed = true;
-            const dsp::frame_output& out = pc.record.out;
-            for (int s = 0; s < dsp::stage_count; ++s)
-                pb.stage_ms[s] = cycles_ms(out.stage_cycles[s]);
-            pb.stage_ms[static_cast<int>(dsp::stage::capture)] += cycles_ms(config.capture_cycles);
-            for (int s = 0; s < dsp::stage_count; ++s) pb.processing_ms += pb.stage_ms[s];
-            pb.latency_ms = pc.latency_ms;
-            ++processed;
-            for (int s = 0; s < dsp::stage_count; ++s) {
-                stage_sum[s] += pb.stage_ms[s];
-                b.stage_ms_max[s] = std::max(b.stage_ms_max[s], pb.stage_ms[s]);
-            }
-            b.max_processing_ms = std::max(b.max_processing_ms, pb.processing_ms);
-            b.latency_ms_max = std::max(b.latency_ms_max, pb.latency_ms);
-        }
-        if (pb.judged && chain_done) {
-            ++captures;
-            capture_sum += pb.capture_ms;
-            b.max_capture_ms = std::max(b.max_capture_ms, pb.capture_ms);
-            if (pb.capture_ms > b.period_ms) {
-                overrun o;
-                o.what = resource::emif;
-                o.pair = pb.pair;
-                o.value_ms = pb.capture_ms;
-                o.limit_ms = b.period_ms;
-                b.overruns.push_back(o);
-            }
-        }
-        if (pb.judged && pb.processed && pb.processing_ms > b.period_ms) {
+        b.max_processing_ms = std::max(b.max_processing_ms, pb.processing_ms);
+        b.latency_ms_max = std::max(b.latency_ms_max, pb.latency_ms);
+    }
+    if (pb.judged && chain_done) {
+        ++sums.captures;
+        sums.capture_ms += pb.capture_ms;
+        b.max_capture_ms = std::max(b.max_capture_ms, pb.capture_ms);
+        if (pb.capture_ms > b.period_ms) {
             overrun o;
-            o.what = resource::cpu;
-            o.stage = static_cast<dsp::stage>(largest(pb.stage_ms));
+            o.what = resource::emif;
             o.pair = pb.pair;
-            o.value_ms = pb.processing_ms;
+            o.value_ms = pb.capture_ms;
             o.limit_ms = b.period_ms;
             b.overruns.push_back(o);
         }
+    }
+    if (pb.judged && pb.processed && pb.processing_ms > b.period_ms) {
+        overrun o;
+        o.what = resource::cpu;
+        o.stage = static_cast<dsp::stage>(largest(pb.stage_ms));
+        o.pair = pb.pair;
+        o.value_ms = pb.processing_ms;
+        o.limit_ms = b.period_ms;
+        b.overruns.push_back(o);
+    }
+}
+
+}  // namespace
+
+budget_report check_budget(const platform_top& top, const scoreboard_report& score) {
+    budget_report b;
+    const platform_config& config = top.config();
+    const simtime::tick_clock& eclk = top.engine().config().eclk;
+    const run_view run{config,
+                       top.cycle_island(),
+                       top.probe(),
+                       score.first_in_step_ready,
+                       top.end_tick(),
+                       static_cast<double>(eclk.period_num()) /
+                           static_cast<double>(eclk.period_den()) / simtime::ticks_per_ns,
+                       static_cast<double>(config.dsk.cpu_hz)};
+    b.period_ms = ticks_to_ms(config.period);
+    b.cpu_hz = run.cpu_hz;
+
+    const std::vector<period_sample>& samples = run.isl.periods();
+    for (size_t k = 0; k < samples.size(); ++k)
+        b.periods.push_back(measure_period(run, k, samples[k]));
+    count_drops(run, b);
+    judge_periods(b);
+
+    pair_sums sums;
+    for (const pair_check& pc : score.pairs) {
+        bool chain_done = false;
+        const pair_budget pb = measure_pair(run, pc, &chain_done);
+        judge_pair(b, pb, chain_done, sums);
         b.pairs.push_back(pb);
     }
-    if (captures > 0) b.mean_capture_ms = capture_sum / captures;
+    if (sums.captures > 0) b.mean_capture_ms = sums.capture_ms / sums.captures;
     for (int s = 0; s < dsp::stage_count; ++s) {
-        if (processed > 0) b.stage_ms_mean[s] = stage_sum[s] / processed;
-        b.stage_cycles_total[s] = probe.stage_cycles(static_cast<dsp::stage>(s));
+        if (sums.processed > 0) b.stage_ms_mean[s] = sums.stage_ms[s] / sums.processed;
+        b.stage_cycles_total[s] = run.probe.stage_cycles(static_cast<dsp::stage>(s));
     }
     b.fits = b.judged_periods > 0 && b.overruns.empty();
     return b;

@@ -4,6 +4,7 @@
 
 #include "dsp/c6416_regs.h"
 #include "dsp/kernel_costs.h"
+#include "tb/platform/arrangements/fast/fast_island.h"
 #include "tb/platform/arrangements/pins/pins_island.h"
 
 namespace platform {
@@ -41,7 +42,6 @@ island_config make_island_config(const platform_config& config) {
     c.quantum = config.quantum;
     c.period = config.period;
     c.hash_pins = config.hash_pins;
-    c.test_delay_right_oe = config.test_delay_right_oe;
     c.trace = config.trace;
     c.trace_window = config.trace_window;
     c.end = config.period * config.frames;
@@ -75,8 +75,8 @@ platform_top::platform_top(const platform_config& config)
         m_island = pins::make_pins_island("island", make_island_config(config), m_source, m_engine,
                                           m_timeline);
     } else {
-        m_island = std::make_unique<island>("island", make_island_config(config), m_source,
-                                            m_engine, m_timeline);
+        m_island = fast::make_fast_island("island", make_island_config(config), m_source, m_engine,
+                                          m_timeline);
     }
     m_engine.set_sdram_storage(m_cpu->sdram_storage(), m_cpu->sdram_storage_bytes());
     // Injected CPU faults (tb/faults, docs/faults.md); the bus's ARDY faults

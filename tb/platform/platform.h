@@ -1,7 +1,7 @@
 // The platform top (docs/platform.md): two sensors -> the daughter card RTL
-// -> EMIFA -> the C6416 model running the firmware of dsp/ -> 3D track, in the
-// fast arrangement (tb/platform/island_sc.h), with the observers the
-// scoreboard and the budget checker read after the run.
+// -> EMIFA -> the C6416 model running the firmware of dsp/ -> 3D track, in
+// the arrangement platform_config names (tb/platform/arrangements/), with
+// the observers the scoreboard and the budget checker read after the run.
 //
 //   scene renderer --RGB--> island [ sensor L, sensor R, card (--cc), EMIF engine ]
 //                                 |  EXT_INT4..6 (sc_signal)     ^ TLM b_transport
@@ -24,11 +24,11 @@
 #include "model/scene/replay.h"
 #include "model/scene/sequence.h"
 #include "model/sensor/scene_sources.h"
-#include "tb/platform/island_sc.h"
+#include "tb/platform/island/island.h"
 #include "tb/platform/platform_config.h"
 #include "tb/platform/probe_hal.h"
 #include "tb/platform/recording_source.h"
-#include "tb/platform/timeline.h"
+#include "tb/platform/island/timeline.h"
 
 namespace platform {
 

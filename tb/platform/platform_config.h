@@ -15,24 +15,10 @@
 #include "model/sensor/fault.h"
 #include "model/sensor/profile.h"
 #include "model/time/ticks.h"
-#include "tb/platform/pin_trace.h"
+#include "tb/platform/island/island_config.h"
+#include "tb/platform/island/pin_trace.h"
 
 namespace platform {
-
-// DESIGN.md: one sensor frame = one sync period = 24.5 ms = 441,000,000 ticks.
-inline constexpr simtime::ticks period_24_5_ms = 441000000;
-
-// A board-level fault on the wire from a sensor's DATA[bit] to the card (a
-// solder short): from `from_tick` on the card samples that bit as `value`,
-// whatever the sensor drives. The sensor itself is unaffected, so the data
-// path integrity check must see it (docs/platform.md).
-struct wire_fault {
-    bool enabled = false;
-    int camera = 0;  // 0 left, 1 right
-    int bit = 2;
-    bool value = true;
-    simtime::ticks from_tick = 0;
-};
 
 // Which arrangement of the sensors, the card and the EMIF runs
 // (docs/arrangements.md): the cores stepped in one SystemC thread (fast), or
@@ -42,9 +28,6 @@ enum class arrangement_kind { fast, pins };
 
 struct platform_config {
     arrangement_kind arrangement = arrangement_kind::fast;
-    // Test only: the pin-level arrangement delays the right sensor's OE by one
-    // pixel clock, a one-cycle difference the identity test must see.
-    bool test_delay_right_oe = false;
 
     // ---- scene -------------------------------------------------------------------------------
     // default_scenario(3): the default rig, background and 5 cm ball; three
@@ -112,7 +95,7 @@ struct platform_config {
     // completion, interrupt pin change or other process's activity.
     simtime::ticks quantum = 800 * simtime::pclk_default_period;
     bool hash_pins = true;  // fold every pin change into the pin hash
-    // Pin trace (tb/platform/pin_trace.h): every traced signal's change in
+    // Pin trace (tb/platform/island/pin_trace.h): every traced signal's change in
     // [trace_window.from, trace_window.to) ticks goes to this sink; none if null.
     pin_trace* trace = nullptr;
     tick_window trace_window;

@@ -113,10 +113,6 @@ int probe_hal::wait_for_interrupt() {
 void probe_hal::report(const dsp::event_record& e) {
     enter();
     const fw_event te{now(), e};
-    if (e.kind == dsp::firmware_event::pair_processed && !m_results.empty()) {
-        m_results.back().pair = e.pair;
-        if (timeline_event* result = m_events.last(event_kind::result)) result->b = e.pair;
-    }
     if (m_hook) m_hook(te);
     m_fw_events.push_back(te);
     m_events.add(te.tick, event_kind::firmware, static_cast<uint8_t>(e.kind), e.pair, e.value);
@@ -124,12 +120,13 @@ void probe_hal::report(const dsp::event_record& e) {
     leave();
 }
 
-void probe_hal::report_result(const dsp::frame_output& out) {
+void probe_hal::report_result(uint32_t pair, const dsp::frame_output& out) {
     enter();
     const simtime::ticks t = now();
-    m_results.push_back({t, 0, out});
-    m_events.add(t, event_kind::result, static_cast<uint8_t>(out.state), 0, out.has_point ? 1 : 0);
-    m_inner.report_result(out);
+    m_results.push_back({t, pair, out});
+    m_events.add(t, event_kind::result, static_cast<uint8_t>(out.state), pair,
+                 out.has_point ? 1 : 0);
+    m_inner.report_result(pair, out);
     leave();
 }
 

@@ -15,7 +15,7 @@
 #include "dsp/controller.h"
 #include "dsp/hal.h"
 #include "model/time/ticks.h"
-#include "tb/platform/timeline.h"
+#include "tb/platform/island/timeline.h"
 
 namespace platform {
 
@@ -37,7 +37,7 @@ struct fw_event {
 
 struct fw_result {
     simtime::ticks tick = 0;
-    uint32_t pair = 0;  // from the pair_processed report that follows it
+    uint32_t pair = 0;  // the pair's number, as the firmware reports it
     dsp::frame_output out;
 };
 
@@ -68,7 +68,7 @@ class probe_hal final : public dsp::hal {
     void clear_interrupt_flags(uint32_t mask) override;
     int wait_for_interrupt() override;
     void report(const dsp::event_record& e) override;
-    void report_result(const dsp::frame_output& out) override;
+    void report_result(uint32_t pair, const dsp::frame_output& out) override;
     bool stop_requested() override;
 
     const std::vector<charge_record>& charges() const { return m_charges; }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
 
 #include "model/sensor/truth.h"
 
@@ -56,16 +58,28 @@ simtime::ticks first_rise_between(const std::vector<simtime::ticks>& rises, simt
     return never;
 }
 
-}  // namespace
+// The firmware's output for a pair with the scene's truth at its frame.
+platform::frame_record record_of(const platform_top& top, uint64_t scene_frame,
+                                 const dsp::frame_output& out) {
+    const scene::scenario& scenario = top.config().scenario;
+    platform::frame_record record;
+    record.index = static_cast<int>(scene_frame);
+    record.time_s = top.source().scene_time_s(1, scene_frame);
+    record.out = out;
+    if (!scenario.scene.balls.empty() && record.time_s >= 0.0) {
+        record.has_truth = true;
+        record.truth =
+            scene::ball_truth_at(scenario.scene.rig, scenario.scene.balls[0], record.time_s);
+    }
+    return record;
+}
 
-scoreboard_report score(const platform_top& top) {
-    scoreboard_report r;
+// Per OE start: timing truth against the card's first verdict.
+void check_starts(const platform_top& top, scoreboard_report& r) {
     const island& isl = top.cycle_island();
     const std::vector<sensor::frame_truth>* truth[2] = {&isl.sensor(0).truth(),
                                                         &isl.sensor(1).truth()};
     const simtime::rational_ticks pclk = top.config().profile.pclk_period();
-
-    // ---- per OE start: timing truth against the card's first verdict --------------------
     std::vector<simtime::ticks> oe_rises;
     for (const timeline_event& e : top.events().events())
         if (e.kind == event_kind::oe && e.a == 1) oe_rises.push_back(e.tick);
@@ -88,11 +102,25 @@ scoreboard_report score(const platform_top& top) {
         r.starts_agreeing += c.agree();
         r.starts.push_back(c);
     }
+}
 
-    // ---- per forwarded pair --------------------------------------------------------------
+// Per forwarded pair (FRAME_READY n is pair n), joined by pair number with
+// the captures, the rejections and the results; returns the scored records.
+std::vector<platform::frame_record> check_pairs(const platform_top& top, scoreboard_report& r) {
+    const island& isl = top.cycle_island();
+    const std::vector<sensor::frame_truth>* truth[2] = {&isl.sensor(0).truth(),
+                                                        &isl.sensor(1).truth()};
+    const simtime::rational_ticks pclk = top.config().profile.pclk_period();
     const std::vector<simtime::ticks>& ready = isl.irq_rises(0);
-    const std::vector<fw_result>& results = top.probe().results();
-    const scene::scenario& scenario = top.config().scenario;
+    // The pairs the EDMA moved, the firmware rejected and processed, by the
+    // pair number each carries.
+    std::set<uint32_t> captured, rejected;
+    for (const captured_pair& c : top.captured()) captured.insert(c.pair);
+    for (const fw_event& e : top.probe().fw_events()) {
+        if (e.event.kind == dsp::firmware_event::pair_rejected) rejected.insert(e.event.pair);
+    }
+    std::multimap<uint32_t, const fw_result*> results_by_pair;
+    for (const fw_result& res : top.probe().results()) results_by_pair.emplace(res.pair, &res);
     std::vector<platform::frame_record> records;
     for (size_t n = 0; n < ready.size(); ++n) {
         pair_check p;
@@ -112,25 +140,16 @@ scoreboard_report score(const platform_top& top) {
             r.first_in_step_ready = p.ready;
             r.first_in_step_frame = p.frame[0];
         }
-        for (const captured_pair& c : top.captured()) p.captured |= c.pair == p.pair;
-        for (const fw_event& e : top.probe().fw_events()) {
-            p.rejected |=
-                e.event.kind == dsp::firmware_event::pair_rejected && e.event.pair == p.pair;
-        }
-        for (const fw_result& res : results) {
-            if (res.pair != p.pair) continue;
+        p.captured = captured.count(p.pair) != 0;
+        p.rejected = rejected.count(p.pair) != 0;
+        const auto results = results_by_pair.equal_range(p.pair);
+        for (auto it = results.first; it != results.second; ++it) {
+            const fw_result& res = *it->second;
             p.processed = true;
             p.result_tick = res.tick;
             p.used_after_verdict = res.tick > p.ready && p.ready > p.last_active;
             p.latency_ms = ticks_to_ms(res.tick - p.first_active);
-            p.record.index = static_cast<int>(p.scene_frame);
-            p.record.time_s = top.source().scene_time_s(1, p.scene_frame);
-            p.record.out = res.out;
-            if (!scenario.scene.balls.empty() && p.record.time_s >= 0.0) {
-                p.record.has_truth = true;
-                p.record.truth = scene::ball_truth_at(scenario.scene.rig, scenario.scene.balls[0],
-                                                      p.record.time_s);
-            }
+            p.record = record_of(top, p.scene_frame, res.out);
             p.errors = platform::score_frame(p.record);
             records.push_back(p.record);
         }
@@ -143,16 +162,22 @@ scoreboard_report score(const platform_top& top) {
         }
         r.pairs.push_back(p);
     }
+    return records;
+}
 
-    // ---- the firmware's verdicts ------------------------------------------------------------
+// The firmware's own verdicts and the card's, counted.
+void count_verdicts(const platform_top& top, scoreboard_report& r) {
+    const island& isl = top.cycle_island();
     r.card_sync_errors = static_cast<int>(isl.irq_rises(1).size());
     for (const fw_event& e : top.probe().fw_events()) {
         if (e.event.kind == dsp::firmware_event::sync_error) ++r.firmware_sync_errors;
         if (e.event.kind == dsp::firmware_event::in_step && r.firmware_in_step_pair < 0)
             r.firmware_in_step_pair = e.event.pair;
     }
+}
 
-    // ---- data path integrity ---------------------------------------------------------------
+// Data path integrity: each captured pair's memory against the sensors' pins.
+void check_integrity(const platform_top& top, scoreboard_report& r) {
     for (const captured_pair& c : top.captured()) {
         ++r.integrity_checked;
         bool equal = true;
@@ -161,23 +186,26 @@ scoreboard_report score(const platform_top& top) {
                 c.sensor_checksum_known[cam] && c.sensor_checksum[cam] == c.memory_checksum[cam];
         r.integrity_equal += equal;
     }
+}
 
-    // ---- tracking and 3D ---------------------------------------------------------------------
-    if (!scenario.scene.balls.empty()) {
-        const scene::ball_desc& ball = scenario.scene.balls[0];
-        for (uint64_t k = 1;; ++k) {
-            const double t0 = top.source().scene_time_s(1, k - 1);
-            const double t1 = top.source().scene_time_s(1, k);
-            if (t1 < 0.0) break;
-            if (t0 < 0.0) continue;
-            const scene::vec3 a = scene::ball_truth_at(scenario.scene.rig, ball, t0).centre_m;
-            const scene::vec3 b = scene::ball_truth_at(scenario.scene.rig, ball, t1).centre_m;
-            if (a.x != b.x || a.y != b.y || a.z != b.z) {
-                r.first_motion_frame = static_cast<int>(k);
-                break;
-            }
-        }
+// The first scene frame whose ball centre moved (scene truth), or -1.
+int first_moving_scene_frame(const platform_top& top) {
+    const scene::scenario& scenario = top.config().scenario;
+    if (scenario.scene.balls.empty()) return -1;
+    const scene::ball_desc& ball = scenario.scene.balls[0];
+    for (uint64_t k = 1;; ++k) {
+        const double t0 = top.source().scene_time_s(1, k - 1);
+        const double t1 = top.source().scene_time_s(1, k);
+        if (t1 < 0.0) return -1;
+        if (t0 < 0.0) continue;
+        const scene::vec3 a = scene::ball_truth_at(scenario.scene.rig, ball, t0).centre_m;
+        const scene::vec3 b = scene::ball_truth_at(scenario.scene.rig, ball, t1).centre_m;
+        if (a.x != b.x || a.y != b.y || a.z != b.z) return static_cast<int>(k);
     }
+}
+
+// Tracking and 3D after the first detection: box and depth accuracy.
+void score_tracking(scoreboard_report& r) {
     for (const pair_check& p : r.pairs) {
         if (!p.processed) continue;
         if (r.detection_frame < 0) {
@@ -196,6 +224,18 @@ scoreboard_report score(const platform_top& top) {
             r.max_depth_err_pct = std::max(r.max_depth_err_pct, pct);
         }
     }
+}
+
+}  // namespace
+
+scoreboard_report score(const platform_top& top) {
+    scoreboard_report r;
+    check_starts(top, r);
+    const std::vector<platform::frame_record> records = check_pairs(top, r);
+    count_verdicts(top, r);
+    check_integrity(top, r);
+    r.first_motion_frame = first_moving_scene_frame(top);
+    score_tracking(r);
     r.summary = platform::summarize(records, r.first_motion_frame);
     return r;
 }

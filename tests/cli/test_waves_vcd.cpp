@@ -21,7 +21,7 @@
 #include "model/sensor/profile.h"
 #include "tb/app/output/gtkw_writer.h"
 #include "tb/app/output/vcd_writer.h"
-#include "tb/platform/pin_trace.h"
+#include "tb/platform/island/pin_trace.h"
 
 namespace {
 

@@ -195,7 +195,9 @@ class stand_in final : public dsp::hal {
         processed_frame.push_back(frame);
         processed_end.push_back(m_now);
     }
-    void report_result(const dsp::frame_output& out) override { results.push_back(out); }
+    void report_result(uint32_t /*pair*/, const dsp::frame_output& out) override {
+        results.push_back(out);
+    }
     bool stop_requested() override { return m_cfg.stop_at != 0 && m_now >= m_cfg.stop_at; }
 
     // ---- inspection ------------------------------------------------------------------------

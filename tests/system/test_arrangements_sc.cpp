@@ -4,7 +4,7 @@
 // gives the same pins and the same report.
 //
 // Per run the comparison covers: the canonical pin hash over every sensor,
-// EMIF and card pin change with its tick (tb/platform/pin_hash.h), every such
+// EMIF and card pin change with its tick (tb/platform/island/pin_hash.h), every such
 // change of a 1 ms window compared one by one (the per-signal-group change
 // lists; the first difference is printed), the VCD of that window as --vcd
 // writes it (tb/output's writer) parsed and compared signal by signal, the
@@ -15,8 +15,8 @@
 // One simulation per process: each arrangement runs in a forked child that
 // writes its digest to a pipe; the two children run at once (both cores).
 // A negative control proves the comparison can fail: the pin-level
-// arrangement with the right sensor's OE delayed by one pixel clock
-// (platform_config::test_delay_right_oe) must differ.
+// arrangement with the right sensor one pixel clock late from its frame 1
+// (a start_skew fault given to that run only, from the test side) must differ.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -286,17 +286,18 @@ bool same_bytes(const std::string& a, const std::string& b) {
                std::string(std::istreambuf_iterator<char>(fb), {});
 }
 
-// Runs `config` in both arrangements at once (the pins one with `pins_changes`
-// applied).
+// Runs `config` in both arrangements at once (the pins one with
+// `pins_right_faults` added to the right sensor's faults).
 pair_of_runs run_both(platform::platform_config config, simtime::ticks from, simtime::ticks to,
-                      bool delay_right_oe = false) {
+                      const std::vector<sensor::fault>& pins_right_faults = {}) {
     char dir_template[] = "/tmp/arrangements_vcd_XXXXXX";
     const std::string dir = mkdtemp(dir_template) ? dir_template : "/tmp";
     const std::string fast_vcd = dir + "/fast.vcd", pins_vcd = dir + "/pins.vcd";
     config.arrangement = arrangement_kind::fast;
     const child fast = start(config, from, to, fast_vcd);
     config.arrangement = arrangement_kind::pins;
-    config.test_delay_right_oe = delay_right_oe;
+    config.right_faults.insert(config.right_faults.end(), pins_right_faults.begin(),
+                               pins_right_faults.end());
     const child pins = start(config, from, to, pins_vcd);
     pair_of_runs r;
     EXPECT_TRUE(finish(fast, &r.fast)) << "the fast arrangement's child failed";
@@ -429,12 +430,15 @@ TEST(Arrangements, DskV3GivesIdenticalPinsAndReport) {
     expect_identical(r);
 }
 
-// The comparison can fail: the right sensor sampling OE one pixel clock late
-// in the pin-level arrangement shifts its whole stream by one clock.
+// The comparison can fail: one idle pixel clock before the right sensor's
+// frame 1, in the pin-level run only, shifts that sensor's stream by one
+// clock from there on.
 TEST(Arrangements, OneCycleDifferenceIsSeen) {
     platform::platform_config config = functional_run(3);
     config.frames = 3;
-    const pair_of_runs r = run_both(config, window_from, window_to, true);
+    const sensor::fault one_clock_late = sensor::fault::start_skew(
+        sensor::fault_trigger::at_frame(1), 0, 1, config.profile.line_pclks);
+    const pair_of_runs r = run_both(config, window_from, window_to, {one_clock_late});
     print("one-cycle difference", r);
     EXPECT_NE(r.fast.pin_hash, r.pins.pin_hash);
     const size_t first = first_difference(r.fast.window, r.pins.window);

@@ -1,5 +1,5 @@
 // The island's quantum must change only how often it syncs with SystemC,
-// never a result (tb/platform/island_sc.h): it never runs past another
+// never a result (tb/platform/arrangements/fast/fast_island.h): it never runs past another
 // process's next activity and stops at every bus completion and interrupt
 // pin change. Here the firmware's card watchdog (30 ms, not a multiple of
 // anything the island knows) reads card registers over the EMIF at times set

@@ -9,7 +9,7 @@
 #include "dsp/kernel_costs.h"
 #include "dsp/stage.h"
 #include "tb/app/cli/config_keys.h"
-#include "tb/platform/island_sc.h"
+#include "tb/platform/island/island.h"
 #include "tb/platform/report.h"
 
 namespace cli {

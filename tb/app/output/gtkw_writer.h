@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "tb/app/output/vcd_writer.h"
-#include "tb/platform/pin_trace.h"
+#include "tb/platform/island/pin_trace.h"
 
 namespace output {
 

@@ -32,7 +32,7 @@
 #include <string>
 #include <vector>
 
-#include "tb/platform/pin_trace.h"
+#include "tb/platform/island/pin_trace.h"
 
 namespace output {
 

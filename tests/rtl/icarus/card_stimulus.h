@@ -7,7 +7,7 @@
 // One clock event = the clocks of `edges` rise with the inputs unchanged
 // (phase 1), then the event's new inputs are applied and both clocks fall
 // (phase 2): the two evals per event of the C++ drivers (tests/rtl/rtl_sim.h,
-// tb/platform/island_sc.cpp). The outputs after each phase are compared.
+// tb/platform/arrangements/fast/fast_island.cpp). The outputs after each phase are compared.
 // Times: simtime::to_fs(tick) + replay_offset_fs, one rounding per edge.
 //
 // Cost: the replay is two evals per event; the file is ~70 bytes per event.

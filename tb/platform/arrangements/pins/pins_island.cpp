@@ -8,6 +8,7 @@
 #include "model/emif/emif_pins_sc.h"
 #include "model/emif/emif_tlm_target_sc.h"
 #include "model/sensor/sensor_sc.h"
+#include "tb/platform/island/card_signals.h"
 
 // verilated.h, seeing SystemC, expects sc_time_stamp in the global namespace.
 using sc_core::sc_time_stamp;
@@ -22,9 +23,8 @@ using simtime::ticks;
 using sig_bool = sc_core::sc_signal<bool>;
 using sig_u32 = sc_core::sc_signal<uint32_t>;
 
-using platform::pack_dsp_pins;
-using platform::pin_group_card_out;
-using platform::pin_group_emif_dsp;
+using platform::card_signals;
+using platform::trace_pin;
 
 sc_core::sc_time time_of(ticks t) {
     return emif::time_of_tick(t);
@@ -56,12 +56,12 @@ class pins_island : public platform::island {
     pins_island(sc_core::sc_module_name name, const platform::island_config& config,
                 sensor::frame_source& source, emif::emif_async_master& engine,
                 platform::timeline& events)
-        : platform::island(name, config, engine, events, observers_only{}),
+        : platform::island(name, config, engine, events, platform::event_order::placed),
+          m_tracer(m_observer.tracer()),
           m_mclk("mclk"),
           m_eclk("eclkout"),
           m_rst_n("rst_n"),
           m_oe("sensor_oe"),
-          m_oe_right("sensor_oe_right"),
           m_wires{sensor_wires("l"), sensor_wires("r")},
           m_ce{sig_bool("ce0_n"), sig_bool("ce1_n"), sig_bool("ce2_n"), sig_bool("ce3_n")},
           m_ea("ea"),
@@ -76,9 +76,9 @@ class pins_island : public platform::island {
           m_card_ardy("card_ardy"),
           m_bus_ed("bus_ed"),
           m_bus_ardy("bus_ardy"),
-          m_glue_edges("glue_edges") {
+          m_glue_edges("glue_edges"),
+          m_fifo_level{sig_u32("fifo_level_l"), sig_u32("fifo_level_r")} {
         m_rst_n.write(true);
-        m_dsp_seen = pack_dsp_pins(engine.pins());
         for (int c = 0; c < 2; ++c) {
             for (const sensor::fault& f : config.faults[c]) {
                 if (f.kind == sensor::fault_kind::pclk_drift)
@@ -87,7 +87,7 @@ class pins_island : public platform::island {
             }
         }
         build(source);
-        if (config.trace) trace_declare();
+        m_tracer.begin(engine.pins());
     }
 
     ~pins_island() override {
@@ -106,31 +106,32 @@ class pins_island : public platform::island {
             for (;;) {
                 const ticks t = std::min(m_pclk_cursor.tick(), m_eclk_cursor.tick());
                 if (t > m_config.end) break;
-                while (t >= m_next_boundary) close_period();
+                m_observer.close_periods_through(t);
+                platform::island_stats& stats = m_observer.stats();
                 if (m_pclk_cursor.tick() == t) {
-                    if ((m_pclk_cursor.index() & 1u) == 0) ++m_stats.pclk_edges;
+                    if ((m_pclk_cursor.index() & 1u) == 0) ++stats.pclk_edges;
                     m_pclk_cursor.advance();
                 }
                 if (m_eclk_cursor.tick() == t) {
-                    if ((m_eclk_cursor.index() & 1u) == 0) ++m_stats.eclk_edges;
+                    if ((m_eclk_cursor.index() & 1u) == 0) ++stats.eclk_edges;
                     m_eclk_cursor.advance();
                 }
             }
         }
-        if (m_trace) {
-            // The firmware's remaining events, then the base closes the trace
-            // (its own firmware cursor is moved past what is traced here).
-            trace_firmware_through(INT64_MAX);
-            m_timeline_traced = m_events.events().size();
-        }
-        platform::island::finish();
+        m_observer.finish();
     }
 
   private:
     void build(sensor::frame_source& source) {
+        build_sensors(source);
+        build_emif();
+        build_card();
+        build_board();
+    }
+
+    void build_sensors(sensor::frame_source& source) {
         const platform::island_config& config = m_config;
-        // Sensors on the master clock; OE from the card (the right one through
-        // a one-pclk flop when the test switch asks for a difference).
+        // Sensors on the master clock; OE from the card.
         for (int c = 0; c < 2; ++c) {
             const char* name = c == 0 ? "sensor_l" : "sensor_r";
             m_sensor_sc[c] = std::make_unique<sensor::sensor_sc>(
@@ -138,16 +139,19 @@ class pins_island : public platform::island {
                 source, config.sensor[c]);
             sensor::sensor_sc& s = *m_sensor_sc[c];
             for (const sensor::fault& f : config.faults[c]) s.core().add_fault(f);
-            attach_sensor(c, s.core());
+            m_observer.frames().attach(c, s.core());
             sensor_wires& w = m_wires[c];
             s.mclk.bind(m_mclk);
-            s.oe.bind(c == 1 && config.test_delay_right_oe ? m_oe_right : m_oe);
+            s.oe.bind(m_oe);
             s.pclk.bind(w.pclk);
             s.vsync.bind(w.vsync);
             s.href.bind(w.href);
             s.valid.bind(w.valid);
             s.data.bind(w.data);
         }
+    }
+
+    void build_emif() {
         m_emif = std::make_unique<emif::emif_pins_sc>("emif", m_engine);
         emif::emif_pins_sc& e = *m_emif;
         e.eclkout.bind(m_eclk);
@@ -164,7 +168,11 @@ class pins_island : public platform::island {
         e.awe_n.bind(m_awe_n);
         e.ed_in.bind(m_bus_ed);
         e.ardy.bind(m_bus_ardy);
+    }
 
+    // The card's pins, the sensors' DATA through the wire fault where one is modelled.
+    void build_card() {
+        const platform::island_config& config = m_config;
         m_card = std::make_unique<Vcard_sc>("card");
         Vcard_sc& d = *m_card;
         d.rst_n.bind(m_rst_n);
@@ -195,7 +203,14 @@ class pins_island : public platform::island {
         d.ext_int4.bind(ext_int4);  // the island's ports, bound by the platform to the DSP
         d.ext_int5.bind(ext_int5);
         d.ext_int6.bind(ext_int6);
+        d.dbg_fifo_level_l.bind(m_fifo_level[0]);
+        d.dbg_fifo_level_r.bind(m_fifo_level[1]);
+    }
 
+    // The board (the DSP's ED / ARDY inputs, the ARDY glue, the wire fault)
+    // and the clock thread.
+    void build_board() {
+        const platform::island_config& config = m_config;
         for (const emif::ardy_fault& f : config.ardy_faults) m_glue.add(f);
         SC_METHOD(drive_bus);
         sensitive << m_ce[0] << m_ce[1] << m_ce[2] << m_ce[3] << m_card_ed << m_card_ed_oe
@@ -206,15 +221,10 @@ class pins_island : public platform::island {
             dont_initialize();
         }
         for (int c = 0; c < 2; ++c) {
-            if (!wire[c]) continue;
+            if (!config.wire.enabled || config.wire.camera != c) continue;
             m_wire_camera = c;
             SC_METHOD(drive_wire);
-            sensitive << m_wires[c].pclk << m_wires[c].data;
-        }
-        if (config.test_delay_right_oe) {
-            SC_METHOD(delay_right_oe);
-            sensitive << m_mclk.posedge_event();
-            dont_initialize();
+            sensitive << m_wires[c].pclk.negedge_event() << m_wires[c].data;
         }
         SC_THREAD(run);
     }
@@ -228,7 +238,8 @@ class pins_island : public platform::island {
             if (!m_ce[i].read()) ce = i;
         const bool card = ce == 2 || ce == 3;
         m_bus_ardy.write(m_glue.bus_ardy(strobe_pins(), m_card_ardy.read(), m_engine));
-        m_bus_ed.write(card && m_card_ed_oe.read() ? m_card_ed.read() : 0u);
+        m_bus_ed.write(
+            platform::bus_ed_from_card(card ? 2 : -1, m_card_ed_oe.read(), m_card_ed.read()));
     }
 
     // The DSP's pins the board glue looks at, as the signals carry them now.
@@ -248,23 +259,17 @@ class pins_island : public platform::island {
         m_glue_edges.write(m_glue_edges.read() + 1);
     }
 
-    // A stuck DATA bit on the wire to the card (platform::wire_fault), from
-    // the first word a falling edge at or after from_tick drives.
+    // A stuck DATA bit on the wire to the card (platform::wire_fault): the
+    // sensor drives DATA at its falling edge, so the tick of a fall or a
+    // DATA change is the tick the word was driven.
     void drive_wire() {
         const sensor_wires& w = m_wires[m_wire_camera];
-        const platform::wire_fault& f = m_config.wire;
-        uint32_t data = w.data.read();
-        if (emif::tick_at_or_before(sc_core::sc_time_stamp()) >= f.from_tick) {
-            const uint32_t mask = 1u << f.bit;
-            data = f.value ? (data | mask) : (data & ~mask);
-        }
-        m_wires[m_wire_camera].card_data.write(data);
+        const uint8_t data = static_cast<uint8_t>(w.data.read() & sensor::pin_word::data_mask);
+        const simtime::ticks driven = emif::tick_at_or_before(sc_core::sc_time_stamp());
+        m_wires[m_wire_camera].card_data.write(m_config.wire.on_wire(m_wire_camera, data, driven));
     }
 
-    // Test only: the right sensor samples OE one pixel clock late.
-    void delay_right_oe() { m_oe_right.write(m_oe.read()); }
-
-    // ---- the clocks and the observers -----------------------------------------------------
+    // ---- the clocks and the observer --------------------------------------------------------
     void run() {
         // Reset as the fast island does before its first edge: clocks low,
         // rst_n 1 -> 0 -> 1 (asynchronous), everything settled.
@@ -273,11 +278,9 @@ class pins_island : public platform::island {
         for (int i = 0; i < 3; ++i) sc_core::wait(sc_core::SC_ZERO_TIME);
         m_rst_n.write(true);
         for (int i = 0; i < 3; ++i) sc_core::wait(sc_core::SC_ZERO_TIME);
-        m_card_out_seen = card_outputs();
-        m_pin_hasher.set_initial(pin_group_card_out, m_card_out_seen);
-        if (m_trace) trace_card_pins(-1);  // the values before the first edge, as the fast island
-        m_access_seen[0] = m_engine.stats().accesses[0];
-        m_access_seen[1] = m_engine.stats().accesses[1];
+        m_observer.set_initial_card_outputs(card().packed_outputs());
+        // The values before the first edge, as the fast island's.
+        if (m_tracer.active()) trace_card(-1);
 
         simtime::clock_cursor& pclk = m_pclk_cursor;
         simtime::clock_cursor& eclk = m_eclk_cursor;
@@ -291,7 +294,7 @@ class pins_island : public platform::island {
             if (at > now) sc_core::wait(at - now);
             // Every delta of the previous tick has run: observe it.
             if (m_pending_tick >= 0) observe(m_pending_tick);
-            while (t >= m_next_boundary) close_period();
+            m_observer.close_periods_through(t);
 
             m_edges = 0;
             if (pclk.tick() == t) {
@@ -313,10 +316,20 @@ class pins_island : public platform::island {
         }
     }
 
-    uint64_t card_outputs() const {
-        return platform::pack_card_outputs(m_oe.read(), m_card_ardy.read(), m_card_ed_oe.read(),
-                                           ext_int4.read(), ext_int5.read(), ext_int6.read(),
-                                           m_card_ed.read());
+    // The card's signals as settled now.
+    card_signals card() const {
+        card_signals s;
+        s.sensor_oe = m_oe.read();
+        s.ext_int[0] = ext_int4.read();
+        s.ext_int[1] = ext_int5.read();
+        s.ext_int[2] = ext_int6.read();
+        s.slave_ardy = m_card_ardy.read();
+        s.slave_ed_oe = m_card_ed_oe.read();
+        s.slave_ed = m_card_ed.read();
+        s.fifo_level[0] = m_fifo_level[0].read();
+        s.fifo_level[1] = m_fifo_level[1].read();
+        platform::read_card_internals(*m_card, &s);
+        return s;
     }
 
     emif::emif_pins dsp_pins() const {
@@ -332,164 +345,46 @@ class pins_island : public platform::island {
         return p;
     }
 
-    // The settled pins of tick t, observed as the fast island's advance() does.
+    // The settled pins of tick t, fed to the observer in the fast island's order.
     void observe(ticks t) {
-        const bool hash = m_config.hash_pins;
-        if (m_trace && trace_edges_at(t)) trace_tick(t);
+        if (m_tracer.active() && m_tracer.edges_at(t)) trace_tick(t);
         if (m_edges & pclk_fall) {
-            for (int c = 0; c < 2; ++c) record_sensor_word(c, m_wires[c].word(), t);
+            for (int c = 0; c < 2; ++c) m_observer.sensor_word(c, m_wires[c].word(), t);
         }
+        const card_signals settled = card();
         if (m_edges & pclk_rise) {
-            ++m_stats.pclk_edges;
-            const bool oe = m_oe.read();
-            if (oe != m_oe_level) {
-                m_oe_level = oe;
-                m_events.add_pin_event(t, platform::event_kind::oe, oe ? 1 : 0);
-            }
-            const auto& root = *m_card->rootp;
-            const uint32_t level[2] = {root.card_top__DOT__l_wr_level_unused,
-                                       root.card_top__DOT__r_wr_level_unused};
-            const bool overflow[2] = {root.card_top__DOT__l_overflow != 0,
-                                      root.card_top__DOT__r_overflow != 0};
-            for (int c = 0; c < 2; ++c) {
-                if (level[c] > m_current.fifo_peak_words[c])
-                    m_current.fifo_peak_words[c] = level[c];
-                if (overflow[c] && !m_fifo_overflow_seen[c]) m_current.fifo_overflow[c] = true;
-                m_fifo_overflow_seen[c] = overflow[c];
-            }
+            m_observer.pclk_rise(t, settled.sensor_oe, settled.fifo_level, settled.fifo_overflow);
         }
         if (m_edges & eclk_rise) {
-            ++m_stats.eclk_edges;
-            const uint8_t irq = static_cast<uint8_t>(
-                (ext_int4.read() ? 1 : 0) | (ext_int5.read() ? 2 : 0) | (ext_int6.read() ? 4 : 0));
-            if (irq != m_irq) {
-                const unsigned rose = irq & ~m_irq & 7u;
-                const unsigned fell = m_irq & ~irq & 7u;
-                for (int n = 0; n < 3; ++n) {
-                    if ((rose >> n) & 1u) {
-                        m_irq_rises[n].push_back(t);
-                        m_events.add_pin_event(t, platform::event_kind::irq,
-                                               static_cast<uint8_t>(4 + n), 1);
-                    } else if ((fell >> n) & 1u) {
-                        m_events.add_pin_event(t, platform::event_kind::irq,
-                                               static_cast<uint8_t>(4 + n), 0);
-                    }
-                }
-                m_irq = irq;
-                ++m_stats.stops_irq;
-            }
-            const emif::emif_stats& bus = m_engine.stats();
-            if (bus.accesses[0] != m_access_seen[0] || bus.accesses[1] != m_access_seen[1]) {
-                if (bus.accesses[1] != m_access_seen[1]) m_edma_done.push_back(t);
-                m_access_seen[0] = bus.accesses[0];
-                m_access_seen[1] = bus.accesses[1];
-                ++m_stats.stops_bus;
-            }
+            m_observer.eclk_rise(t, settled.irq_bits());
+            m_observer.bus_completed(t);
         }
-        if (hash) {
-            const uint64_t dsp = pack_dsp_pins(dsp_pins());
-            if (dsp != m_dsp_seen) {
-                m_dsp_seen = dsp;
-                mix_pin(t, pin_group_emif_dsp, dsp);
-            }
-            const uint64_t out = card_outputs();
-            if (out != m_card_out_seen) {
-                m_card_out_seen = out;
-                mix_pin(t, pin_group_card_out, out);
-            }
-            m_pin_hasher.flush_before(t + 1);
-        }
-        m_last_tick = t;
+        m_observer.dsp_pins(t, dsp_pins());
+        m_observer.card_outputs(t, settled.packed_outputs());
+        m_observer.flush_hash_before(t + 1);
     }
 
-    // ---- pin trace (pin_trace.h): the fast island's signals, from the sc_signals ----------
-    // The same declarations and values before the first edge as the fast
-    // island (island_sc.cpp); then, per observed tick, every signal's
-    // settled value (trace_set drops repeats), so each change is reported at
-    // the tick it settled, as the fast island reports it.
-    void trace_declare() {
-        using platform::trace_pin;
-        m_trace = m_config.trace;
-        for (int i = 0; i < platform::trace_pin_count; ++i)
-            m_trace_id[i] = m_trace->declare(platform::trace_pin_signal(static_cast<trace_pin>(i)));
-        for (int c = 0; c < 2; ++c) {
-            const int base = c == 0 ? 0 : static_cast<int>(trace_pin::r_pclk);
-            for (int k = 0; k < 5; ++k) trace_set(-1, static_cast<trace_pin>(base + k), 0);
-        }
-        trace_set(-1, trace_pin::card_pclk, 0);
-        trace_set(-1, trace_pin::eclkout, 0);
-        trace_emif(-1, m_engine.pins());
-        trace_set(-1, trace_pin::irq_taken, 0);
-        trace_set(-1, trace_pin::cpu_asleep, 0);
-        trace_set(-1, trace_pin::fw_stage, platform::stage_idle);
-        trace_set(-1, trace_pin::fw_tracker, 0);
-    }
-
-    // The firmware's timeline events of ticks (m_fw_traced_to, upto], in
-    // order. By tick, not by index: the pin events this arrangement inserts
-    // (timeline::add_pin_event) may land before events already traced.
-    void trace_firmware_through(ticks upto) {
-        const std::vector<platform::timeline_event>& events = m_events.events();
-        if (events.empty() || events.back().tick <= m_fw_traced_to) return;
-        auto it =
-            std::upper_bound(events.begin(), events.end(), m_fw_traced_to,
-                             [](ticks t, const platform::timeline_event& e) { return t < e.tick; });
-        for (; it != events.end() && it->tick <= upto; ++it) trace_firmware_event(*it);
-        m_fw_traced_to = std::max(m_fw_traced_to, std::min(upto, events.back().tick));
-    }
-
+    // ---- pin trace: every signal's settled value per observed tick (the
+    // tracer drops repeats), so each change is reported at the tick it
+    // settled, as the fast island reports it.
     void trace_tick(ticks t) {
-        using platform::trace_pin;
         // Every firmware event up to t exists: the CPU added them at or before time t.
-        trace_firmware_through(t);
-        for (int c = 0; c < 2; ++c) {
-            const int base = c == 0 ? 0 : static_cast<int>(trace_pin::r_pclk);
-            const sensor_wires& w = m_wires[c];
-            trace_set(t, static_cast<trace_pin>(base), w.pclk.read());
-            trace_set(t, static_cast<trace_pin>(base + 1), w.vsync.read());
-            trace_set(t, static_cast<trace_pin>(base + 2), w.href.read());
-            trace_set(t, static_cast<trace_pin>(base + 3), w.valid.read());
-            trace_set(t, static_cast<trace_pin>(base + 4),
-                      w.data.read() & sensor::pin_word::data_mask);
-        }
-        trace_set(t, trace_pin::card_pclk, m_mclk.read());
-        trace_set(t, trace_pin::eclkout, m_eclk.read());
-        trace_emif(t, dsp_pins());
-        trace_card_pins(t);
+        m_tracer.firmware_up_to(t);
+        for (int c = 0; c < 2; ++c)
+            m_tracer.sensor_pins(c, t, m_wires[c].pclk.read(), m_wires[c].word());
+        m_tracer.set(t, trace_pin::card_pclk, m_mclk.read());
+        m_tracer.set(t, trace_pin::eclkout, m_eclk.read());
+        m_tracer.emif(t, dsp_pins());
+        trace_card(t);
     }
 
-    // As island::trace_card, from the signals and the --sc card's internals.
-    void trace_card_pins(ticks t) {
-        using platform::trace_pin;
-        const auto& root = *m_card->rootp;
-        trace_set(t, trace_pin::l_oe, m_oe.read());
-        trace_set(t, trace_pin::r_oe,
-                  m_config.test_delay_right_oe ? m_oe_right.read() : m_oe.read());
-        trace_set(t, trace_pin::ext_int4, ext_int4.read());
-        trace_set(t, trace_pin::ext_int5, ext_int5.read());
-        trace_set(t, trace_pin::ext_int6, ext_int6.read());
-        trace_set(t, trace_pin::slave_ardy, m_card_ardy.read());
-        trace_set(t, trace_pin::ardy, m_bus_ardy.read());
-        trace_set(t, trace_pin::slave_ed_oe, m_card_ed_oe.read());
-        if (m_card_ed_oe.read()) {
-            trace_set(t, trace_pin::slave_ed, m_card_ed.read());
-        } else {
-            trace_release(t, trace_pin::slave_ed);
-        }
-        if (m_dsp_ed_oe.read()) {
-            trace_set(t, trace_pin::ed, m_dsp_ed.read());
-        } else if (m_card_ed_oe.read()) {
-            trace_set(t, trace_pin::ed, m_card_ed.read());
-        } else {
-            trace_release(t, trace_pin::ed);
-        }
-        trace_card_internals(t, root);
-    }
+    void trace_card(ticks t) { m_tracer.card(t, card(), m_bus_ardy.read(), dsp_pins()); }
 
     static constexpr uint8_t pclk_rise = 1, pclk_fall = 2, eclk_rise = 4;
 
+    platform::pin_tracer& m_tracer;
     sig_bool m_mclk, m_eclk, m_rst_n;
-    sig_bool m_oe, m_oe_right;
+    sig_bool m_oe;
     sensor_wires m_wires[2];
     sig_bool m_ce[emif::ce_count];
     sig_u32 m_ea, m_be_n, m_dsp_ed;
@@ -498,8 +393,9 @@ class pins_island : public platform::island {
     sig_bool m_card_ed_oe, m_card_ardy;
     sig_u32 m_bus_ed;
     sig_bool m_bus_ardy;
-    emif::ardy_glue m_glue;  // the board between the card's ARDY and the DSP's
-    sig_u32 m_glue_edges;    // ECLK rises the glue clocked
+    emif::ardy_glue m_glue;   // the board between the card's ARDY and the DSP's
+    sig_u32 m_glue_edges;     // ECLK rises the glue clocked
+    sig_u32 m_fifo_level[2];  // the card's debug outputs
 
     std::unique_ptr<sensor::sensor_sc> m_sensor_sc[2];
     std::unique_ptr<emif::emif_pins_sc> m_emif;
@@ -510,10 +406,6 @@ class pins_island : public platform::island {
     bool m_finished = false;
     ticks m_pending_tick = -1;  // the tick whose edges were written last, not yet observed
     uint8_t m_edges = 0;        // which edges that tick had
-    bool m_oe_level = false;
-    uint64_t m_dsp_seen = 0;
-    uint64_t m_access_seen[2] = {};
-    ticks m_fw_traced_to = -1;  // firmware events through this tick are traced
 };
 
 }  // namespace

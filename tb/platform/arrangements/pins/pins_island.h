@@ -21,19 +21,17 @@
 // were before it and its writes appear one delta later; sensors drive their
 // pins at their falling edge; the EMIF engine's new pins reach the card a
 // delta after the edge and the card's combinational ED/ARDY follow. That is
-// the order the fast island implements in C++ (tb/platform/island_sc.h).
+// the order the fast island implements in C++ (arrangements/fast/).
 //
 // Observers. The clock thread, woken for the next half-edge, first looks at
-// the settled signals of the tick before (every delta of that tick has run):
-// the sensors' words, the EMIF pins and the card's outputs go to the same
-// canonical pin hash (pin_hash.h); OE, interrupt and frame events to the
-// timeline at the place the fast island puts them (timeline::add_pin_event);
-// FIFO levels, bus completions and the frame recorder as the island's
-// observers do. The island base class holds them, so scoreboard, budget and
-// report read either arrangement the same way.
+// the settled signals of the tick before (every delta of that tick has run)
+// and feeds them to the island's observer (island/island_observer.h), the
+// same component the fast island feeds: OE, interrupt and frame events are
+// placed on the timeline where the fast island puts them
+// (timeline::add_pin_event).
 //
 // Pin trace (pin_trace.h, --vcd): the same signals and values as the fast
-// island, read from the settled signals of each tick by the same observer,
+// island, read from the settled signals of each tick by the same tracer,
 // only for the ticks from the warm-up before the window to its end.
 //
 // Not supported: a pclk_drift fault (a sensor off the master clock has edges
@@ -42,7 +40,9 @@
 
 #include <memory>
 
-#include "tb/platform/island_sc.h"
+#include "model/emif/emif_async_master.h"
+#include "model/sensor/frame_source.h"
+#include "tb/platform/island/island.h"
 
 namespace pins {
 

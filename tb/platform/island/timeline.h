@@ -23,8 +23,7 @@ enum class event_kind : uint8_t {
     firmware,      // a: dsp::firmware_event, b: pair, c: value
     cpu_sleep,     // the CPU waits for an interrupt
     cpu_wake,      // a: interrupt taken (-1 as 255: stop)
-    result,  // a: dsp::tracker_state after the pair, b: pair (from pair_processed), c: 1 with a 3D
-             // point
+    result,        // a: dsp::tracker_state after the pair, b: pair, c: 1 with a 3D point
     // An injected fault took effect (tb/faults, docs/faults.md): a: its index
     // in the run's --fault list, b: faults::fault_type, c: the frame it hit
     // (sensor truth index, or sync period for bus / CPU faults). Inserted
@@ -52,7 +51,7 @@ class timeline {
     }
     // A pin event (oe, irq, sensor_frame) that an arrangement learns after
     // other processes may have added events at its tick (the pin-level
-    // arrangement, tb/pins): placed where the fast island adds it, which
+    // arrangement, tb/platform/arrangements/pins): placed where the fast island adds it, which
     // steps a tick before any other process acts at it. Order: events of
     // earlier ticks, then the tick's pin events (sensor_frame, then oe, then
     // irq, each in the order added), then the other processes' events.
@@ -72,12 +71,6 @@ class timeline {
         m_events.insert(m_events.begin() + static_cast<std::ptrdiff_t>(at), {tick, kind, a, b, c});
     }
     const std::vector<timeline_event>& events() const { return m_events; }
-    // The last event of a kind (to complete it), nullptr if none.
-    timeline_event* last(event_kind kind) {
-        for (size_t i = m_events.size(); i-- > 0;)
-            if (m_events[i].kind == kind) return &m_events[i];
-        return nullptr;
-    }
     // Inserts an event at its place in time, after the events of its tick:
     // markers known only after the run (a fault's onset).
     void insert(simtime::ticks tick, event_kind kind, uint8_t a = 0, uint32_t b = 0,

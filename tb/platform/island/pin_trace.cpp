@@ -1,4 +1,4 @@
-#include "tb/platform/pin_trace.h"
+#include "tb/platform/island/pin_trace.h"
 
 namespace platform {
 

@@ -1,4 +1,4 @@
-#include "tb/platform/timeline.h"
+#include "tb/platform/island/timeline.h"
 
 #include "dsp/controller.h"
 #include "dsp/hal.h"

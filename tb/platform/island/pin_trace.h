@@ -1,8 +1,8 @@
 // Pin tracing (docs/waveforms.md): a sink that sees every traced signal of a
 // run change, with its exact tick (1 tick = 1/18 ns), on ONE timeline. It is
-// arrangement-neutral: the fast island (tb/platform/island_sc.cpp) feeds it
-// from its C++ edge loop, the literal pin-level arrangement (sc_signals) can
-// feed it from value-change callbacks; both must declare the same signals
+// arrangement-neutral: both arrangements feed it through the island's
+// pin_tracer (pin_tracer.h), the fast island from its C++ edge loop, the
+// pin-level one from the settled sc_signals; both declare the same signals
 // (pin_trace_signals below) and report the same changes.
 //
 // Contract for a source (what a sink may rely on):
@@ -19,8 +19,8 @@
 //      closed).
 // Cost: a source with no sink attached does nothing per edge beyond a null
 // pointer test (measured in docs/waveforms.md). With a sink, only the edges
-// from a short warm-up before `window.from` (island_sc.cpp,
-// trace_edges_from) to `window.to` make trace calls: a window costs about
+// from a short warm-up before `window.from` (pin_tracer.h) to `window.to`
+// make trace calls: a window costs about
 // its own length, not the whole run.
 #pragma once
 

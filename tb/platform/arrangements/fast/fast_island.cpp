@@ -1,0 +1,370 @@
+#include "tb/platform/arrangements/fast/fast_island.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "model/emif/ardy_glue.h"
+#include "model/emif/emif_tlm_target_sc.h"
+#include "model/sensor/sensor_core.h"
+#include "tb/platform/island/card_signals.h"
+
+// verilated.h, seeing SystemC, expects sc_time_stamp in the global namespace
+// (where <systemc.h> would put it). The card is --cc: it never calls it.
+using sc_core::sc_time_stamp;
+#include "Vcard.h"
+#include "Vcard___024root.h"
+#include "verilated.h"
+
+namespace fast {
+
+namespace {
+
+using platform::card_signals;
+using simtime::ticks;
+
+// The card's EMIF inputs (CE2/CE3, strobes, EA, BE, ED) as the engine drives them.
+void drive_card_emif_inputs(Vcard& d, const emif::emif_pins& p) {
+    d.ce2_n = p.ce_n[2];
+    d.ce3_n = p.ce_n[3];
+    d.aoe_n = p.aoe_n;
+    d.are_n = p.are_n;
+    d.awe_n = p.awe_n;
+    d.ea = p.ea;
+    d.be_n = p.be_n;
+    d.ed_in = p.ed_out;
+}
+
+card_signals card_signals_of(const Vcard& d) {
+    card_signals s;
+    s.sensor_oe = d.sensor_oe != 0;
+    s.ext_int[0] = d.ext_int4 != 0;
+    s.ext_int[1] = d.ext_int5 != 0;
+    s.ext_int[2] = d.ext_int6 != 0;
+    s.slave_ardy = d.ardy != 0;
+    s.slave_ed_oe = d.ed_oe != 0;
+    s.slave_ed = d.ed_out;
+    s.fifo_level[0] = d.dbg_fifo_level_l;
+    s.fifo_level[1] = d.dbg_fifo_level_r;
+    platform::read_card_internals(d, &s);
+    return s;
+}
+
+// The card's outputs as the pin hash packs them (pin_hash.h).
+uint64_t card_outputs_of(const Vcard& d) {
+    return platform::pack_card_outputs(d.sensor_oe, d.ardy, d.ed_oe, d.ext_int4, d.ext_int5,
+                                       d.ext_int6, d.ed_out);
+}
+
+class fast_island final : public platform::island {
+  public:
+    SC_HAS_PROCESS(fast_island);
+    fast_island(sc_core::sc_module_name name, const platform::island_config& config,
+                sensor::frame_source& source, emif::emif_async_master& engine,
+                platform::timeline& events);
+    ~fast_island() override { m_card->final(); }
+    void finish() override { m_observer.finish(); }
+
+  private:
+    // The clocks that rise at the next tick.
+    struct edges {
+        ticks t = 0;
+        bool pclk = false, eclk = false, sensor[2] = {};
+    };
+    // A sensor's word, held from its rising edge until it reaches the card.
+    struct pending_word {
+        uint16_t bits = 0;
+        ticks fall = 0;
+        bool applied = true;
+    };
+
+    void run();
+    void reset_card();
+    // Steps every edge at or before `limit`; stops after an edge where a bus
+    // access completed or an interrupt pin changed (*stopped set). Returns
+    // the tick of the last edge stepped.
+    ticks advance(ticks limit, bool* stopped);
+    edges next_edges() const;
+    // 1. Every core samples its inputs as they were before the tick.
+    emif::emif_inputs sample_bus(const edges& e);
+    void clock_rising(const edges& e, bool trace);
+    // 2. Then the outputs of this tick.
+    void card_pclk_outputs(ticks t);
+    bool eclk_outputs(ticks t, const emif::emif_inputs& in, bool trace);
+    void advance_pclk(bool trace);
+    void deliver_sensor_words();
+    void settle_card(ticks t, bool trace);
+    void step_sensor(int camera, bool oe);
+    void apply_sensor_word(int camera, const pending_word& w);
+    void trace_card(ticks t);
+
+    emif::ardy_glue m_glue;  // the board between the card's ARDY and the DSP's
+    std::unique_ptr<VerilatedContext> m_context;
+    std::unique_ptr<Vcard> m_card;
+    std::unique_ptr<sensor::sensor_core> m_sensor[2];
+    platform::pin_tracer& m_tracer;
+    bool m_tracing;
+
+    simtime::clock_cursor m_pclk;  // on the next rising half-edge
+    simtime::clock_cursor m_eclk;
+    ticks m_last_tick = -1;
+    pending_word m_pending[2];
+    uint8_t m_irq = 0;  // EXT_INT4..6 as bits 0..2, as last stepped
+    uint8_t m_irq_written = 0;
+};
+
+fast_island::fast_island(sc_core::sc_module_name name, const platform::island_config& config,
+                         sensor::frame_source& source, emif::emif_async_master& engine,
+                         platform::timeline& events)
+    : platform::island(name, config, engine, events, platform::event_order::appended),
+      m_context(std::make_unique<VerilatedContext>()),
+      m_tracer(m_observer.tracer()),
+      m_tracing(m_tracer.active()),
+      m_pclk(config.pclk),
+      m_eclk(engine.config().eclk) {
+    m_card = std::make_unique<Vcard>(m_context.get(), "card");
+    for (const emif::ardy_fault& f : config.ardy_faults) m_glue.add(f);
+    for (int c = 0; c < 2; ++c) {
+        m_sensor[c] = std::make_unique<sensor::sensor_core>(
+            config.profile, c == 0 ? scene::camera_id::left : scene::camera_id::right, source,
+            config.sensor[c]);
+        for (const sensor::fault& f : config.faults[c]) m_sensor[c]->add_fault(f);
+        m_observer.frames().attach(c, *m_sensor[c]);
+    }
+    // The engine must be at its first edge: the island owns its stepping.
+    m_eclk.reset(engine.config().eclk, 2 * engine.next_edge());
+    reset_card();
+    m_tracer.begin(engine.pins());
+    if (m_tracing) trace_card(-1);
+    SC_THREAD(run);
+}
+
+void fast_island::reset_card() {
+    Vcard& d = *m_card;
+    d.pclk = 0;
+    d.eclk = 0;
+    d.rst_n = 1;
+    const emif::emif_pins& p = m_engine.pins();
+    drive_card_emif_inputs(d, p);
+    d.eval();
+    d.rst_n = 0;  // a falling edge: the asynchronous resets act
+    d.eval();
+    d.rst_n = 1;
+    d.eval();
+    m_observer.set_initial_dsp_pins(p);
+    m_observer.set_initial_card_outputs(card_outputs_of(d));
+}
+
+// ---- the SystemC side ------------------------------------------------------------------------
+void fast_island::run() {
+    const sc_core::sc_time quantum = emif::time_of_tick(m_config.quantum);
+    for (;;) {
+        // Everything else at this time acts first: its bus requests are then
+        // queued before any edge after now is stepped.
+        while (sc_core::sc_pending_activity_at_current_time()) sc_core::wait(sc_core::SC_ZERO_TIME);
+        const sc_core::sc_time now = sc_core::sc_time_stamp();
+        const sc_core::sc_time ahead = std::min(quantum, sc_core::sc_time_to_pending_activity());
+        const ticks limit = std::min(m_config.end, emif::tick_at_or_before(now + ahead));
+        if (limit < 0 || (m_last_tick >= m_config.end && limit == m_config.end)) {
+            sc_core::wait();  // past the end of the run: nothing more to step
+            continue;
+        }
+
+        const auto wall0 = std::chrono::steady_clock::now();
+        bool stopped = false;
+        const ticks last = advance(limit, &stopped);
+        m_observer.stats().wall_s +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+
+        const sc_core::sc_time wake = emif::time_of_tick(stopped ? last : limit);
+        ++m_observer.stats().syncs;
+        sc_core::wait(wake > now ? wake - now : sc_core::SC_ZERO_TIME);
+        if (m_irq != m_irq_written) {
+            ext_int4.write((m_irq & 1) != 0);
+            ext_int5.write((m_irq & 2) != 0);
+            ext_int6.write((m_irq & 4) != 0);
+            m_irq_written = m_irq;
+        }
+    }
+}
+
+// ---- the C++ island --------------------------------------------------------------------------
+ticks fast_island::advance(ticks limit, bool* stopped) {
+    // The firmware's events up to now come before any edge after now.
+    if (m_tracing) m_tracer.firmware_up_to(INT64_MAX);
+    for (;;) {
+        const edges e = next_edges();
+        if (e.t > limit) break;
+        const bool trace = m_tracing && m_tracer.edges_at(e.t);
+        m_observer.close_periods_through(e.t);
+        if (trace) m_tracer.flush(e.t);
+
+        const emif::emif_inputs in = sample_bus(e);
+        clock_rising(e, trace);
+        bool stop = false;
+        if (e.pclk) card_pclk_outputs(e.t);
+        if (e.eclk) stop = eclk_outputs(e.t, in, trace);
+        if (e.pclk) advance_pclk(trace);
+        deliver_sensor_words();
+        if (e.pclk || e.eclk) settle_card(e.t, trace);
+        m_last_tick = e.t;
+        if (stop) {
+            *stopped = true;
+            break;
+        }
+    }
+    // Every change still to come is at a later tick (a sensor's word at its
+    // fall after a later rise, other pins at later edges).
+    m_observer.flush_hash_before(m_last_tick + 1);
+    // Nothing else can report a change before the time the island waits for.
+    if (m_tracing) m_tracer.flush(*stopped ? m_last_tick : limit);
+    return m_last_tick;
+}
+
+fast_island::edges fast_island::next_edges() const {
+    const ticks tp = m_pclk.tick();
+    const ticks te = m_eclk.tick();
+    const ticks tl = m_sensor[0]->next_rise_tick();
+    const ticks tr = m_sensor[1]->next_rise_tick();
+    edges e;
+    e.t = std::min(std::min(tp, te), std::min(tl, tr));
+    e.pclk = tp == e.t;
+    e.eclk = te == e.t;
+    e.sensor[0] = tl == e.t;
+    e.sensor[1] = tr == e.t;
+    return e;
+}
+
+// The engine's ED and ARDY inputs before an ECLK edge: ARDY through the
+// board glue (emif-wait, model/emif/ardy_glue.h), ED from the card.
+emif::emif_inputs fast_island::sample_bus(const edges& e) {
+    emif::emif_inputs in;
+    if (!e.eclk) return in;
+    const Vcard& d = *m_card;
+    const emif::emif_pins& before = m_engine.pins();
+    in.ardy = m_glue.bus_ardy(before, d.ardy != 0, m_engine);
+    in.ed_in = platform::bus_ed_from_card(before.active_ce(), d.ed_oe != 0, d.ed_out);
+    m_glue.clock(before, e.t);
+    return in;
+}
+
+// The card's flops of both domains sample in one eval; the sensors sample OE.
+void fast_island::clock_rising(const edges& e, bool trace) {
+    Vcard& d = *m_card;
+    const bool oe_before = d.sensor_oe != 0;
+    if (e.pclk) d.pclk = 1;
+    if (e.eclk) d.eclk = 1;
+    if (e.pclk || e.eclk) d.eval();
+    for (int c = 0; c < 2; ++c) {
+        if (!e.sensor[c]) continue;
+        step_sensor(c, oe_before);
+        if (trace) m_tracer.sensor_edge(c, e.t, m_pending[c].bits, m_pending[c].fall);
+    }
+}
+
+void fast_island::card_pclk_outputs(ticks t) {
+    const Vcard& d = *m_card;
+    const auto& root = *d.rootp;
+    const uint32_t level[2] = {d.dbg_fifo_level_l, d.dbg_fifo_level_r};
+    const bool overflow[2] = {root.card_top__DOT__l_overflow != 0,
+                              root.card_top__DOT__r_overflow != 0};
+    m_observer.pclk_rise(t, d.sensor_oe != 0, level, overflow);
+}
+
+// Interrupt pins, the engine's step, the card's new EMIF inputs; true to
+// stop after this edge.
+bool fast_island::eclk_outputs(ticks t, const emif::emif_inputs& in, bool trace) {
+    Vcard& d = *m_card;
+    m_irq =
+        static_cast<uint8_t>((d.ext_int4 ? 1 : 0) | (d.ext_int5 ? 2 : 0) | (d.ext_int6 ? 4 : 0));
+    bool stop = m_observer.eclk_rise(t, m_irq);
+    m_engine.step(in);
+    if (m_observer.bus_completed(t)) stop = true;
+    const emif::emif_pins& p = m_engine.pins();
+    drive_card_emif_inputs(d, p);
+    m_observer.dsp_pins(t, p);
+    m_eclk.advance();
+    if (trace) {
+        m_tracer.set(t, platform::trace_pin::eclkout, 1);
+        m_tracer.defer(m_eclk.tick(), platform::trace_pin::eclkout, 0);
+        m_tracer.emif(t, p);
+    }
+    m_eclk.advance();
+    return stop;
+}
+
+void fast_island::advance_pclk(bool trace) {
+    const ticks t = m_pclk.tick();
+    m_pclk.advance();
+    if (trace) {
+        m_tracer.set(t, platform::trace_pin::card_pclk, 1);
+        m_tracer.defer(m_pclk.tick(), platform::trace_pin::card_pclk, 0);
+    }
+    m_pclk.advance();
+}
+
+// A sensor word reaches the card's inputs if its falling edge comes before
+// the card's next rising edge (always, on the master clock).
+void fast_island::deliver_sensor_words() {
+    for (int c = 0; c < 2; ++c) {
+        pending_word& w = m_pending[c];
+        if (!w.applied && w.fall < m_pclk.tick()) {
+            apply_sensor_word(c, w);
+            w.applied = true;
+        }
+    }
+}
+
+// The falling half of the card's clocks: its combinational outputs settle.
+void fast_island::settle_card(ticks t, bool trace) {
+    Vcard& d = *m_card;
+    d.pclk = 0;
+    d.eclk = 0;
+    d.eval();
+    m_observer.card_outputs(t, card_outputs_of(d));
+    if (trace) trace_card(t);
+}
+
+void fast_island::step_sensor(int c, bool oe) {
+    sensor::sensor_core& s = *m_sensor[c];
+    const uint16_t bits = s.step(oe).bits;
+    pending_word& w = m_pending[c];
+    w.bits = bits;
+    w.fall = s.last_fall_tick();
+    w.applied = false;
+    m_observer.sensor_word(c, bits, w.fall);
+}
+
+void fast_island::apply_sensor_word(int c, const pending_word& w) {
+    Vcard& d = *m_card;
+    const sensor::pin_word word{w.bits};
+    const uint8_t data = m_config.wire.on_wire(c, word.data(), w.fall);
+    if (c == 0) {
+        d.l_vsync = word.vsync();
+        d.l_href = word.href();
+        d.l_valid = word.valid();
+        d.l_data = data;
+    } else {
+        d.r_vsync = word.vsync();
+        d.r_href = word.href();
+        d.r_valid = word.valid();
+        d.r_data = data;
+    }
+}
+
+void fast_island::trace_card(ticks t) {
+    const Vcard& d = *m_card;
+    const emif::emif_pins& p = m_engine.pins();
+    m_tracer.card(t, card_signals_of(d), m_glue.bus_ardy(p, d.ardy != 0, m_engine), p);
+}
+
+}  // namespace
+
+std::unique_ptr<platform::island> make_fast_island(const char* name,
+                                                   const platform::island_config& config,
+                                                   sensor::frame_source& source,
+                                                   emif::emif_async_master& engine,
+                                                   platform::timeline& events) {
+    return std::make_unique<fast_island>(name, config, source, engine, events);
+}
+
+}  // namespace fast
