@@ -195,7 +195,10 @@ size_t edit_distance(const std::string& a, const std::string& b) {
     return row[b.size()];
 }
 
+// Whole numbers in full (a range 0..2147483647, not 0..2.14748e+09), others as
+// a stream shows them.
 std::string format_number(double v) {
+    if (std::floor(v) == v && std::fabs(v) < 1e15) return std::to_string(static_cast<long long>(v));
     std::ostringstream out;
     out << v;
     return out.str();
