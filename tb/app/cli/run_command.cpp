@@ -71,7 +71,8 @@ void print_error(const std::string& message) {
 
 run_command::run_command(CLI::App& app, std::vector<std::unique_ptr<run_extension>> extensions)
     : m_extensions(std::move(extensions)) {
-    m_run = app.add_subcommand("run", "one co-simulation: report.json, frames.csv, the verdict");
+    m_run = app.add_subcommand(
+        "run", "one co-simulation: report.json, report.txt, frames.csv, the verdict");
     run_options& o = m_options;
     CLI::Option* scenario =
         m_run->add_option("--scenario", o.scenario, "built-in scenario (stereosim scenarios)");
