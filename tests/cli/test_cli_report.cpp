@@ -154,6 +154,28 @@ json value_at(const json& row, const std::string& pointer) {
     }
 }
 
+// report.txt is the platform's text report, the same in two runs but for the
+// wall-time line; timeline.csv is in `with_csv` only (--timeline-csv).
+void expect_text_report_and_timeline(const std::string& with_csv, const std::string& without_csv,
+                                     const json& verdict) {
+    const std::string text = read_file(with_csv + "/report.txt");
+    EXPECT_EQ(text.rfind("== stereosim platform: DSK v1 (CPU 600 MHz, EMIF 100 MHz)", 0), 0u)
+        << text;
+    EXPECT_NE(text.find("\n-- pairs (times ms): pair ready"), std::string::npos);
+    EXPECT_NE(text.find(verdict == "within_budget" ? "\nVERDICT: within budget ("
+                                                   : "\nVERDICT: OVER BUDGET ("),
+              std::string::npos);
+    const auto without_wall = [](const std::string& t) {
+        const size_t run = t.find("\nrun: ");
+        return t.substr(0, run) + t.substr(t.find('\n', run + 1));
+    };
+    EXPECT_EQ(without_wall(text), without_wall(read_file(without_csv + "/report.txt")));
+    const std::string timeline = read_file(with_csv + "/timeline.csv");
+    EXPECT_EQ(timeline.rfind("tick,time_ns,kind,name,a,b,c\n", 0), 0u);
+    EXPECT_NE(timeline.find(",stage_begin,"), std::string::npos) << timeline.substr(0, 200);
+    EXPECT_FALSE(fs::exists(without_csv + "/timeline.csv"));
+}
+
 TEST(cli_report, schema_csv_verdict_and_reproducibility) {
     const std::string a = testing::TempDir() + "cli_report_a";
     const std::string b = testing::TempDir() + "cli_report_b";
@@ -307,24 +329,7 @@ TEST(cli_report, schema_csv_verdict_and_reproducibility) {
     EXPECT_EQ(mine.dump(2), other.dump(2));
     EXPECT_EQ(read_file(a + "/frames.csv"), read_file(b + "/frames.csv"));
 
-    // ---- report.txt: the platform's text report, the same but for the wall-time line
-    const std::string text = read_file(a + "/report.txt");
-    EXPECT_EQ(text.rfind("== stereosim platform: DSK v1 (CPU 600 MHz, EMIF 100 MHz)", 0), 0u)
-        << text;
-    EXPECT_NE(text.find("\n-- pairs (times ms): pair ready"), std::string::npos);
-    EXPECT_NE(text.find(report["verdict"] == "within_budget" ? "\nVERDICT: within budget ("
-                                                             : "\nVERDICT: OVER BUDGET ("),
-              std::string::npos);
-    const auto without_wall = [](const std::string& t) {
-        const size_t run = t.find("\nrun: ");
-        return t.substr(0, run) + t.substr(t.find('\n', run + 1));
-    };
-    EXPECT_EQ(without_wall(text), without_wall(read_file(b + "/report.txt")));
-    // ---- timeline.csv: only with --timeline-csv
-    const std::string timeline = read_file(a + "/timeline.csv");
-    EXPECT_EQ(timeline.rfind("tick,time_ns,kind,name,a,b,c\n", 0), 0u);
-    EXPECT_NE(timeline.find(",stage_begin,"), std::string::npos) << timeline.substr(0, 200);
-    EXPECT_FALSE(fs::exists(b + "/timeline.csv"));
+    expect_text_report_and_timeline(a, b, report["verdict"]);
     // No staging folder left behind.
     for (const auto& entry : fs::directory_iterator(a))
         EXPECT_EQ(entry.path().filename().string().rfind(".stereosim-staging", 0),
