@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "model/scene/ball_paths.h"
+
 namespace scene {
 
 ball_truth ball_truth_at(const stereo_rig& rig, const ball_desc& ball, double t_s) {
@@ -57,12 +59,8 @@ scenario default_scenario(int still_frames) {
     s.scene.background = background_desc::procedural_plane(procedural_texture_params{}, 5.0);
     ball_desc ball;
     ball.radius_m = 0.05;
-    // Frames 0 .. still_frames-1 all see the start position: the motion
-    // starts at the last still frame's time.
-    const double start = (still_frames > 0 ? still_frames - 1 : 0) * s.frame_period_s;
-    ball.path = trajectory::ballistic({-0.30, 0.0, 2.6}, {0.14, -2.0, -0.45}, start,
-                                      /*has_floor=*/true, /*bounce_y_m=*/0.30,
-                                      /*restitution=*/0.8);
+    ball.path = thrown_ball_path(2.6, ball.radius_m, /*speed=*/1.0,
+                                 motion_start_s(still_frames, s.frame_period_s));
     s.scene.balls.push_back(ball);
     s.frame_count = 100;
     return s;

@@ -7,10 +7,9 @@ namespace platform {
 dsp::controller_config pipeline_config(const platform_config& config) {
     dsp::controller_config c = platform::controller_config_for(config.scenario.scene.rig);
     c.cfa = config.profile.cfa;
-    if (config.track_search_radius > 0) c.track.search_radius = config.track_search_radius;
-    if (config.detect_threshold >= 0)
-        c.detect.threshold = static_cast<uint8_t>(config.detect_threshold);
-    if (config.stereo_method >= 0) c.method = static_cast<dsp::stereo_method>(config.stereo_method);
+    c.track.search_radius = config.track_search_radius;
+    c.detect.threshold = static_cast<uint8_t>(config.detect_threshold);
+    c.method = config.stereo_method;
     c.frame_memory = config.frame_memory;
     return c;
 }

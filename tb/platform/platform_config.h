@@ -55,13 +55,13 @@ struct platform_config {
     // ---- DSK and firmware --------------------------------------------------------------------
     c6416::dsk_profile dsk = c6416::dsk_v1();
     dsp::pipeline_mode mode = dsp::pipeline_mode::overlapped;
-    // Applied to the controller configuration made for the scenario's rig.
-    int track_search_radius = 0;  // 0: the firmware default (dsp::track_params)
-    // Further firmware tuning (the stereosim config keys firmware.*); -1: the
-    // firmware default (dsp::detect_params::threshold, controller_config::method).
-    int detect_threshold = -1;
-    int stereo_method = -1;  // a dsp::stereo_method value
-    uint32_t capture_cycles = 600;
+    // Firmware tuning (the stereosim config keys firmware.*), applied to the
+    // controller configuration made for the scenario's rig. The defaults are
+    // the firmware's own, read from its default configurations.
+    int track_search_radius = dsp::track_params{}.search_radius;
+    int detect_threshold = dsp::detect_params{}.threshold;
+    dsp::stereo_method stereo_method = dsp::controller_config{}.method;
+    uint32_t capture_cycles = static_cast<uint32_t>(dsp::control_program_config{}.capture_cycles);
     // Where the firmware's gray frames and packed mask live (the cost model's
     // SDRAM stalls, dsp::controller_config::frame_memory; L2 = the memory
     // plan of dsp/controller.h, the raw pairs always in SDRAM), and whether
@@ -71,12 +71,12 @@ struct platform_config {
     bool sdram_traffic_on_bus = true;
     // The firmware's card watchdog (timer 1): every period it reads the card's
     // event counters over the EMIF; 0: none.
-    uint32_t watchdog_ms = 500;
+    uint32_t watchdog_ms = dsp::control_program_config{}.watchdog_ms;
     // The card's RETRY_LIMIT and the firmware's give-up bound
     // (dsp::control_program_config, docs/fault-contract.md).
-    uint32_t card_retry_limit = 8;
+    uint32_t card_retry_limit = dsp::card_regs::retry_limit_reset;
     uint32_t card_start_timeout = dsp::card_regs::start_timeout_reset;  // lines
-    uint32_t hard_error_rearms = 1;
+    uint32_t hard_error_rearms = dsp::control_program_config{}.hard_error_rearms;
 
     // ---- faults beyond the sensors' (tb/faults, docs/faults.md) ------------------------------
     // Extra ARDY wait states on the card's CE spaces from a time on, and a

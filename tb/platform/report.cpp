@@ -17,6 +17,12 @@ constexpr double paper_track_ms = 1.756;
 constexpr double paper_stereo_sad_ms = 4.71;
 constexpr double paper_edge_xyz_ms = 5.0;
 
+// The card's CECTL on this DSK (docs/budget.md): v2 and v3 share one setting.
+uint32_t card_cectl(const platform_config& config) {
+    return config.dsk.version >= 2 ? dsp::c6416::emifa::dsk_cectl_card_v2
+                                   : dsp::c6416::emifa::dsk_cectl_card_v1;
+}
+
 }  // namespace
 
 run_figures figures_of(const platform_top& top) {
@@ -29,19 +35,18 @@ run_figures figures_of(const platform_top& top) {
 }
 
 capture_figures capture_closed_form(const platform_top& top) {
-    const uint32_t cectl = top.config().dsk.version >= 2 ? dsp::c6416::emifa::dsk_cectl_card_v2
-                                                         : dsp::c6416::emifa::dsk_cectl_card_v1;
-    return capture(top.config().profile.active_cols, top.config().profile.active_rows, cectl,
-                   top.engine().config());
+    return capture(top.config().profile.active_cols, top.config().profile.active_rows,
+                   card_cectl(top.config()), top.engine().config());
 }
 
-void print_report(std::FILE* out, const platform_top& top, const scoreboard_report& score,
-                  const budget_report& budget, bool per_pair) {
+namespace {
+
+// What ran and how fast: the DSK, the run's speed, the island's counters.
+void print_run(std::FILE* out, const platform_top& top) {
     const platform_config& config = top.config();
     const island& isl = top.cycle_island();
     const run_figures f = figures_of(top);
     const island_stats& st = isl.stats();
-
     std::fprintf(
         out, "== stereosim platform: DSK %s (CPU %.0f MHz, EMIF %.0f MHz), %s mode, seed %llu\n",
         config.dsk.name, config.dsk.cpu_hz / 1e6, config.dsk.emif_hz / 1e6,
@@ -64,8 +69,10 @@ void print_report(std::FILE* out, const platform_top& top, const scoreboard_repo
         static_cast<unsigned long long>(st.pin_changes), top.events().events().size(),
         static_cast<unsigned long long>(top.events().hash()));
     std::fprintf(out, "cycles from cost model %s\n", dsp::cost::model().id());
+}
 
-    // ---- sync -------------------------------------------------------------------------------
+// The OE starts against the sensors' timing truth, and the data path.
+void print_sync(std::FILE* out, const scoreboard_report& score) {
     std::fprintf(out,
                  "\n-- sync: %d OE restart(s); first pair in step: sensor frame %lld, FRAME_READY "
                  "at %.3f ms\n",
@@ -93,41 +100,41 @@ void print_report(std::FILE* out, const platform_top& top, const scoreboard_repo
         out,
         "-- data path: %d captured pairs, %d with both frames' checksums equal to the sensors'\n",
         score.integrity_checked, score.integrity_equal);
+}
 
-    // ---- pairs -------------------------------------------------------------------------------
-    if (per_pair) {
-        std::fprintf(
-            out,
-            "\n-- pairs (times ms): pair ready  frames(L,R) scene step captured processed  "
-            "state  box_err_px  depth_err_%%  latency capture processing\n");
-        for (size_t i = 0; i < score.pairs.size(); ++i) {
-            const pair_check& p = score.pairs[i];
-            const pair_budget& pb = budget.pairs[i];
-            std::fprintf(
-                out, "  %3u %9.3f  %3lld,%-3lld %4llu %s %s %s", p.pair, ticks_to_ms(p.ready),
-                static_cast<long long>(p.frame[0]), static_cast<long long>(p.frame[1]),
-                static_cast<unsigned long long>(p.scene_frame), p.truth_in_step ? "yes" : "NO ",
-                p.captured ? "yes" : "no ", p.processed ? "yes" : "no ");
-            if (p.processed) {
-                std::fprintf(out, "  %-6s", dsp::tracker_state_name(p.record.out.state));
-                if (p.errors.box_scored)
-                    std::fprintf(out, "  %6.2f", p.errors.box_centre_err_px);
-                else
-                    std::fprintf(out, "       -");
-                if (p.errors.point_scored)
-                    std::fprintf(out, "  %7.2f", p.errors.depth_err_pct);
-                else
-                    std::fprintf(out, "        -");
-                std::fprintf(out, "  %7.3f %7.3f %7.3f", p.latency_ms, pb.capture_ms,
-                             pb.processing_ms);
-            } else if (pb.capture_ms > 0.0) {
-                std::fprintf(out, "  %41s %7.3f", "", pb.capture_ms);
-            }
-            std::fprintf(out, "\n");
-        }
+// One row of the per-pair table; the firmware's columns only for a processed pair.
+void print_pair_row(std::FILE* out, const pair_check& p, const pair_budget& pb) {
+    std::fprintf(out, "  %3u %9.3f  %3lld,%-3lld %4llu %s %s %s", p.pair, ticks_to_ms(p.ready),
+                 static_cast<long long>(p.frame[0]), static_cast<long long>(p.frame[1]),
+                 static_cast<unsigned long long>(p.scene_frame), p.truth_in_step ? "yes" : "NO ",
+                 p.captured ? "yes" : "no ", p.processed ? "yes" : "no ");
+    if (p.processed) {
+        std::fprintf(out, "  %-6s", dsp::tracker_state_name(p.record.out.state));
+        if (p.errors.box_scored)
+            std::fprintf(out, "  %6.2f", p.errors.box_centre_err_px);
+        else
+            std::fprintf(out, "       -");
+        if (p.errors.point_scored)
+            std::fprintf(out, "  %7.2f", p.errors.depth_err_pct);
+        else
+            std::fprintf(out, "        -");
+        std::fprintf(out, "  %7.3f %7.3f %7.3f", p.latency_ms, pb.capture_ms, pb.processing_ms);
+    } else if (pb.capture_ms > 0.0) {
+        std::fprintf(out, "  %41s %7.3f", "", pb.capture_ms);
     }
+    std::fprintf(out, "\n");
+}
 
-    // ---- tracking -------------------------------------------------------------------------------
+void print_pairs(std::FILE* out, const scoreboard_report& score, const budget_report& budget) {
+    std::fprintf(out,
+                 "\n-- pairs (times ms): pair ready  frames(L,R) scene step captured processed  "
+                 "state  box_err_px  depth_err_%%  latency capture processing\n");
+    for (size_t i = 0; i < score.pairs.size(); ++i)
+        print_pair_row(out, score.pairs[i], budget.pairs[i]);
+}
+
+// The firmware's track against the scene's truth.
+void print_tracking(std::FILE* out, const scoreboard_report& score) {
     std::fprintf(
         out,
         "\n-- track: first motion scene frame %d, detected at %d; after it %d pairs: box "
@@ -137,8 +144,10 @@ void print_report(std::FILE* out, const platform_top& top, const scoreboard_repo
         score.box_within_3px, score.max_box_err_px, score.depth_within_2pct,
         score.depth_scored_1_3m, score.max_depth_err_pct, score.summary.rmse_x_mm,
         score.summary.rmse_y_mm, score.summary.rmse_z_mm);
+}
 
-    // ---- stages ---------------------------------------------------------------------------------
+// Each stage's modelled time, beside the paper's DSK figures.
+void print_stages(std::FILE* out, const budget_report& budget) {
     std::fprintf(
         out,
         "\n-- stages (modelled, %s at %.0f MHz): mean / max per processed pair, ms; total cycles\n",
@@ -159,8 +168,11 @@ void print_report(std::FILE* out, const platform_top& top, const scoreboard_repo
         "stereo_edge + xyz < %.1f ms (ours max %.3f)\n",
         paper_track_ms, budget.stage_ms_max[track], paper_stereo_sad_ms, budget.stage_ms_max[sad],
         paper_edge_xyz_ms, budget.stage_ms_max[edge] + budget.stage_ms_max[xyz]);
+}
 
-    // ---- closed forms ---------------------------------------------------------------------------
+// The measured capture beside the closed forms, and what the modes need.
+void print_closed_forms(std::FILE* out, const platform_top& top, const budget_report& budget) {
+    const platform_config& config = top.config();
     const capture_figures cf = capture_closed_form(top);
     const readout_figures rf = readout(config.profile);
     std::fprintf(
@@ -178,9 +190,7 @@ void print_report(std::FILE* out, const platform_top& top, const scoreboard_repo
     // The firmware's SDRAM lines on the bus (docs/budget.md): only when they
     // are replayed there.
     const traffic_figures tf =
-        firmware_traffic(config.profile.active_cols, config.profile.active_rows,
-                         config.dsk.version >= 2 ? dsp::c6416::emifa::dsk_cectl_card_v2
-                                                 : dsp::c6416::emifa::dsk_cectl_card_v1,
+        firmware_traffic(config.profile.active_cols, config.profile.active_rows, card_cectl(config),
                          top.engine().config());
     const double traffic_ms = config.sdram_traffic_on_bus ? tf.ms() : 0.0;
     std::fprintf(out,
@@ -198,9 +208,11 @@ void print_report(std::FILE* out, const platform_top& top, const scoreboard_repo
                  "overlapped %.3f ms (%s)\n",
                  budget.max_processing_ms, seq.need_ms, seq.fits ? "fits" : "over", ovl.need_ms,
                  ovl.fits ? "fits" : "over");
+}
 
-    // ---- the firmware's SDRAM traffic on the bus
-    // ---------------------------------------------------
+// The firmware's SDRAM traffic as the chip saw it, then per stage.
+void print_sdram_traffic(std::FILE* out, const platform_top& top) {
+    const platform_config& config = top.config();
     const c6416::c6416_sc& chip = top.cpu();
     std::fprintf(out,
                  "\n-- firmware SDRAM traffic (frames in %s, %s): L2 lines read %llu, written back "
@@ -211,18 +223,19 @@ void print_report(std::FILE* out, const platform_top& top, const scoreboard_repo
                  static_cast<unsigned long long>(chip.sdram_lines_written()),
                  chip.sdram_transfer_time().to_seconds() * 1e3,
                  chip.sdram_late_time().to_seconds() * 1e3);
-    if (top.firmware_started()) {
-        for (int s = 0; s < dsp::stage_count; ++s) {
-            const dsp::sdram_traffic& t = top.probe().stage_traffic(static_cast<dsp::stage>(s));
-            if (t.empty()) continue;
-            std::fprintf(out, "   %-11s read %llu B, written %llu B\n",
-                         dsp::stage_name(static_cast<dsp::stage>(s)),
-                         static_cast<unsigned long long>(t.bytes_read),
-                         static_cast<unsigned long long>(t.bytes_written));
-        }
+    if (!top.firmware_started()) return;
+    for (int s = 0; s < dsp::stage_count; ++s) {
+        const dsp::sdram_traffic& t = top.probe().stage_traffic(static_cast<dsp::stage>(s));
+        if (t.empty()) continue;
+        std::fprintf(out, "   %-11s read %llu B, written %llu B\n",
+                     dsp::stage_name(static_cast<dsp::stage>(s)),
+                     static_cast<unsigned long long>(t.bytes_read),
+                     static_cast<unsigned long long>(t.bytes_written));
     }
+}
 
-    // ---- budget ---------------------------------------------------------------------------------
+// The budget period by period, the peaks, the verdict and the first overruns.
+void print_budget(std::FILE* out, const budget_report& budget) {
     std::fprintf(
         out,
         "\n-- budget per %.1f ms period (judged from the first forwarded pair): cpu_busy emif_busy "
@@ -248,6 +261,20 @@ void print_report(std::FILE* out, const platform_top& top, const scoreboard_repo
         std::fprintf(out, "  %s\n", budget.overruns[i].describe().c_str());
     if (budget.overruns.size() > shown)
         std::fprintf(out, "  ... %zu more\n", budget.overruns.size() - shown);
+}
+
+}  // namespace
+
+void print_report(std::FILE* out, const platform_top& top, const scoreboard_report& score,
+                  const budget_report& budget, bool per_pair) {
+    print_run(out, top);
+    print_sync(out, score);
+    if (per_pair) print_pairs(out, score, budget);
+    print_tracking(out, score);
+    print_stages(out, budget);
+    print_closed_forms(out, top, budget);
+    print_sdram_traffic(out, top);
+    print_budget(out, budget);
 }
 
 }  // namespace platform

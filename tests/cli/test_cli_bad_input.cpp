@@ -107,8 +107,19 @@ TEST(cli_bad_input, out_of_range_values) {
     expect_bad("run --set firmware.search_radius=300",
                "the search window 601 x 601 px is larger than the image (640 x 480)");
     expect_bad("run --dsk v7", "--dsk: config key 'dsk.version': 7 is out of range 1..3");
+    // Whole numbers in full, not 2.14748e+09.
+    expect_bad("run --seed 3000000000",
+               "--seed: config key 'run.seed': 3000000000 is out of range 0..2147483647");
     expect_bad("run --mode parallel", "is not one of sequential|overlapped");
     expect_bad("run --frames 4 --bogus", "--bogus");  // CLI11: not an option
+}
+
+TEST(cli_bad_input, file_options_without_out) {
+    const run_output r = run_binary("run --frames 1 --timeline-csv");
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_EQ(r.err,
+              "stereosim: error: --timeline-csv needs --out DIR (it writes "
+              "DIR/timeline.csv)\n");
 }
 
 // A replay set of 640 x 480 PNGs made here (frames 0..4), its manifest, and

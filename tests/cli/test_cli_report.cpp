@@ -3,7 +3,9 @@
 // the schema uses, shown to reject broken reports), frames.csv holds the same
 // rows, the exit status is the verdict, and a second run with the same inputs
 // (with the progress hook on, which pauses the simulation every period)
-// writes a byte-identical report apart from summary.sim.
+// writes a byte-identical report apart from summary.sim. report.txt is the
+// platform's text report (identical but for its wall-time line); timeline.csv
+// is written only with --timeline-csv.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -152,12 +154,34 @@ json value_at(const json& row, const std::string& pointer) {
     }
 }
 
+// report.txt is the platform's text report, the same in two runs but for the
+// wall-time line; timeline.csv is in `with_csv` only (--timeline-csv).
+void expect_text_report_and_timeline(const std::string& with_csv, const std::string& without_csv,
+                                     const json& verdict) {
+    const std::string text = read_file(with_csv + "/report.txt");
+    EXPECT_EQ(text.rfind("== stereosim platform: DSK v1 (CPU 600 MHz, EMIF 100 MHz)", 0), 0u)
+        << text;
+    EXPECT_NE(text.find("\n-- pairs (times ms): pair ready"), std::string::npos);
+    EXPECT_NE(text.find(verdict == "within_budget" ? "\nVERDICT: within budget ("
+                                                   : "\nVERDICT: OVER BUDGET ("),
+              std::string::npos);
+    const auto without_wall = [](const std::string& t) {
+        const size_t run = t.find("\nrun: ");
+        return t.substr(0, run) + t.substr(t.find('\n', run + 1));
+    };
+    EXPECT_EQ(without_wall(text), without_wall(read_file(without_csv + "/report.txt")));
+    const std::string timeline = read_file(with_csv + "/timeline.csv");
+    EXPECT_EQ(timeline.rfind("tick,time_ns,kind,name,a,b,c\n", 0), 0u);
+    EXPECT_NE(timeline.find(",stage_begin,"), std::string::npos) << timeline.substr(0, 200);
+    EXPECT_FALSE(fs::exists(without_csv + "/timeline.csv"));
+}
+
 TEST(cli_report, schema_csv_verdict_and_reproducibility) {
     const std::string a = testing::TempDir() + "cli_report_a";
     const std::string b = testing::TempDir() + "cli_report_b";
     fs::remove_all(a);
     fs::remove_all(b);
-    const std::string args = "run --scenario default --frames 5 --seed 3 --quiet";
+    const std::string args = "run --scenario default --frames 5 --seed 3 --quiet --timeline-csv";
     const run_output first = run_binary(args + " --out " + a);
     const run_output second =
         run_binary("run --scenario default --frames 5 --seed 3 --progress --out " + b);
@@ -304,6 +328,8 @@ TEST(cli_report, schema_csv_verdict_and_reproducibility) {
     other["summary"].erase("sim");
     EXPECT_EQ(mine.dump(2), other.dump(2));
     EXPECT_EQ(read_file(a + "/frames.csv"), read_file(b + "/frames.csv"));
+
+    expect_text_report_and_timeline(a, b, report["verdict"]);
     // No staging folder left behind.
     for (const auto& entry : fs::directory_iterator(a))
         EXPECT_EQ(entry.path().filename().string().rfind(".stereosim-staging", 0),

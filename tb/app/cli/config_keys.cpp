@@ -19,212 +19,165 @@ namespace {
 
 using nlohmann::json;
 
-// ---- table builders: a key bound to one run_setup member -----------------------------------
+// ---- the table: one declaration per key ----------------------------------------------------
+//
+// A declaration is the key's name, its type and range, its doc line and the
+// field of run_setup it reads and writes (a `field`: where the value lives,
+// and what `get` shows, which for the clocks is the clock in use).
 
 template <typename T>
-config_key integer_key(std::string name, T run_setup::*member, double min, double max,
-                       std::string doc) {
+struct field {
+    std::function<T&(run_setup&)> ref;
+    std::function<T(const run_setup&)> shown;
+};
+
+template <typename T>
+field<T> setup_field(T run_setup::*member) {
+    return {[member](run_setup& s) -> T& { return s.*member; },
+            [member](const run_setup& s) { return s.*member; }};
+}
+
+template <typename T>
+field<T> scenario_field(T scenario_params::*member) {
+    return {[member](run_setup& s) -> T& { return s.scenario.*member; },
+            [member](const run_setup& s) { return s.scenario.*member; }};
+}
+
+// Stored as 0 = "the DSK version's clock", shown as the clock in use.
+field<double> clock_field(double run_setup::*member, double (run_setup::*in_use)() const) {
+    return {[member](run_setup& s) -> double& { return s.*member; },
+            [in_use](const run_setup& s) { return (s.*in_use)(); }};
+}
+
+template <typename T>
+config_key declare(const char* name, key_type type, double min, double max,
+                   std::vector<std::string> choices, field<T> f, const char* doc) {
     config_key k;
-    k.name = std::move(name);
-    k.type = key_type::integer;
+    k.name = name;
+    k.type = type;
     k.min = min;
     k.max = max;
-    k.doc = std::move(doc);
-    k.set = [member](run_setup& s, const json& v) { s.*member = v.get<T>(); };
-    k.get = [member](const run_setup& s) { return json(s.*member); };
-    return k;
-}
-
-config_key real_key(std::string name, double run_setup::*member, double min, double max,
-                    std::string doc) {
-    config_key k;
-    k.name = std::move(name);
-    k.type = key_type::real;
-    k.min = min;
-    k.max = max;
-    k.doc = std::move(doc);
-    k.set = [member](run_setup& s, const json& v) { s.*member = v.get<double>(); };
-    k.get = [member](const run_setup& s) { return json(s.*member); };
-    return k;
-}
-
-config_key bool_key(std::string name, bool run_setup::*member, std::string doc) {
-    config_key k;
-    k.name = std::move(name);
-    k.type = key_type::boolean;
-    k.doc = std::move(doc);
-    k.set = [member](run_setup& s, const json& v) { s.*member = v.get<bool>(); };
-    k.get = [member](const run_setup& s) { return json(s.*member); };
-    return k;
-}
-
-config_key choice_key(std::string name, std::string run_setup::*member,
-                      std::vector<std::string> choices, std::string doc) {
-    config_key k;
-    k.name = std::move(name);
-    k.type = key_type::choice;
     k.choices = std::move(choices);
-    k.doc = std::move(doc);
-    k.set = [member](run_setup& s, const json& v) { s.*member = v.get<std::string>(); };
-    k.get = [member](const run_setup& s) { return json(s.*member); };
+    k.doc = doc;
+    k.set = [ref = f.ref](run_setup& s, const json& v) { ref(s) = v.get<T>(); };
+    k.get = [shown = f.shown](const run_setup& s) { return json(shown(s)); };
     return k;
 }
 
-// The same for a member of run_setup::scenario.
 template <typename T>
-config_key scenario_key(config_key k, T scenario_params::*member) {
-    k.set = [member](run_setup& s, const json& v) { s.scenario.*member = v.get<T>(); };
-    k.get = [member](const run_setup& s) { return json(s.scenario.*member); };
-    return k;
+config_key integer(const char* name, field<T> f, double min, double max, const char* doc) {
+    return declare(name, key_type::integer, min, max, {}, std::move(f), doc);
+}
+config_key number(const char* name, field<double> f, double min, double max, const char* doc) {
+    return declare(name, key_type::real, min, max, {}, std::move(f), doc);
+}
+config_key boolean(const char* name, field<bool> f, const char* doc) {
+    return declare(name, key_type::boolean, 0.0, 0.0, {}, std::move(f), doc);
+}
+config_key choice(const char* name, field<std::string> f, std::vector<std::string> choices,
+                  const char* doc) {
+    return declare(name, key_type::choice, 0.0, 0.0, std::move(choices), std::move(f), doc);
+}
+config_key text(const char* name, field<std::string> f, const char* doc) {
+    return declare(name, key_type::text, 0.0, 0.0, {}, std::move(f), doc);
 }
 
-std::vector<std::string> profile_names() {
-    return {"default", "ov7620", "mt9v011", "mt9v012", "pas302"};
+std::vector<config_key> scenario_keys() {
+    return {
+        text("scenario.name", scenario_field(&scenario_params::name),
+             "built-in scenario (stereosim scenarios); its settings apply before any other key"),
+        integer("scenario.still_frames", scenario_field(&scenario_params::still_frames), 0, 1000,
+                "frames the ball rests before it moves"),
+        choice("scenario.path", scenario_field(&scenario_params::path),
+               {"bounce", "circle", "line", "still"},
+               "the ball's path: thrown and bouncing, circling, a straight line, at rest"),
+        // At most 4.5 m: the background plane is at 5 m.
+        number("scenario.depth_m", scenario_field(&scenario_params::depth_m), 0.5, 4.5,
+               "the ball's starting depth, m (circle: the depth of its plane)"),
+        number("scenario.speed", scenario_field(&scenario_params::speed), 0.0, 8.0,
+               "time scale of the path: 1 nominal, 2 twice as fast, 0 at rest"),
+        number("scenario.ball_radius_mm", scenario_field(&scenario_params::ball_radius_mm), 5.0,
+               300.0, "ball radius, mm (DESIGN.md default 50)"),
+        choice("scenario.light", scenario_field(&scenario_params::light), {"none", "step", "ramp"},
+               "a global lighting change: none, a step, or a linear ramp"),
+        integer("scenario.light_frame", scenario_field(&scenario_params::light_frame), 0, 100000,
+                "frame of the step, or the ramp's first frame"),
+        number("scenario.light_gain", scenario_field(&scenario_params::light_gain), 0.05, 4.0,
+               "global light gain after the change (1 = unchanged)"),
+        integer("scenario.light_ramp_frames", scenario_field(&scenario_params::light_ramp_frames),
+                1, 1000, "length of the ramp, frame periods"),
+        text("scenario.replay", scenario_field(&scenario_params::replay),
+             "replay manifest (model/scene/replay.h): PNG frames instead of the renderer; "
+             "empty = render"),
+    };
 }
 
+std::vector<config_key> hardware_keys() {
+    return {
+        number("rig.baseline_mm", setup_field(&run_setup::baseline_mm), 10.0, 2000.0,
+               "stereo baseline s, mm (DESIGN.md default rig: 120)"),
+        number("rig.focal_length_mm", setup_field(&run_setup::focal_length_mm), 1.0, 100.0,
+               "lens focal length, mm (default 6)"),
+        number("rig.pixel_pitch_um", setup_field(&run_setup::pixel_pitch_um), 1.0, 50.0,
+               "sensor pixel pitch, um (OV7620: 7.6, hardware-facts.md section 6)"),
+        choice("sensor.profile", setup_field(&run_setup::sensor_profile),
+               {"default", "ov7620", "mt9v011", "mt9v012", "pas302"},
+               "sensor timing profile (docs/sensor.md)"),
+        boolean("sensor.noise", setup_field(&run_setup::sensor_noise),
+                "shot and read noise on the sensors' pixels"),
+        integer("dsk.version", setup_field(&run_setup::dsk_version), 1, 3,
+                "DSK version: 1 600/100 MHz, 2 720/120, 3 1000/125 (CPU/EMIF)"),
+        number("dsk.cpu_mhz", clock_field(&run_setup::cpu_mhz, &run_setup::effective_cpu_mhz), 50.0,
+               2000.0, "CPU clock, MHz (default: the DSK version's)"),
+        number("dsk.eclk_mhz", clock_field(&run_setup::eclk_mhz, &run_setup::effective_eclk_mhz),
+               10.0, 200.0, "EMIF clock ECLKOUT, MHz (default: the DSK version's)"),
+    };
+}
+
+std::vector<config_key> firmware_keys() {
+    return {
+        choice("firmware.mode", setup_field(&run_setup::mode), {"sequential", "overlapped"},
+               "read the pair then process it, or process pair N while N+1 is read"),
+        integer("firmware.search_radius", setup_field(&run_setup::search_radius), 1, 1000,
+                "SAD tracking search radius, px each way (window 2r+1 must fit the image)"),
+        choice("firmware.stereo_method", setup_field(&run_setup::stereo_method),
+               {"sad", "edge", "both"}, "which stereo match gives the 3D point"),
+        integer("firmware.detect_threshold", setup_field(&run_setup::detect_threshold), 1, 254,
+                "three-frame differencing: Binary(a) = a > threshold, gray levels"),
+        choice("firmware.frame_memory", setup_field(&run_setup::frame_memory), {"l2", "sdram"},
+               "where the firmware's gray frames and motion mask live (l2: the memory plan of "
+               "docs/firmware.md)"),
+        boolean("firmware.sdram_traffic_on_bus", setup_field(&run_setup::sdram_traffic_on_bus),
+                "the firmware's SDRAM traffic goes out on EMIFA (competes with capture)"),
+        integer("firmware.watchdog_ms", setup_field(&run_setup::watchdog_ms), 0, 10000,
+                "period of the firmware's card watchdog, ms (0: off)"),
+        integer("firmware.card_start_timeout", setup_field(&run_setup::card_start_timeout), 1,
+                65535,
+                "START_TIMEOUT the firmware programs: lines the card waits for the first VSYNC "
+                "after OE rises"),
+    };
+}
+
+std::vector<config_key> run_keys() {
+    return {
+        integer("run.frames", setup_field(&run_setup::frames), 1, 100000,
+                "sync periods of 24.5 ms to simulate"),
+        integer("run.seed", setup_field(&run_setup::seed), 0, 2147483647.0,
+                "seed: sensor seeds 2 seed (left) and 2 seed + 1 (right)"),
+        integer("run.quantum_ns", setup_field(&run_setup::quantum_ns), 0, 24500000,
+                "the island's longest run-ahead before it syncs with SystemC, ns (0: one sensor "
+                "line); changes no result"),
+        boolean("run.hash_pins", setup_field(&run_setup::hash_pins),
+                "fold every pin change into the pin hash"),
+    };
+}
+
+// The table, in the order of docs/config.md and config files.
 std::vector<config_key> make_table() {
-    std::vector<config_key> t;
-    // ---- scenario -------------------------------------------------------------------------
-    {
-        config_key k;
-        k.name = "scenario.name";
-        k.type = key_type::text;
-        k.doc = "built-in scenario (stereosim scenarios); its settings apply before any other key";
-        k.set = [](run_setup& s, const json& v) { s.scenario.name = v.get<std::string>(); };
-        k.get = [](const run_setup& s) { return json(s.scenario.name); };
-        t.push_back(k);
-    }
-    config_key k;
-    k.type = key_type::integer;
-    k.name = "scenario.still_frames";
-    k.min = 0;
-    k.max = 1000;
-    k.doc = "frames the ball rests before it moves";
-    t.push_back(scenario_key(k, &scenario_params::still_frames));
-
-    k = {};
-    k.type = key_type::choice;
-    k.name = "scenario.path";
-    k.choices = {"bounce", "circle", "line", "still"};
-    k.doc = "the ball's path: thrown and bouncing, circling, a straight line, at rest";
-    t.push_back(scenario_key(k, &scenario_params::path));
-
-    k = {};
-    k.type = key_type::real;
-    k.name = "scenario.depth_m";
-    k.min = 0.5;
-    k.max = 4.5;  // the background plane is at 5 m
-    k.doc = "the ball's starting depth, m (circle: the depth of its plane)";
-    t.push_back(scenario_key(k, &scenario_params::depth_m));
-
-    k.name = "scenario.speed";
-    k.min = 0.0;
-    k.max = 8.0;
-    k.doc = "time scale of the path: 1 nominal, 2 twice as fast, 0 at rest";
-    t.push_back(scenario_key(k, &scenario_params::speed));
-
-    k.name = "scenario.ball_radius_mm";
-    k.min = 5.0;
-    k.max = 300.0;
-    k.doc = "ball radius, mm (DESIGN.md default 50)";
-    t.push_back(scenario_key(k, &scenario_params::ball_radius_mm));
-
-    k = {};
-    k.type = key_type::choice;
-    k.name = "scenario.light";
-    k.choices = {"none", "step", "ramp"};
-    k.doc = "a global lighting change: none, a step, or a linear ramp";
-    t.push_back(scenario_key(k, &scenario_params::light));
-
-    k = {};
-    k.type = key_type::integer;
-    k.name = "scenario.light_frame";
-    k.min = 0;
-    k.max = 100000;
-    k.doc = "frame of the step, or the ramp's first frame";
-    t.push_back(scenario_key(k, &scenario_params::light_frame));
-
-    k = {};
-    k.type = key_type::real;
-    k.name = "scenario.light_gain";
-    k.min = 0.05;
-    k.max = 4.0;
-    k.doc = "global light gain after the change (1 = unchanged)";
-    t.push_back(scenario_key(k, &scenario_params::light_gain));
-
-    k = {};
-    k.type = key_type::integer;
-    k.name = "scenario.light_ramp_frames";
-    k.min = 1;
-    k.max = 1000;
-    k.doc = "length of the ramp, frame periods";
-    t.push_back(scenario_key(k, &scenario_params::light_ramp_frames));
-
-    k = {};
-    k.type = key_type::text;
-    k.name = "scenario.replay";
-    k.doc =
-        "replay manifest (model/scene/replay.h): PNG frames instead of the renderer; "
-        "empty = render";
-    t.push_back(scenario_key(k, &scenario_params::replay));
-
-    // ---- rig --------------------------------------------------------------------------------
-    t.push_back(real_key("rig.baseline_mm", &run_setup::baseline_mm, 10.0, 2000.0,
-                         "stereo baseline s, mm (DESIGN.md default rig: 120)"));
-    t.push_back(real_key("rig.focal_length_mm", &run_setup::focal_length_mm, 1.0, 100.0,
-                         "lens focal length, mm (default 6)"));
-    t.push_back(real_key("rig.pixel_pitch_um", &run_setup::pixel_pitch_um, 1.0, 50.0,
-                         "sensor pixel pitch, um (OV7620: 7.6, hardware-facts.md section 6)"));
-
-    // ---- sensor -----------------------------------------------------------------------------
-    t.push_back(choice_key("sensor.profile", &run_setup::sensor_profile, profile_names(),
-                           "sensor timing profile (docs/sensor.md)"));
-    t.push_back(bool_key("sensor.noise", &run_setup::sensor_noise,
-                         "shot and read noise on the sensors' pixels"));
-
-    // ---- DSK --------------------------------------------------------------------------------
-    t.push_back(integer_key("dsk.version", &run_setup::dsk_version, 1, 3,
-                            "DSK version: 1 600/100 MHz, 2 720/120, 3 1000/125 (CPU/EMIF)"));
-    // Stored as 0 = "the version's", shown as the clock in use.
-    t.push_back(real_key("dsk.cpu_mhz", &run_setup::cpu_mhz, 50.0, 2000.0,
-                         "CPU clock, MHz (default: the DSK version's)"));
-    t.back().get = [](const run_setup& s) { return json(s.effective_cpu_mhz()); };
-    t.push_back(real_key("dsk.eclk_mhz", &run_setup::eclk_mhz, 10.0, 200.0,
-                         "EMIF clock ECLKOUT, MHz (default: the DSK version's)"));
-    t.back().get = [](const run_setup& s) { return json(s.effective_eclk_mhz()); };
-
-    // ---- firmware ---------------------------------------------------------------------------
-    t.push_back(choice_key("firmware.mode", &run_setup::mode, {"sequential", "overlapped"},
-                           "read the pair then process it, or process pair N while N+1 is read"));
-    t.push_back(integer_key("firmware.search_radius", &run_setup::search_radius, 1, 1000,
-                            "SAD tracking search radius, px each way (window 2r+1 must fit the "
-                            "image)"));
-    t.push_back(choice_key("firmware.stereo_method", &run_setup::stereo_method,
-                           {"sad", "edge", "both"}, "which stereo match gives the 3D point"));
-    t.push_back(integer_key("firmware.detect_threshold", &run_setup::detect_threshold, 1, 254,
-                            "three-frame differencing: Binary(a) = a > threshold, gray levels"));
-    t.push_back(choice_key("firmware.frame_memory", &run_setup::frame_memory, {"l2", "sdram"},
-                           "where the firmware's gray frames and motion mask live (l2: the memory "
-                           "plan of docs/firmware.md)"));
-    t.push_back(bool_key("firmware.sdram_traffic_on_bus", &run_setup::sdram_traffic_on_bus,
-                         "the firmware's SDRAM traffic goes out on EMIFA (competes with capture)"));
-    t.push_back(integer_key("firmware.watchdog_ms", &run_setup::watchdog_ms, 0, 10000,
-                            "period of the firmware's card watchdog, ms (0: off)"));
-    t.push_back(integer_key("firmware.card_start_timeout", &run_setup::card_start_timeout, 1, 65535,
-                            "START_TIMEOUT the firmware programs: lines the card waits for "
-                            "the first VSYNC after OE rises"));
-
-    // ---- run --------------------------------------------------------------------------------
-    t.push_back(integer_key("run.frames", &run_setup::frames, 1, 100000,
-                            "sync periods of 24.5 ms to simulate"));
-    t.push_back(integer_key("run.seed", &run_setup::seed, 0, 2147483647.0,
-                            "seed: sensor seeds 2 seed (left) and 2 seed + 1 (right)"));
-    t.push_back(integer_key("run.quantum_ns", &run_setup::quantum_ns, 0, 24500000,
-                            "the island's longest run-ahead before it syncs with SystemC, ns "
-                            "(0: one sensor line); changes no result"));
-    t.push_back(bool_key("run.hash_pins", &run_setup::hash_pins,
-                         "fold every pin change into the pin hash"));
-    return t;
+    std::vector<config_key> table;
+    for (auto section : {scenario_keys, hardware_keys, firmware_keys, run_keys})
+        for (config_key& key : section()) table.push_back(std::move(key));
+    return table;
 }
 
 size_t edit_distance(const std::string& a, const std::string& b) {
@@ -242,7 +195,10 @@ size_t edit_distance(const std::string& a, const std::string& b) {
     return row[b.size()];
 }
 
+// Whole numbers in full (a range 0..2147483647, not 0..2.14748e+09), others as
+// a stream shows them.
 std::string format_number(double v) {
+    if (std::floor(v) == v && std::fabs(v) < 1e15) return std::to_string(static_cast<long long>(v));
     std::ostringstream out;
     out << v;
     return out.str();

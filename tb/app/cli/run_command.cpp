@@ -13,6 +13,7 @@
 #include "tb/app/cli/staged_files.h"
 #include "tb/platform/budget.h"
 #include "tb/platform/platform.h"
+#include "tb/platform/report.h"
 #include "tb/platform/scoreboard.h"
 
 namespace cli {
@@ -45,6 +46,23 @@ bool write_text(const std::string& path, const std::string& text, std::string* e
     return true;
 }
 
+// report.txt: the platform's text report (tb/platform/report.h), per-pair
+// table included.
+bool write_text_report(const std::string& path, const run_result& run, std::string* error) {
+    std::FILE* out = std::fopen(path.c_str(), "w");
+    if (!out) {
+        *error = "cannot write " + path;
+        return false;
+    }
+    platform::print_report(out, run.top, run.score, run.budget, /*per_pair=*/true);
+    const bool failed = std::ferror(out) != 0;
+    if (std::fclose(out) != 0 || failed) {
+        *error = "cannot write " + path;
+        return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 void print_error(const std::string& message) {
@@ -53,7 +71,8 @@ void print_error(const std::string& message) {
 
 run_command::run_command(CLI::App& app, std::vector<std::unique_ptr<run_extension>> extensions)
     : m_extensions(std::move(extensions)) {
-    m_run = app.add_subcommand("run", "one co-simulation: report.json, frames.csv, the verdict");
+    m_run = app.add_subcommand(
+        "run", "one co-simulation: report.json, report.txt, frames.csv, the verdict");
     run_options& o = m_options;
     CLI::Option* scenario =
         m_run->add_option("--scenario", o.scenario, "built-in scenario (stereosim scenarios)");
@@ -69,7 +88,8 @@ run_command::run_command(CLI::App& app, std::vector<std::unique_ptr<run_extensio
     m_run->add_option("--replay", o.replay, "replay manifest (scenario.replay)");
     m_run->add_option("--set", o.sets,
                       "key=value for any config key (repeatable; stereosim config --list)");
-    m_run->add_option("--out", o.out_dir, "write report.json, frames.csv, ... into this folder");
+    m_run->add_option("--out", o.out_dir,
+                      "write report.json, report.txt, frames.csv, ... into this folder");
     m_run->add_flag("--quiet,-q", o.quiet, "no progress line and no summary");
     m_run->add_flag("--progress", o.force_progress,
                     "progress line even when stderr is not a terminal");
@@ -77,16 +97,12 @@ run_command::run_command(CLI::App& app, std::vector<std::unique_ptr<run_extensio
     for (auto& e : m_extensions) e->add_options(*m_run);
 }
 
-int run_command::execute() {
+bool run_command::setup_from_options(run_setup* setup, std::string* error) const {
     const run_options& o = m_options;
-    std::string error;
-
-    // ---- the setup: file or scenario, then named options, then --set in order
+    // The file or the scenario, then the named options, then --set in order.
     std::vector<key_assignment> assignments;
-    if (!o.config_file.empty() && !read_config_file(o.config_file, &assignments, &error)) {
-        print_error(error);
-        return exit_bad_input;
-    }
+    if (!o.config_file.empty() && !read_config_file(o.config_file, &assignments, error))
+        return false;
     if (!o.scenario.empty()) assignments.push_back({"scenario.name", o.scenario});
     std::string dsk = o.dsk;
     if (dsk.size() == 2 && (dsk[0] == 'v' || dsk[0] == 'V')) dsk = dsk.substr(1);
@@ -98,30 +114,84 @@ int run_command::execute() {
                  {"--dsk", "dsk.version", dsk},        {"--cpu-mhz", "dsk.cpu_mhz", o.cpu_mhz},
                  {"--mode", "firmware.mode", o.mode},  {"--replay", "scenario.replay", o.replay}};
     for (const auto& n : named) {
-        if (!n.text.empty() && !add_assignment(n.option, n.key, n.text, &assignments, &error)) {
-            print_error(error);
-            return exit_bad_input;
-        }
+        if (!n.text.empty() && !add_assignment(n.option, n.key, n.text, &assignments, error))
+            return false;
     }
     for (const std::string& set : o.sets) {
         const size_t eq = set.find('=');
         if (eq == std::string::npos) {
-            print_error("--set '" + set + "': expected key=value");
-            return exit_bad_input;
+            *error = "--set '" + set + "': expected key=value";
+            return false;
         }
         const std::string name = set.substr(0, eq);
-        const config_key* key = find_key(name);
-        if (!key) {
-            print_error(unknown_key_message(name));
-            return exit_bad_input;
+        if (!find_key(name)) {
+            *error = unknown_key_message(name);
+            return false;
         }
-        if (!add_assignment("--set", name, set.substr(eq + 1), &assignments, &error)) {
-            print_error(error);
-            return exit_bad_input;
-        }
+        if (!add_assignment("--set", name, set.substr(eq + 1), &assignments, error)) return false;
     }
+    return apply_assignments(assignments, setup, error) && validate_setup(*setup, error);
+}
+
+bool run_command::open_out_dir(staged_files& files, std::string* error) {
+    if (m_options.out_dir.empty()) return true;
+    if (!files.open(m_options.out_dir, error)) return false;
+    for (auto& e : m_extensions)
+        if (!e->open_outputs(files, error)) return false;
+    return true;
+}
+
+bool run_command::write_outputs(const run_result& run, staged_files& files, std::string* error) {
+    if (!write_text(files.staged_path("frames.csv"), frames_csv(run.report), error) ||
+        !write_text_report(files.staged_path("report.txt"), run, error))
+        return false;
+    for (auto& e : m_extensions)
+        if (!e->write(run, files, error)) return false;
+    // report.json last, so a reader that sees it sees every other file too.
+    return write_text(files.staged_path("report.json"), run.report.dump(2) + "\n", error) &&
+           files.commit(error);
+}
+
+int run_command::simulate(const run_setup& setup, const platform::platform_config& config,
+                          staged_files& files) {
+    const run_options& o = m_options;
+    const bool progress = !o.quiet && (o.force_progress || isatty(STDERR_FILENO));
+    const bool summary = !o.quiet && (o.force_summary || isatty(STDOUT_FILENO));
+    platform::platform_top top(config);
+    for (auto& e : m_extensions) e->attach(top);
+    progress_line line(stderr, config.frames,
+                       static_cast<double>(config.period) / (simtime::ticks_per_ns * 1e6));
+    if (progress) top.set_progress([&line](int done) { line.update(done); });
+    top.run();
+    if (progress) line.finish();
+    if (top.firmware_init_failed()) {
+        print_error("the firmware refused its configuration (see docs/config.md for the ranges)");
+        return exit_bad_input;
+    }
+    const platform::scoreboard_report score = platform::score(top);
+    const platform::budget_report budget = platform::check_budget(top, score);
+    json report = build_report(setup, top, score, budget);
+    const run_result result{setup, config, top, score, budget, report, o.out_dir};
+    for (auto& e : m_extensions) e->add_to_report(report, result);
+
+    std::string error;
+    if (!o.out_dir.empty() && !write_outputs(result, files, &error)) {
+        print_error(error);
+        return exit_run_failed;
+    }
+    if (summary) {
+        std::vector<std::string> extra;
+        for (auto& e : m_extensions)
+            for (const std::string& text : e->summary_lines(result)) extra.push_back(text);
+        print_summary(stdout, report, files.committed(), extra);
+    }
+    return budget.fits ? exit_within_budget : exit_over_budget;
+}
+
+int run_command::execute() {
+    std::string error;
     run_setup setup;
-    if (!apply_assignments(assignments, &setup, &error) || !validate_setup(setup, &error)) {
+    if (!setup_from_options(&setup, &error)) {
         print_error(error);
         return exit_bad_input;
     }
@@ -132,71 +202,14 @@ int run_command::execute() {
             return exit_bad_input;
         }
     }
-
-    // ---- the output folder, checked before the (long) run
+    // The output folder is checked before the (long) run.
     staged_files files;
-    if (!o.out_dir.empty() && !files.open(o.out_dir, &error)) {
+    if (!open_out_dir(files, &error)) {
         print_error(error);
         return exit_bad_input;
     }
-    if (!o.out_dir.empty()) {
-        for (auto& e : m_extensions) {
-            if (!e->open_outputs(files, &error)) {
-                print_error(error);
-                return exit_bad_input;
-            }
-        }
-    }
-
-    // ---- the run
-    const bool progress = !o.quiet && (o.force_progress || isatty(STDERR_FILENO));
-    const bool summary = !o.quiet && (o.force_summary || isatty(STDOUT_FILENO));
     try {
-        platform::platform_top top(config);
-        for (auto& e : m_extensions) e->attach(top);
-        progress_line line(stderr, config.frames,
-                           static_cast<double>(config.period) / (simtime::ticks_per_ns * 1e6));
-        if (progress) top.set_progress([&line](int done) { line.update(done); });
-        top.run();
-        if (progress) line.finish();
-        if (top.firmware_init_failed()) {
-            print_error(
-                "the firmware refused its configuration (see docs/config.md for the ranges)");
-            return exit_bad_input;
-        }
-        const platform::scoreboard_report score = platform::score(top);
-        const platform::budget_report budget = platform::check_budget(top, score);
-        json report = build_report(setup, top, score, budget);
-        const run_result result{setup, config, top, score, budget, report, o.out_dir};
-        for (auto& e : m_extensions) e->add_to_report(report, result);
-
-        std::vector<std::string> written;
-        if (!o.out_dir.empty()) {
-            // report.json last, so a reader that sees it sees every other file too.
-            if (!write_text(files.staged_path("frames.csv"), frames_csv(report), &error)) {
-                print_error(error);
-                return exit_run_failed;
-            }
-            for (auto& e : m_extensions) {
-                if (!e->write(result, files, &error)) {
-                    print_error(error);
-                    return exit_run_failed;
-                }
-            }
-            if (!write_text(files.staged_path("report.json"), report.dump(2) + "\n", &error) ||
-                !files.commit(&error)) {
-                print_error(error);
-                return exit_run_failed;
-            }
-            written = files.committed();
-        }
-        if (summary) {
-            std::vector<std::string> extra;
-            for (auto& e : m_extensions)
-                for (const std::string& line : e->summary_lines(result)) extra.push_back(line);
-            print_summary(stdout, report, written, extra);
-        }
-        return budget.fits ? exit_within_budget : exit_over_budget;
+        return simulate(setup, config, files);
     } catch (const std::exception& e) {
         // sc_core::sc_report is a std::exception too; one line.
         std::string what = e.what();

@@ -1,5 +1,5 @@
 // `stereosim run` (docs/cli.md): options -> config keys -> platform_config,
-// one co-simulation, report.json / frames.csv (and the extensions' files)
+// one co-simulation, report.json / report.txt / frames.csv (and the extensions' files)
 // staged and renamed into --out DIR, the summary on a terminal.
 //
 // Exit codes: 0 within budget, 1 over budget (a result, not an error),
@@ -46,6 +46,18 @@ class run_command {
     int execute();
 
   private:
+    // The run_setup of the options: config file or scenario, named options,
+    // --set, then the checks across keys. false + *error is bad input.
+    bool setup_from_options(run_setup* setup, std::string* error) const;
+    // With --out: DIR and its staging folder, and the extensions' streams.
+    bool open_out_dir(staged_files& files, std::string* error);
+    // Builds and runs the platform, writes the outputs, prints the summary;
+    // returns the exit code.
+    int simulate(const run_setup& setup, const platform::platform_config& config,
+                 staged_files& files);
+    // frames.csv, report.txt, the extensions' files, report.json; then commit.
+    bool write_outputs(const run_result& run, staged_files& files, std::string* error);
+
     CLI::App* m_run = nullptr;
     run_options m_options;
     std::vector<std::unique_ptr<run_extension>> m_extensions;

@@ -44,7 +44,7 @@ platform::platform_config platform_config_of(const run_setup& s) {
     if (!s.scenario.replay.empty()) c.scenario.scene.balls.clear();
 
     // A version's own clocks keep its profile (name and all); others are custom
-    // clocks with that version's EMIF settings (CECTL), as stereosim_platform does.
+    // clocks with that version's EMIF settings (CECTL).
     const c6416::dsk_profile version = c6416::dsk_version(s.dsk_version);
     const int64_t cpu_hz = std::llround(s.effective_cpu_mhz() * 1e6);
     const int64_t emif_hz = std::llround(s.effective_eclk_mhz() * 1e6);
@@ -57,9 +57,9 @@ platform::platform_config platform_config_of(const run_setup& s) {
     c.mode =
         s.mode == "sequential" ? dsp::pipeline_mode::sequential : dsp::pipeline_mode::overlapped;
     c.track_search_radius = s.search_radius;
-    c.stereo_method = static_cast<int>(s.stereo_method == "edge"   ? dsp::stereo_method::edge
-                                       : s.stereo_method == "both" ? dsp::stereo_method::both
-                                                                   : dsp::stereo_method::sad);
+    c.stereo_method = s.stereo_method == "edge"   ? dsp::stereo_method::edge
+                      : s.stereo_method == "both" ? dsp::stereo_method::both
+                                                  : dsp::stereo_method::sad;
     c.detect_threshold = s.detect_threshold;
     c.frame_memory = s.frame_memory == "l2" ? dsp::cost::memory::l2 : dsp::cost::memory::sdram;
     c.sdram_traffic_on_bus = s.sdram_traffic_on_bus;

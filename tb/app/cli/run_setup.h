@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <string>
 
+#include "dsp/control_program.h"
+#include "dsp/controller.h"
 #include "tb/platform/platform_config.h"
 
 namespace cli {
@@ -44,14 +46,17 @@ struct run_setup {
     double cpu_mhz = 0.0;
     double eclk_mhz = 0.0;
 
-    std::string mode = "overlapped";  // sequential | overlapped
-    int search_radius = 24;           // dsp::track_params default
-    std::string stereo_method = "sad";
-    int detect_threshold = 20;  // dsp::detect_params default
-    std::string frame_memory = "l2";
+    // The firmware's parameters default to the firmware's own values, read
+    // from its default configurations so that they are written down once.
+    std::string mode = dsp::pipeline_mode_name(dsp::control_program_config{}.mode);
+    int search_radius = dsp::track_params{}.search_radius;
+    std::string stereo_method = dsp::stereo_method_name(dsp::controller_config{}.method);
+    int detect_threshold = dsp::detect_params{}.threshold;
+    std::string frame_memory = "l2";  // sdram: before the memory plan (docs/firmware.md)
     bool sdram_traffic_on_bus = true;
-    int watchdog_ms = 500;
-    int card_start_timeout = 1050;  // the card's reset value, 2 frames (docs/card-registers.md)
+    int watchdog_ms = static_cast<int>(dsp::control_program_config{}.watchdog_ms);
+    // The card's reset value, 2 frames (docs/card-registers.md).
+    int card_start_timeout = static_cast<int>(dsp::card_regs::start_timeout_reset);
 
     int frames = 12;
     int64_t seed = 3;

@@ -1,10 +1,8 @@
 #include "tb/app/cli/scenarios.h"
 
-#include <cmath>
-
 #include "model/scene/background.h"
+#include "model/scene/ball_paths.h"
 #include "model/scene/lighting.h"
-#include "model/scene/trajectory.h"
 
 namespace cli {
 
@@ -66,30 +64,17 @@ scene::scenario build_scenario(const scenario_params& p, const scene::stereo_rig
     s.scene.background =
         scene::background_desc::procedural_plane(scene::procedural_texture_params{}, 5.0);
     const double period = s.frame_period_s;
-    // Frames 0 .. still_frames-1 all see the start position (as default_scenario).
-    const double start = (p.still_frames > 0 ? p.still_frames - 1 : 0) * period;
-    const double pi = std::acos(-1.0);
-    const double v = p.speed;
+    const double start = scene::motion_start_s(p.still_frames, period);
     scene::ball_desc ball;
     ball.radius_m = p.ball_radius_mm / 1000.0;
-    if (p.path == "circle") {
-        const double radius = 0.15 * p.depth_m, speed = 0.41 * p.depth_m * v;
-        ball.path = scene::trajectory::circle({0.0, 0.0, p.depth_m}, radius, {1.0, 0.0, 0.0},
-                                              {0.0, 1.0, 0.0}, speed / radius, pi, start);
-    } else if (p.path == "line") {
-        ball.path =
-            scene::trajectory::line({-0.25, -0.05, p.depth_m}, {1.0 * v, 0.1 * v, 0.0}, start);
-    } else if (p.path == "still") {
-        ball.path = scene::trajectory::still({-0.30, 0.0, p.depth_m});
-    } else {
-        // The floor 0.35 m below the optical axis: the centre touches it at
-        // 0.35 - r (written so that r = 5 cm gives default_scenario's 0.30 exactly).
-        const double bounce_y = 0.30 + (0.05 - ball.radius_m);
-        ball.path = scene::trajectory::ballistic({-0.30, 0.0, p.depth_m},
-                                                 {0.14 * v, -2.0 * v, -0.45 * v}, start,
-                                                 /*has_floor=*/true, bounce_y, 0.8);
-        ball.path.gravity_m_s2 *= v * v;  // time scale: p_v(t) = p(v t)
-    }
+    if (p.path == "circle")
+        ball.path = scene::circling_path(p.depth_m, p.speed, start);
+    else if (p.path == "line")
+        ball.path = scene::line_path(p.depth_m, p.speed, start);
+    else if (p.path == "still")
+        ball.path = scene::resting_path(p.depth_m);
+    else
+        ball.path = scene::thrown_ball_path(p.depth_m, ball.radius_m, p.speed, start);
     s.scene.balls.push_back(ball);
     if (p.light == "step") {
         // Half a period early, so frame light_frame (rendered within its own

@@ -17,10 +17,12 @@ class fault_extension final : public cli::run_extension {
                        "inject a fault KIND:KEY=VALUE,...[@frame=N|@ms=T] (repeatable; "
                        "stereosim faults --list, docs/faults.md)");
         run.add_option("--card-retry-limit", m_retry_limit,
-                       "the card's RETRY_LIMIT: OE restarts before HARD_ERROR (default 8)");
+                       "the card's RETRY_LIMIT: OE restarts before HARD_ERROR (default " +
+                           std::to_string(m_retry_limit) + ")");
         run.add_option("--hard-error-rearms", m_rearms,
                        "the firmware's re-arms after a card hard error before it gives up "
-                       "(default 1)");
+                       "(default " +
+                           std::to_string(m_rearms) + ")");
     }
 
     bool configure(const cli::run_setup& /*setup*/, platform::platform_config& config,
@@ -75,8 +77,9 @@ class fault_extension final : public cli::run_extension {
 
   private:
     std::vector<std::string> m_texts;
-    int m_retry_limit = 8;
-    int m_rearms = 1;
+    // The defaults of platform_config: the card's reset value, the firmware's own.
+    int m_retry_limit = static_cast<int>(dsp::card_regs::retry_limit_reset);
+    int m_rearms = static_cast<int>(dsp::control_program_config{}.hard_error_rearms);
     std::vector<fault_spec> m_specs;
     platform::platform_top* m_top = nullptr;
     fault_run_result m_result;

@@ -168,9 +168,32 @@ class waveform_output final : public cli::run_extension {
 
 class plot_and_trace_output final : public cli::run_extension {
   public:
+    void add_options(CLI::App& run) override {
+        m_run = &run;
+        run.add_flag("--timeline-csv", m_timeline_csv,
+                     "also write DIR/timeline.csv: every timeline event, one row each (tick, "
+                     "time_ns, kind, name, a, b, c)");
+    }
+
+    bool configure(const cli::run_setup& /*setup*/, platform::platform_config& /*config*/,
+                   std::string* error) override {
+        if (m_timeline_csv && m_run->count("--out") == 0) {
+            *error = "--timeline-csv needs --out DIR (it writes DIR/timeline.csv)";
+            return false;
+        }
+        return true;
+    }
+
     bool write(const cli::run_result& run, cli::staged_files& files, std::string* error) override {
         if (!write_text(files.staged_path("timeline.json"), trace_events_json(run.top), error))
             return false;
+        if (m_timeline_csv) {
+            const std::string path = files.staged_path("timeline.csv");
+            if (!run.top.events().write_csv(path)) {
+                *error = "cannot write " + path;
+                return false;
+            }
+        }
         const std::string script = files.staged_path("trajectory.gp");
         // frames.csv is staged beside it (the run command writes it first).
         const std::string dir = script.substr(0, script.rfind('/'));
@@ -195,6 +218,8 @@ class plot_and_trace_output final : public cli::run_extension {
     }
 
   private:
+    CLI::App* m_run = nullptr;
+    bool m_timeline_csv = false;
     std::string m_plot_note;
 };
 

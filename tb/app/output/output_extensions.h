@@ -1,10 +1,11 @@
-// The stereosim run extensions of tb/output (docs/waveforms.md), plugged
+// The stereosim run extensions of tb/app/output (docs/waveforms.md), plugged
 // into `stereosim run` through tb/app/cli/run_outputs.h:
 //   waveforms  --vcd [--vcd-from MS --vcd-to MS] [--vcd-scope LIST]: a pin
 //              trace of the window into DIR/waves/<scenario>.vcd, its GTKWave
 //              save file and translate filters beside it;
 //   run files  with --out DIR: trajectory.gp + trajectory.png (gnuplot) and
-//              timeline.json (Chrome trace events).
+//              timeline.json (Chrome trace events); with --timeline-csv also
+//              timeline.csv (every timeline event, one row each).
 #pragma once
 
 #include <memory>

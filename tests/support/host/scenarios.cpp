@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "model/scene/ball_paths.h"
+
 namespace host {
 
 namespace {
@@ -19,24 +21,16 @@ scene::scenario one_ball_scenario(const scene::trajectory& path, int frames) {
     return s;
 }
 
-// Motion starts at the last still frame's time, so frames 0 .. still-1 are identical.
-double motion_start_s(int still_frames, double period_s) {
-    return (still_frames > 0 ? still_frames - 1 : 0) * period_s;
-}
-
 }  // namespace
 
 scene::scenario static_scenario(int frames) {
-    return one_ball_scenario(scene::trajectory::still({-0.3, 0.0, 2.6}), frames);
+    return one_ball_scenario(scene::resting_path(2.6), frames);
 }
 
 scene::scenario circling_scenario(double depth_m, int still_frames, int frames) {
     const double period = scene::scenario{}.frame_period_s;
-    const double pi = std::acos(-1.0);
-    const double radius = 0.15 * depth_m, speed = 0.41 * depth_m;  // m, m/s
     return one_ball_scenario(
-        scene::trajectory::circle({0.0, 0.0, depth_m}, radius, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0},
-                                  speed / radius, pi, motion_start_s(still_frames, period)),
+        scene::circling_path(depth_m, /*speed=*/1.0, scene::motion_start_s(still_frames, period)),
         frames);
 }
 
@@ -47,7 +41,7 @@ scene::scenario exit_return_scenario(int still_frames) {
     // Phase pi: the leftmost point; increasing angle goes up (-Y) first.
     return one_ball_scenario(
         scene::trajectory::circle({0.7, 0.0, 2.5}, radius, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0},
-                                  speed / radius, pi, motion_start_s(still_frames, period)),
+                                  speed / radius, pi, scene::motion_start_s(still_frames, period)),
         still_frames + 110);
 }
 

@@ -1,20 +1,22 @@
-// Stereo scenarios for the firmware's end-to-end tests, benchmarks and the
-// demo, beside scene::default_scenario (a thrown, bouncing ball at
-// 2.6 m -> 1.6 m). All use the default rig and the procedural background at
-// 5 m; one 5 cm ball. Frame n is taken at n * 24.5 ms.
+// Stereo scenarios for the firmware's end-to-end tests and benchmarks, beside
+// scene::default_scenario (a thrown, bouncing ball at 2.6 m -> 1.6 m). All use the default rig and
+// the procedural background at 5 m; one 5 cm ball. Frame n is taken at n * 24.5 ms.
 #pragma once
 
 #include "model/scene/sequence.h"
 
 namespace host {
 
-// The ball rests at (-0.3, 0, 2.6) m for every frame: nothing moves.
+// The ball rests at (-0.3, 0, 2.6) m (scene::resting_path) for every frame:
+// nothing moves.
 scene::scenario static_scenario(int frames = 40);
 
-// The ball still for still_frames frames, then circling in the plane
-// Z = depth_m around the optical axis, radius 0.15 * depth_m (118 px in the
-// image) at 0.41 * depth_m m/s (8 px per frame at any depth). With depth_m at
-// 1 and 3 it puts the ball at both ends of DESIGN.md's 1-3 m accuracy range.
+// The ball still for still_frames frames, then on scene::circling_path
+// (model/scene/ball_paths.h, also `stereosim run --scenario near / far`): in
+// the plane Z = depth_m around the optical axis, radius 0.15 * depth_m (118 px
+// in the image) at 0.41 * depth_m m/s (8 px per frame at any depth). With
+// depth_m at 1 and 3 it puts the ball at both ends of DESIGN.md's 1-3 m
+// accuracy range.
 scene::scenario circling_scenario(double depth_m, int still_frames = 4, int frames = 40);
 
 // The ball circles in the plane Z = 2.5 m, centre (0.7, 0, 2.5) m, radius
