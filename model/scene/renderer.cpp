@@ -26,6 +26,98 @@ bool contains(const dsp::box& b, int x, int y) {
     return x >= b.x && x < b.right() && y >= b.y && y < b.bottom();
 }
 
+// Each ball's state at t_s and the pixels to ray cast for it in `cam`.
+std::vector<ball_frame> balls_at(const std::vector<ball_desc>& descs, const pinhole_camera& cam,
+                                 double t_s) {
+    const int w = cam.width, h = cam.height;
+    std::vector<ball_frame> balls;
+    for (const ball_desc& b : descs) {
+        ball_frame f{b.path.position(t_s), b.radius_m, b.orientation(t_s), {}};
+        const sphere_image si = project_sphere(cam, f.centre, f.radius);
+        if (si.valid && !si.pixel_box.empty()) {
+            // One pixel of margin against rounding at the closed-form edge.
+            const int x0 = std::max(0, si.pixel_box.x - 1), y0 = std::max(0, si.pixel_box.y - 1);
+            const int x1 = std::min(w, si.pixel_box.right() + 1);
+            const int y1 = std::min(h, si.pixel_box.bottom() + 1);
+            f.box = dsp::box{x0, y0, x1 - x0, y1 - y0};
+        }
+        balls.push_back(f);
+    }
+    return balls;
+}
+
+void fill_background(const std::vector<float>& bg, double gain, rgb_image* out) {
+    for (size_t p = 0; p < out->pixels.size(); ++p) {
+        out->pixels[p] = dsp::rgb8{quantize(gain * bg[3 * p]), quantize(gain * bg[3 * p + 1]),
+                                   quantize(gain * bg[3 * p + 2])};
+    }
+}
+
+// The ray casting of one render: one camera, the balls at one time.
+struct ball_caster {
+    const scene_desc& desc;
+    const std::vector<sphere_texture>& textures;
+    const pinhole_camera& cam;
+    const std::vector<ball_frame>& balls;
+    double plane_t;  // the background plane along a ray (rays have unit Z)
+    std::vector<ball_render_stats>* stats;
+
+    // The nearest ball the ray hits before the plane (*t: where), or -1.
+    int nearest_ball(const vec3& d, double* t_hit) const {
+        double best_t = plane_t;
+        int best = -1;
+        for (size_t j = 0; j < balls.size(); ++j) {
+            if (balls[j].box.empty()) continue;
+            double t;
+            if (intersect_sphere(cam.centre, d, balls[j].centre, balls[j].radius, &t) &&
+                t < best_t) {
+                best_t = t;
+                best = static_cast<int>(j);
+            }
+        }
+        *t_hit = best_t;
+        return best;
+    }
+
+    // The radiance ball k reflects at point p of it.
+    vec3 radiance(size_t k, const vec3& p) const {
+        const ball_frame& hit = balls[k];
+        const ball_desc& ball = desc.balls[k];
+        const lighting& light = desc.light;
+        const vec3 normal = (p - hit.centre) * (1.0 / hit.radius);
+        double level =
+            light.light_level * textures[k].factor(hit.orientation.transposed_times(normal));
+        if (ball.material.shaded) {
+            level *= light.ambient +
+                     (1.0 - light.ambient) * std::max(0.0, dot(normal, light.direction_to_light));
+        }
+        return ball.material.albedo * level;
+    }
+
+    // The n x n sub-samples of pixel (x, y): *sum of those that hit a ball,
+    // and their number.
+    int cast_pixel(int x, int y, int n, vec3* sum) const {
+        int hits = 0;
+        for (int b = 0; b < n; ++b) {
+            for (int a = 0; a < n; ++a) {
+                const vec3 d = cam.ray_direction(x - 0.5 + (a + 0.5) / n, y - 0.5 + (b + 0.5) / n);
+                double best_t;
+                const int best = nearest_ball(d, &best_t);
+                if (best < 0) continue;
+                const vec3 p = cam.centre + d * best_t;
+                *sum = *sum + radiance(static_cast<size_t>(best), p);
+                ++hits;
+                if (stats) {
+                    ball_render_stats& s = (*stats)[static_cast<size_t>(best)];
+                    ++s.visible_subsamples;
+                    s.depth_sum_m += p.z;
+                }
+            }
+        }
+        return hits;
+    }
+};
+
 }  // namespace
 
 renderer::renderer(scene_desc desc) : m_desc(std::move(desc)) {
@@ -45,31 +137,15 @@ void renderer::render(camera_id id, double t_s, rgb_image* out, gray_image* cove
     const std::vector<float>& bg = m_background[static_cast<size_t>(id)];
 
     out->resize(w, h);
-    for (size_t p = 0; p < out->pixels.size(); ++p) {
-        out->pixels[p] = dsp::rgb8{quantize(gain * bg[3 * p]), quantize(gain * bg[3 * p + 1]),
-                                   quantize(gain * bg[3 * p + 2])};
-    }
+    fill_background(bg, gain, out);
     if (coverage) coverage->resize(w, h);
     if (stats) stats->assign(m_desc.balls.size(), ball_render_stats{});
 
-    std::vector<ball_frame> balls;
-    for (const ball_desc& b : m_desc.balls) {
-        ball_frame f{b.path.position(t_s), b.radius_m, b.orientation(t_s), {}};
-        const sphere_image si = project_sphere(cam, f.centre, f.radius);
-        if (si.valid && !si.pixel_box.empty()) {
-            // One pixel of margin against rounding at the closed-form edge.
-            const int x0 = std::max(0, si.pixel_box.x - 1), y0 = std::max(0, si.pixel_box.y - 1);
-            const int x1 = std::min(w, si.pixel_box.right() + 1);
-            const int y1 = std::min(h, si.pixel_box.bottom() + 1);
-            f.box = dsp::box{x0, y0, x1 - x0, y1 - y0};
-        }
-        balls.push_back(f);
-    }
-
+    const std::vector<ball_frame> balls = balls_at(m_desc.balls, cam, t_s);
     const int n = m_desc.supersampling;
     const double inv_n2 = 1.0 / (n * n);
-    const double plane_t = m_desc.background.depth_m - cam.centre.z;  // rays have unit Z
-    const lighting& light = m_desc.light;
+    const ball_caster caster{
+        m_desc, m_ball_textures, cam, balls, m_desc.background.depth_m - cam.centre.z, stats};
 
     for (size_t k = 0; k < balls.size(); ++k) {
         const dsp::box& box = balls[k].box;
@@ -81,45 +157,7 @@ void renderer::render(camera_id id, double t_s, rgb_image* out, gray_image* cove
                 if (done) continue;
 
                 vec3 sum;
-                int hits = 0;
-                for (int b = 0; b < n; ++b) {
-                    for (int a = 0; a < n; ++a) {
-                        const vec3 d =
-                            cam.ray_direction(x - 0.5 + (a + 0.5) / n, y - 0.5 + (b + 0.5) / n);
-                        double best_t = plane_t;
-                        int best = -1;
-                        for (size_t j = 0; j < balls.size(); ++j) {
-                            if (balls[j].box.empty()) continue;
-                            double t;
-                            if (intersect_sphere(cam.centre, d, balls[j].centre, balls[j].radius,
-                                                 &t) &&
-                                t < best_t) {
-                                best_t = t;
-                                best = static_cast<int>(j);
-                            }
-                        }
-                        if (best < 0) continue;
-                        const ball_frame& hit = balls[static_cast<size_t>(best)];
-                        const ball_desc& desc = m_desc.balls[static_cast<size_t>(best)];
-                        const vec3 p = cam.centre + d * best_t;
-                        const vec3 normal = (p - hit.centre) * (1.0 / hit.radius);
-                        double level =
-                            light.light_level * m_ball_textures[static_cast<size_t>(best)].factor(
-                                                    hit.orientation.transposed_times(normal));
-                        if (desc.material.shaded) {
-                            level *= light.ambient +
-                                     (1.0 - light.ambient) *
-                                         std::max(0.0, dot(normal, light.direction_to_light));
-                        }
-                        sum = sum + desc.material.albedo * level;
-                        ++hits;
-                        if (stats) {
-                            ball_render_stats& s = (*stats)[static_cast<size_t>(best)];
-                            ++s.visible_subsamples;
-                            s.depth_sum_m += p.z;
-                        }
-                    }
-                }
+                const int hits = caster.cast_pixel(x, y, n, &sum);
                 if (hits == 0) continue;  // the background value is already there
                 const size_t p = static_cast<size_t>(y) * static_cast<size_t>(w) + x;
                 const double miss = (n * n - hits);

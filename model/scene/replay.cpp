@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -88,185 +89,272 @@ double replay_truth::value(int frame, const std::string& column) const {
     throw std::out_of_range("replay truth: no column '" + column + "'");
 }
 
-replay::replay(const std::string& manifest_path, int expected_width, int expected_height)
-    : m_manifest_path(manifest_path) {
-    const auto fail = [&](int line, const std::string& what) -> void {
-        throw std::runtime_error("replay manifest " + manifest_path +
-                                 (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " +
-                                 what);
-    };
-    std::ifstream in(manifest_path);
-    if (!in) fail(0, "cannot open");
-    const std::filesystem::path folder = std::filesystem::path(manifest_path).parent_path();
-    const auto resolve = [&](const std::string& p) {
-        const std::filesystem::path path(p);
-        return (path.is_absolute() ? path : folder / path).string();
-    };
+namespace {
 
+// "<what> <file>[:<line>]: <why>"; line 0: the file as a whole.
+[[noreturn]] void throw_at(const char* what, const std::string& file, int line,
+                           const std::string& why) {
+    throw std::runtime_error(std::string(what) + " " + file +
+                             (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + why);
+}
+
+[[noreturn]] void manifest_error(const std::string& manifest, int line, const std::string& why) {
+    throw_at("replay manifest", manifest, line, why);
+}
+
+// A file pattern as parsed, before it becomes the replay's name_pattern.
+struct file_pattern {
+    std::string prefix, suffix;
+    int zero_pad = 0;
+};
+
+// What the manifest says, before the image files are checked.
+struct manifest_values {
+    int width = 0, height = 0, frames = 0, first_number = 0;
+    replay_calibration calibration;
+    replay::after_last_policy after_last = replay::after_last_policy::error;
+    file_pattern patterns[2];  // [camera_id], prefix resolved
+    std::string truth_path;    // resolved; "" = none
+};
+
+// One "key values..." line of the manifest, with the checks of its values.
+struct manifest_line {
+    const std::string& manifest;
+    int line_no;
+    std::string key, rest;
+    std::vector<std::string> args;
+
+    [[noreturn]] void fail(const std::string& why) const { manifest_error(manifest, line_no, why); }
+    void want_args(size_t n) const {
+        if (args.size() != n)
+            fail("'" + key + "' takes " + std::to_string(n) + " value(s), got " +
+                 std::to_string(args.size()));
+    }
+    double number(size_t i) const {
+        double v = 0.0;
+        if (!parse_double(args[i], &v)) fail("'" + args[i] + "' is not a number");
+        return v;
+    }
+    int integer(size_t i) const {
+        int v = 0;
+        if (!parse_int(args[i], &v)) fail("'" + args[i] + "' is not an integer");
+        return v;
+    }
+};
+
+// A path relative to the manifest's folder (or absolute).
+std::string resolve(const std::filesystem::path& folder, const std::string& p) {
+    const std::filesystem::path path(p);
+    return (path.is_absolute() ? path : folder / path).string();
+}
+
+// The calibration keys; false if `l` is not one.
+bool apply_calibration_key(const manifest_line& l, replay_calibration* c) {
+    if (l.key == "focal_px") {
+        l.want_args(1);
+        c->focal_px = l.number(0);
+        if (!(c->focal_px > 0.0)) l.fail("focal_px must be > 0");
+    } else if (l.key == "baseline_m") {
+        l.want_args(1);
+        c->baseline_m = l.number(0);
+        if (!(c->baseline_m > 0.0)) l.fail("baseline_m must be > 0");
+    } else if (l.key == "principal_left") {
+        l.want_args(2);
+        c->cx_left = l.number(0);
+        c->cy_left = l.number(1);
+    } else if (l.key == "principal_right") {
+        l.want_args(2);
+        c->cx_right = l.number(0);
+        c->cy_right = l.number(1);
+    } else {
+        return false;
+    }
+    return true;
+}
+
+replay::after_last_policy after_last_of(const manifest_line& l) {
+    l.want_args(1);
+    if (l.args[0] == "error") return replay::after_last_policy::error;
+    if (l.args[0] == "hold") return replay::after_last_policy::hold;
+    if (l.args[0] == "loop") return replay::after_last_policy::loop;
+    l.fail("after_last must be error, hold or loop");
+}
+
+void apply_key(const manifest_line& l, const std::filesystem::path& folder, manifest_values* m) {
+    if (l.key == "size") {
+        l.want_args(2);
+        m->width = l.integer(0);
+        m->height = l.integer(1);
+        if (m->width <= 0 || m->height <= 0) l.fail("size must be positive");
+    } else if (l.key == "frames") {
+        l.want_args(1);
+        m->frames = l.integer(0);
+        if (m->frames <= 0) l.fail("frames must be >= 1");
+    } else if (l.key == "left" || l.key == "right") {
+        if (l.rest.empty()) l.fail("'" + l.key + "' needs a file pattern");
+        file_pattern p;
+        if (!parse_pattern(l.rest, &p))
+            l.fail("file pattern '" + l.rest + "' needs exactly one %d or %0Nd");
+        p.prefix = resolve(folder, p.prefix);
+        m->patterns[l.key == "left" ? 0 : 1] = p;
+    } else if (l.key == "first_number") {
+        l.want_args(1);
+        m->first_number = l.integer(0);
+        if (m->first_number < 0) l.fail("first_number must be >= 0");
+    } else if (l.key == "after_last") {
+        m->after_last = after_last_of(l);
+    } else if (l.key == "truth") {
+        if (l.rest.empty()) l.fail("'truth' needs a file");
+        m->truth_path = resolve(folder, l.rest);
+    } else if (!apply_calibration_key(l, &m->calibration)) {
+        l.fail("unknown key '" + l.key + "'");
+    }
+}
+
+manifest_line split_line(const std::string& manifest, int line_no, const std::string& line) {
+    const auto space = line.find_first_of(" \t");
+    manifest_line l{manifest, line_no, line.substr(0, space), {}, {}};
+    l.rest = space == std::string::npos ? std::string() : trim(line.substr(space));
+    l.args = split_ws(l.rest);
+    return l;
+}
+
+manifest_values read_manifest(const std::string& manifest) {
+    std::ifstream in(manifest);
+    if (!in) manifest_error(manifest, 0, "cannot open");
+    const std::filesystem::path folder = std::filesystem::path(manifest).parent_path();
+    manifest_values m;
     std::set<std::string> seen;
     bool have_header = false;
-    name_pattern patterns[2];
-    std::string truth_path;
     int line_no = 0;
     for (std::string raw; std::getline(in, raw);) {
         ++line_no;
         const auto hash = raw.find('#');
         const std::string line = trim(hash == std::string::npos ? raw : raw.substr(0, hash));
         if (line.empty()) continue;
-        const auto space = line.find_first_of(" \t");
-        const std::string key = line.substr(0, space);
-        const std::string rest =
-            space == std::string::npos ? std::string() : trim(line.substr(space));
-        const std::vector<std::string> args = split_ws(rest);
+        const manifest_line l = split_line(manifest, line_no, line);
         if (!have_header) {
-            if (key != "stereosim_replay" || args.size() != 1 || args[0] != "1")
-                fail(line_no, "the first line must be 'stereosim_replay 1'");
+            if (l.key != "stereosim_replay" || l.args.size() != 1 || l.args[0] != "1")
+                l.fail("the first line must be 'stereosim_replay 1'");
             have_header = true;
             continue;
         }
-        if (!seen.insert(key).second) fail(line_no, "key '" + key + "' given twice");
-        const auto want_args = [&](size_t n) {
-            if (args.size() != n)
-                fail(line_no, "'" + key + "' takes " + std::to_string(n) + " value(s), got " +
-                                  std::to_string(args.size()));
-        };
-        const auto number = [&](size_t i) {
-            double v = 0.0;
-            if (!parse_double(args[i], &v)) fail(line_no, "'" + args[i] + "' is not a number");
-            return v;
-        };
-        const auto integer = [&](size_t i) {
-            int v = 0;
-            if (!parse_int(args[i], &v)) fail(line_no, "'" + args[i] + "' is not an integer");
-            return v;
-        };
-        if (key == "size") {
-            want_args(2);
-            m_width = integer(0);
-            m_height = integer(1);
-            if (m_width <= 0 || m_height <= 0) fail(line_no, "size must be positive");
-        } else if (key == "frames") {
-            want_args(1);
-            m_frames = integer(0);
-            if (m_frames <= 0) fail(line_no, "frames must be >= 1");
-        } else if (key == "left" || key == "right") {
-            if (rest.empty()) fail(line_no, "'" + key + "' needs a file pattern");
-            name_pattern p;
-            if (!parse_pattern(rest, &p))
-                fail(line_no, "file pattern '" + rest + "' needs exactly one %d or %0Nd");
-            p.prefix = resolve(p.prefix);
-            patterns[key == "left" ? 0 : 1] = p;
-        } else if (key == "first_number") {
-            want_args(1);
-            m_first_number = integer(0);
-            if (m_first_number < 0) fail(line_no, "first_number must be >= 0");
-        } else if (key == "focal_px") {
-            want_args(1);
-            m_calibration.focal_px = number(0);
-            if (!(m_calibration.focal_px > 0.0)) fail(line_no, "focal_px must be > 0");
-        } else if (key == "baseline_m") {
-            want_args(1);
-            m_calibration.baseline_m = number(0);
-            if (!(m_calibration.baseline_m > 0.0)) fail(line_no, "baseline_m must be > 0");
-        } else if (key == "principal_left") {
-            want_args(2);
-            m_calibration.cx_left = number(0);
-            m_calibration.cy_left = number(1);
-        } else if (key == "principal_right") {
-            want_args(2);
-            m_calibration.cx_right = number(0);
-            m_calibration.cy_right = number(1);
-        } else if (key == "after_last") {
-            want_args(1);
-            if (args[0] == "error")
-                m_after_last = after_last_policy::error;
-            else if (args[0] == "hold")
-                m_after_last = after_last_policy::hold;
-            else if (args[0] == "loop")
-                m_after_last = after_last_policy::loop;
-            else
-                fail(line_no, "after_last must be error, hold or loop");
-        } else if (key == "truth") {
-            if (rest.empty()) fail(line_no, "'truth' needs a file");
-            truth_path = resolve(rest);
-        } else {
-            fail(line_no, "unknown key '" + key + "'");
-        }
+        if (!seen.insert(l.key).second) l.fail("key '" + l.key + "' given twice");
+        apply_key(l, folder, &m);
     }
-    if (!have_header) fail(0, "empty (no 'stereosim_replay 1' line)");
+    if (!have_header) manifest_error(manifest, 0, "empty (no 'stereosim_replay 1' line)");
     for (const char* key : {"size", "frames", "left", "right", "focal_px", "baseline_m",
                             "principal_left", "principal_right"})
-        if (!seen.count(key)) fail(0, std::string("missing required key '") + key + "'");
+        if (!seen.count(key))
+            manifest_error(manifest, 0, std::string("missing required key '") + key + "'");
+    return m;
+}
 
+// Every frame file of one camera exists and has the manifest's size.
+void check_frame_files(const std::string& manifest, const manifest_values& m, int side,
+                       const std::function<std::string(int frame)>& file_of) {
+    const std::string side_name = side == 0 ? "left" : "right";
+    for (int f = 0; f < m.frames; ++f) {
+        const std::string file = file_of(f);
+        const png_info info = [&] {
+            try {
+                return read_png_info(file);
+            } catch (const std::runtime_error& e) {
+                manifest_error(manifest, 0,
+                               side_name + " frame " + std::to_string(f) + ": " + e.what());
+            }
+        }();
+        if (info.width != m.width || info.height != m.height)
+            manifest_error(manifest, 0,
+                           side_name + " frame " + std::to_string(f) + " '" + file + "' is " +
+                               std::to_string(info.width) + "x" + std::to_string(info.height) +
+                               ", the manifest says " + std::to_string(m.width) + "x" +
+                               std::to_string(m.height));
+    }
+}
+
+// The fields of one CSV line, trimmed; a trailing comma ends with an empty one.
+std::vector<std::string> csv_fields(const std::string& raw) {
+    std::vector<std::string> fields;
+    std::istringstream row(raw);
+    for (std::string f; std::getline(row, f, ',');) fields.push_back(trim(f));
+    if (!raw.empty() && raw.back() == ',') fields.push_back({});
+    return fields;
+}
+
+// The header's index of the "frame" column.
+int frame_column_of(const std::vector<std::string>& header, const std::string& file, int line) {
+    int frame_column = -1;
+    for (size_t i = 0; i < header.size(); ++i) {
+        if (header[i].empty()) throw_at("replay truth", file, line, "empty column name");
+        if (header[i] == "frame") frame_column = static_cast<int>(i);
+    }
+    if (frame_column < 0) throw_at("replay truth", file, line, "no 'frame' column in the header");
+    return frame_column;
+}
+
+void add_truth_row(const std::vector<std::string>& fields, int frame_column, int frames,
+                   const std::string& file, int line, replay_truth* truth) {
+    const auto fail = [&](const std::string& why) { throw_at("replay truth", file, line, why); };
+    if (fields.size() != truth->columns.size())
+        fail(std::to_string(fields.size()) + " fields, the header has " +
+             std::to_string(truth->columns.size()));
+    std::vector<double> values(fields.size());
+    for (size_t i = 0; i < fields.size(); ++i)
+        if (!parse_double(fields[i], &values[i])) fail("'" + fields[i] + "' is not a number");
+    int frame = 0;
+    if (!parse_int(fields[frame_column], &frame) || frame < 0 || frame >= frames)
+        fail("frame '" + fields[frame_column] + "' is not 0.." + std::to_string(frames - 1));
+    if (!truth->rows.emplace(frame, std::move(values)).second)
+        fail("frame " + std::to_string(frame) + " listed twice");
+}
+
+replay_truth read_truth_csv(const std::string& file, int frames) {
+    std::ifstream csv(file);
+    if (!csv) throw_at("replay truth", file, 0, "cannot open");
+    replay_truth truth;
+    int line = 0;
+    int frame_column = -1;
+    for (std::string raw; std::getline(csv, raw);) {
+        ++line;
+        if (trim(raw).empty()) continue;
+        std::vector<std::string> fields = csv_fields(raw);
+        if (truth.columns.empty()) {
+            frame_column = frame_column_of(fields, file, line);
+            truth.columns = std::move(fields);
+            continue;
+        }
+        add_truth_row(fields, frame_column, frames, file, line, &truth);
+    }
+    if (truth.columns.empty()) throw_at("replay truth", file, 0, "empty (no header)");
+    return truth;
+}
+
+}  // namespace
+
+replay::replay(const std::string& manifest_path, int expected_width, int expected_height)
+    : m_manifest_path(manifest_path) {
+    const manifest_values m = read_manifest(manifest_path);
+    m_width = m.width;
+    m_height = m.height;
+    m_frames = m.frames;
+    m_first_number = m.first_number;
+    m_calibration = m.calibration;
+    m_after_last = m.after_last;
     if ((expected_width > 0 && expected_width != m_width) ||
         (expected_height > 0 && expected_height != m_height))
-        fail(0, "image size " + std::to_string(m_width) + "x" + std::to_string(m_height) +
-                    " does not match the sensor's active size " + std::to_string(expected_width) +
-                    "x" + std::to_string(expected_height));
-
+        manifest_error(manifest_path, 0,
+                       "image size " + std::to_string(m_width) + "x" + std::to_string(m_height) +
+                           " does not match the sensor's active size " +
+                           std::to_string(expected_width) + "x" + std::to_string(expected_height));
     for (int side = 0; side < 2; ++side) {
-        for (int f = 0; f < m_frames; ++f) {
-            const std::string file = patterns[side].format(m_first_number + f);
-            const png_info info = [&] {
-                try {
-                    return read_png_info(file);
-                } catch (const std::runtime_error& e) {
-                    fail(0, std::string(side == 0 ? "left" : "right") + " frame " +
-                                std::to_string(f) + ": " + e.what());
-                }
-                return png_info{};
-            }();
-            if (info.width != m_width || info.height != m_height)
-                fail(0, std::string(side == 0 ? "left" : "right") + " frame " + std::to_string(f) +
-                            " '" + file + "' is " + std::to_string(info.width) + "x" +
-                            std::to_string(info.height) + ", the manifest says " +
-                            std::to_string(m_width) + "x" + std::to_string(m_height));
-        }
-        m_pattern[side] = patterns[side];
+        const file_pattern& p = m.patterns[side];
+        m_pattern[side] = name_pattern{p.prefix, p.suffix, p.zero_pad};
+        check_frame_files(manifest_path, m, side, [&](int frame) {
+            return m_pattern[side].format(m_first_number + frame);
+        });
     }
-
-    if (!truth_path.empty()) {
-        std::ifstream csv(truth_path);
-        const auto csv_fail = [&](int line, const std::string& what) -> void {
-            throw std::runtime_error("replay truth " + truth_path +
-                                     (line > 0 ? ":" + std::to_string(line) : std::string()) +
-                                     ": " + what);
-        };
-        if (!csv) csv_fail(0, "cannot open");
-        int csv_line = 0;
-        int frame_column = -1;
-        for (std::string raw; std::getline(csv, raw);) {
-            ++csv_line;
-            if (trim(raw).empty()) continue;
-            std::vector<std::string> fields;
-            std::istringstream row(raw);
-            for (std::string f; std::getline(row, f, ',');) fields.push_back(trim(f));
-            if (!raw.empty() && raw.back() == ',') fields.push_back({});
-            if (m_truth.columns.empty()) {
-                for (size_t i = 0; i < fields.size(); ++i) {
-                    if (fields[i].empty()) csv_fail(csv_line, "empty column name");
-                    if (fields[i] == "frame") frame_column = static_cast<int>(i);
-                }
-                if (frame_column < 0) csv_fail(csv_line, "no 'frame' column in the header");
-                m_truth.columns = fields;
-                continue;
-            }
-            if (fields.size() != m_truth.columns.size())
-                csv_fail(csv_line, std::to_string(fields.size()) + " fields, the header has " +
-                                       std::to_string(m_truth.columns.size()));
-            std::vector<double> values(fields.size());
-            for (size_t i = 0; i < fields.size(); ++i)
-                if (!parse_double(fields[i], &values[i]))
-                    csv_fail(csv_line, "'" + fields[i] + "' is not a number");
-            int frame = 0;
-            if (!parse_int(fields[frame_column], &frame) || frame < 0 || frame >= m_frames)
-                csv_fail(csv_line, "frame '" + fields[frame_column] + "' is not 0.." +
-                                       std::to_string(m_frames - 1));
-            if (!m_truth.rows.emplace(frame, std::move(values)).second)
-                csv_fail(csv_line, "frame " + std::to_string(frame) + " listed twice");
-        }
-        if (m_truth.columns.empty()) csv_fail(0, "empty (no header)");
-    }
+    if (!m.truth_path.empty()) m_truth = read_truth_csv(m.truth_path, m_frames);
 }
 
 pinhole_camera replay::camera(camera_id id) const {

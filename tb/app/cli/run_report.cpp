@@ -51,14 +51,21 @@ int period_of(simtime::ticks tick, simtime::ticks period) {
     return static_cast<int>(tick / period);
 }
 
-json frame_row(const platform::period_budget& period, const platform::platform_top& top,
-               const platform::scoreboard_report& score, const platform::budget_report& budget,
-               const std::set<int>& over_budget_periods) {
-    json row;
-    row["frame"] = period.index;
-    row["start_ms"] = round6(ticks_to_ms(period.begin));
+// The pair that became ready in the period (and its index in score.pairs), or null.
+const platform::pair_check* pair_ready_in(const platform::period_budget& period,
+                                          const platform::scoreboard_report& score, size_t* index) {
+    for (size_t i = 0; i < score.pairs.size(); ++i) {
+        if (score.pairs[i].ready >= period.begin && score.pairs[i].ready < period.end) {
+            *index = i;
+            return &score.pairs[i];
+        }
+    }
+    return nullptr;
+}
 
-    // ---- sync: the card's verdicts in this period, the truth of its pair
+// The card's verdicts in the period, the truth of its pair.
+json period_sync_json(const platform::period_budget& period, const platform::platform_top& top,
+                      const platform::scoreboard_report& score, const platform::pair_check* pair) {
     const platform::island& isl = top.cycle_island();
     auto rises_in = [&](const std::vector<simtime::ticks>& rises) {
         int n = 0;
@@ -67,15 +74,6 @@ json frame_row(const platform::period_budget& period, const platform::platform_t
     };
     const int ready = rises_in(isl.irq_rises(0));
     const int sync_errors = rises_in(isl.irq_rises(1));
-    const platform::pair_check* pair = nullptr;
-    size_t pair_index = 0;
-    for (size_t i = 0; i < score.pairs.size(); ++i) {
-        if (score.pairs[i].ready >= period.begin && score.pairs[i].ready < period.end) {
-            pair = &score.pairs[i];
-            pair_index = i;
-            break;
-        }
-    }
     int oe_restarts = 0;
     for (size_t s = 1; s < score.starts.size(); ++s)
         oe_restarts +=
@@ -85,9 +83,12 @@ json frame_row(const platform::period_budget& period, const platform::platform_t
     sync["oe_restarts"] = oe_restarts;
     sync["pair"] = pair ? json(pair->pair) : json(nullptr);
     sync["in_step"] = pair ? json(pair->truth_in_step) : json(nullptr);
-    row["sync"] = sync;
+    return sync;
+}
 
-    // ---- budget of the period
+json period_budget_json(const platform::period_budget& period,
+                        const platform::budget_report& budget,
+                        const std::set<int>& over_budget_periods) {
     json b;
     b["judged"] = period.judged;
     b["over_budget"] = over_budget_periods.count(period.index) > 0;
@@ -98,64 +99,172 @@ json frame_row(const platform::period_budget& period, const platform::platform_t
                             {"right", period.fifo_peak_words[1]}};
     b["overflow"] = period.overflow;
     b["drops"] = period.drops;
-    row["budget"] = b;
+    return b;
+}
 
-    // ---- the pair forwarded in this period and what the firmware made of it
-    json estimate = nullptr, truth = nullptr, errors = nullptr, stage_ms = nullptr;
-    json state = nullptr, box_right = nullptr, box_left = nullptr, disparity = nullptr;
-    json pair_json = nullptr;
-    if (pair) {
-        const platform::pair_budget& pb = budget.pairs[pair_index];
-        pair_json = {
-            {"number", pair->pair},
-            {"scene_frame", pair->scene_frame},
-            {"captured", pair->captured},
-            {"processed", pair->processed},
+json pair_summary_json(const platform::pair_check& pair, const platform::pair_budget& pb) {
+    return {{"number", pair.pair},
+            {"scene_frame", pair.scene_frame},
+            {"captured", pair.captured},
+            {"processed", pair.processed},
             {"capture_ms", round6(pb.capture_ms)},
-            {"processing_ms", pair->processed ? json(round6(pb.processing_ms)) : json(nullptr)},
-            {"latency_ms", pair->processed ? json(round6(pair->latency_ms)) : json(nullptr)}};
-        if (pair->processed) {
-            const dsp::frame_output& out = pair->record.out;
-            const platform::frame_errors& e = pair->errors;
-            stage_ms = stage_ms_json(pb.stage_ms);
-            state = dsp::tracker_state_name(out.state);
-            if (out.has_object) {
-                box_right = box_json(out.box_right);
-                box_left = box_json(out.box_left);
-            }
-            if (out.has_point) {
-                disparity = round6(out.disparity_q8 / 256.0);
-                estimate = {{"x", round6(out.point.x / 1000.0)},
-                            {"y", round6(out.point.y / 1000.0)},
-                            {"z", round6(out.point.z / 1000.0)}};
-            }
-            if (pair->record.has_truth) {
-                const scene::ball_truth& t = pair->record.truth;
-                truth = {{"x", round6(t.centre_m.x * 1000.0)},
-                         {"y", round6(t.centre_m.y * 1000.0)},
-                         {"z", round6(t.centre_m.z * 1000.0)},
-                         {"z_visible", round6(t.visible_mean_depth_m * 1000.0)}};
-            }
-            errors = {
-                {"x_mm", e.point_scored ? json(round6(e.err_x_mm)) : json(nullptr)},
-                {"y_mm", e.point_scored ? json(round6(e.err_y_mm)) : json(nullptr)},
-                {"z_mm", e.point_scored ? json(round6(e.err_z_mm)) : json(nullptr)},
-                {"depth_pct", e.point_scored ? json(round6(e.depth_err_pct)) : json(nullptr)},
-                {"disparity_px", e.point_scored ? json(round6(e.disparity_err_px)) : json(nullptr)},
-                {"box_centre_px",
-                 e.box_scored ? json(round6(e.box_centre_err_px)) : json(nullptr)}};
-        }
+            {"processing_ms", pair.processed ? json(round6(pb.processing_ms)) : json(nullptr)},
+            {"latency_ms", pair.processed ? json(round6(pair.latency_ms)) : json(nullptr)}};
+}
+
+json truth_json(const scene::ball_truth& t) {
+    return {{"x", round6(t.centre_m.x * 1000.0)},
+            {"y", round6(t.centre_m.y * 1000.0)},
+            {"z", round6(t.centre_m.z * 1000.0)},
+            {"z_visible", round6(t.visible_mean_depth_m * 1000.0)}};
+}
+
+json errors_json(const platform::frame_errors& e) {
+    return {{"x_mm", e.point_scored ? json(round6(e.err_x_mm)) : json(nullptr)},
+            {"y_mm", e.point_scored ? json(round6(e.err_y_mm)) : json(nullptr)},
+            {"z_mm", e.point_scored ? json(round6(e.err_z_mm)) : json(nullptr)},
+            {"depth_pct", e.point_scored ? json(round6(e.depth_err_pct)) : json(nullptr)},
+            {"disparity_px", e.point_scored ? json(round6(e.disparity_err_px)) : json(nullptr)},
+            {"box_centre_px", e.box_scored ? json(round6(e.box_centre_err_px)) : json(nullptr)}};
+}
+
+// The pair forwarded in the period and what the firmware made of it: null
+// fields without a pair, or for what the firmware did not produce.
+void add_pair_fields(json& row, const platform::pair_check* pair, const platform::pair_budget* pb) {
+    row["pair"] = pair ? pair_summary_json(*pair, *pb) : json(nullptr);
+    for (const char* key : {"stage_ms", "tracker_state", "box_right", "box_left", "disparity_px",
+                            "estimate", "truth", "errors"})
+        row[key] = nullptr;
+    if (!pair || !pair->processed) return;
+    const dsp::frame_output& out = pair->record.out;
+    row["stage_ms"] = stage_ms_json(pb->stage_ms);
+    row["tracker_state"] = dsp::tracker_state_name(out.state);
+    if (out.has_object) {
+        row["box_right"] = box_json(out.box_right);
+        row["box_left"] = box_json(out.box_left);
     }
-    row["pair"] = pair_json;
-    row["stage_ms"] = stage_ms;
-    row["tracker_state"] = state;
-    row["box_right"] = box_right;
-    row["box_left"] = box_left;
-    row["disparity_px"] = disparity;
-    row["estimate"] = estimate;
-    row["truth"] = truth;
-    row["errors"] = errors;
+    if (out.has_point) {
+        row["disparity_px"] = round6(out.disparity_q8 / 256.0);
+        row["estimate"] = {{"x", round6(out.point.x / 1000.0)},
+                           {"y", round6(out.point.y / 1000.0)},
+                           {"z", round6(out.point.z / 1000.0)}};
+    }
+    if (pair->record.has_truth) row["truth"] = truth_json(pair->record.truth);
+    row["errors"] = errors_json(pair->errors);
+}
+
+json frame_row(const platform::period_budget& period, const platform::platform_top& top,
+               const platform::scoreboard_report& score, const platform::budget_report& budget,
+               const std::set<int>& over_budget_periods) {
+    json row;
+    row["frame"] = period.index;
+    row["start_ms"] = round6(ticks_to_ms(period.begin));
+    size_t pair_index = 0;
+    const platform::pair_check* pair = pair_ready_in(period, score, &pair_index);
+    row["sync"] = period_sync_json(period, top, score, pair);
+    row["budget"] = period_budget_json(period, budget, over_budget_periods);
+    add_pair_fields(row, pair, pair ? &budget.pairs[pair_index] : nullptr);
     return row;
+}
+
+// Periods with an overrun (*over: a period's own, or the period its pair
+// became ready in) and report["overruns"].
+json overruns_json(const platform::scoreboard_report& score, const platform::budget_report& budget,
+                   simtime::ticks period_ticks, std::set<int>* over) {
+    json overruns = json::array();
+    for (const platform::overrun& o : budget.overruns) {
+        int period = o.period;
+        if (period < 0) {
+            for (const platform::pair_check& p : score.pairs)
+                if (p.pair == o.pair) period = period_of(p.ready, period_ticks);
+        }
+        if (period >= 0) over->insert(period);
+        overruns.push_back({{"resource", platform::resource_name(o.what)},
+                            {"stage", dsp::stage_name(o.stage)},
+                            {"period", o.period >= 0 ? json(o.period) : json(nullptr)},
+                            {"pair", o.pair > 0 ? json(o.pair) : json(nullptr)},
+                            {"value_ms", round6(o.value_ms)},
+                            {"limit_ms", round6(o.limit_ms)},
+                            {"text", o.describe()}});
+    }
+    return overruns;
+}
+
+json sync_summary_json(const platform::scoreboard_report& score) {
+    return {{"mismatches_detected", score.card_sync_errors},
+            {"resyncs", score.oe_restarts},
+            {"unsynced_pairs_used", score.used_out_of_step},
+            {"oe_starts", score.starts.size()},
+            {"starts_agreeing_with_truth", score.starts_agreeing},
+            {"firmware_sync_errors", score.firmware_sync_errors},
+            {"pairs_forwarded", score.pairs.size()},
+            {"forwarded_out_of_step", score.forwarded_out_of_step},
+            {"used_before_verdict", score.used_before_verdict},
+            {"first_in_step_ms", score.first_in_step_ready >= 0
+                                     ? json(round6(ticks_to_ms(score.first_in_step_ready)))
+                                     : json(nullptr)}};
+}
+
+json timing_summary_json(const platform::budget_report& budget, size_t frames_over_budget) {
+    json stage_ms = json::object();
+    for (int s = 0; s < dsp::stage_count; ++s)
+        stage_ms[dsp::stage_name(static_cast<dsp::stage>(s))] = {
+            {"mean", round6(budget.stage_ms_mean[s])}, {"max", round6(budget.stage_ms_max[s])}};
+    return {{"budget_ms", round6(budget.period_ms)},
+            {"frames_over_budget", frames_over_budget},
+            {"judged_periods", budget.judged_periods},
+            {"stage_ms", stage_ms},
+            {"capture_ms",
+             {{"mean", round6(budget.mean_capture_ms)}, {"max", round6(budget.max_capture_ms)}}},
+            {"processing_ms_max", round6(budget.max_processing_ms)},
+            {"latency_ms_max", round6(budget.latency_ms_max)},
+            {"cpu_busy_ms_max", round6(budget.max_cpu_busy_ms)},
+            {"emif_busy_ms_max", round6(budget.max_emif_busy_ms)},
+            {"fifo_peak_words",
+             {{"left", budget.fifo_peak_words[0]}, {"right", budget.fifo_peak_words[1]}}},
+            {"fifo_capacity_words", platform::card_fifo_words},
+            {"drops", budget.drops},
+            {"overflows", budget.overflows},
+            {"cpu_mhz", round6(budget.cpu_hz / 1e6)}};
+}
+
+json accuracy_summary_json(const platform::scoreboard_report& score) {
+    const platform::run_summary& s = score.summary;
+    const bool scored = s.point_scored_frames > 0;
+    return {{"frames_tracked", s.tracked_frames},
+            {"first_motion_frame",
+             score.first_motion_frame >= 0 ? json(score.first_motion_frame) : json(nullptr)},
+            {"detection_frame",
+             score.detection_frame >= 0 ? json(score.detection_frame) : json(nullptr)},
+            {"detect_latency_frames", score.first_motion_frame >= 0 && score.detection_frame >= 0
+                                          ? json(score.detection_frame - score.first_motion_frame)
+                                          : json(nullptr)},
+            {"points_scored", s.point_scored_frames},
+            {"rmse_mm",
+             {{"x", scored ? json(round6(s.rmse_x_mm)) : json(nullptr)},
+              {"y", scored ? json(round6(s.rmse_y_mm)) : json(nullptr)},
+              {"z", scored ? json(round6(s.rmse_z_mm)) : json(nullptr)}}},
+            {"box_err_px_max", round6(score.max_box_err_px)},
+            {"depth_err_pct_max", round6(score.max_depth_err_pct)}};
+}
+
+json summary_json(const platform::platform_top& top, const platform::scoreboard_report& score,
+                  const platform::budget_report& budget, size_t frames_over_budget) {
+    json summary;
+    summary["sync"] = sync_summary_json(score);
+    summary["timing"] = timing_summary_json(budget, frames_over_budget);
+    summary["accuracy"] = accuracy_summary_json(score);
+    summary["data_path"] = {{"pairs_checked", score.integrity_checked},
+                            {"pairs_intact", score.integrity_equal}};
+    const platform::run_figures f = platform::figures_of(top);
+    summary["sim"] = {{"simulated_s", round6(f.sim_s)},
+                      {"wall_s", round6(f.wall_s)},
+                      {"ratio", round6(f.sim_per_wall())}};
+    summary["hashes"] = {
+        {"pins",
+         top.config().hash_pins ? json(hex64(top.cycle_island().pin_hash())) : json(nullptr)},
+        {"timeline", hex64(top.events().hash())}};
+    return summary;
 }
 
 }  // namespace
@@ -169,26 +278,8 @@ std::vector<std::string> stage_names() {
 
 json build_report(const run_setup& setup, const platform::platform_top& top,
                   const platform::scoreboard_report& score, const platform::budget_report& budget) {
-    const simtime::ticks period_ticks = top.config().period;
-
-    // Periods with an overrun: a period's own, or the period its pair became ready in.
     std::set<int> over;
-    json overruns = json::array();
-    for (const platform::overrun& o : budget.overruns) {
-        int period = o.period;
-        if (period < 0) {
-            for (const platform::pair_check& p : score.pairs)
-                if (p.pair == o.pair) period = period_of(p.ready, period_ticks);
-        }
-        if (period >= 0) over.insert(period);
-        overruns.push_back({{"resource", platform::resource_name(o.what)},
-                            {"stage", dsp::stage_name(o.stage)},
-                            {"period", o.period >= 0 ? json(o.period) : json(nullptr)},
-                            {"pair", o.pair > 0 ? json(o.pair) : json(nullptr)},
-                            {"value_ms", round6(o.value_ms)},
-                            {"limit_ms", round6(o.limit_ms)},
-                            {"text", o.describe()}});
-    }
+    const json overruns = overruns_json(score, budget, top.config().period, &over);
 
     json report;
     report["schema_version"] = report_schema_version;
@@ -196,73 +287,7 @@ json build_report(const run_setup& setup, const platform::platform_top& top,
     report["config"] = config_json(setup);
     report["verdict"] = budget.fits ? "within_budget" : "over_budget";
     report["overruns"] = overruns;
-
-    json summary;
-    summary["sync"] = {
-        {"mismatches_detected", score.card_sync_errors},
-        {"resyncs", score.oe_restarts},
-        {"unsynced_pairs_used", score.used_out_of_step},
-        {"oe_starts", score.starts.size()},
-        {"starts_agreeing_with_truth", score.starts_agreeing},
-        {"firmware_sync_errors", score.firmware_sync_errors},
-        {"pairs_forwarded", score.pairs.size()},
-        {"forwarded_out_of_step", score.forwarded_out_of_step},
-        {"used_before_verdict", score.used_before_verdict},
-        {"first_in_step_ms", score.first_in_step_ready >= 0
-                                 ? json(round6(ticks_to_ms(score.first_in_step_ready)))
-                                 : json(nullptr)}};
-
-    json stage_ms = json::object();
-    for (int s = 0; s < dsp::stage_count; ++s)
-        stage_ms[dsp::stage_name(static_cast<dsp::stage>(s))] = {
-            {"mean", round6(budget.stage_ms_mean[s])}, {"max", round6(budget.stage_ms_max[s])}};
-    summary["timing"] = {
-        {"budget_ms", round6(budget.period_ms)},
-        {"frames_over_budget", over.size()},
-        {"judged_periods", budget.judged_periods},
-        {"stage_ms", stage_ms},
-        {"capture_ms",
-         {{"mean", round6(budget.mean_capture_ms)}, {"max", round6(budget.max_capture_ms)}}},
-        {"processing_ms_max", round6(budget.max_processing_ms)},
-        {"latency_ms_max", round6(budget.latency_ms_max)},
-        {"cpu_busy_ms_max", round6(budget.max_cpu_busy_ms)},
-        {"emif_busy_ms_max", round6(budget.max_emif_busy_ms)},
-        {"fifo_peak_words",
-         {{"left", budget.fifo_peak_words[0]}, {"right", budget.fifo_peak_words[1]}}},
-        {"fifo_capacity_words", platform::card_fifo_words},
-        {"drops", budget.drops},
-        {"overflows", budget.overflows},
-        {"cpu_mhz", round6(budget.cpu_hz / 1e6)}};
-
-    const platform::run_summary& s = score.summary;
-    const bool scored = s.point_scored_frames > 0;
-    summary["accuracy"] = {
-        {"frames_tracked", s.tracked_frames},
-        {"first_motion_frame",
-         score.first_motion_frame >= 0 ? json(score.first_motion_frame) : json(nullptr)},
-        {"detection_frame",
-         score.detection_frame >= 0 ? json(score.detection_frame) : json(nullptr)},
-        {"detect_latency_frames", score.first_motion_frame >= 0 && score.detection_frame >= 0
-                                      ? json(score.detection_frame - score.first_motion_frame)
-                                      : json(nullptr)},
-        {"points_scored", s.point_scored_frames},
-        {"rmse_mm",
-         {{"x", scored ? json(round6(s.rmse_x_mm)) : json(nullptr)},
-          {"y", scored ? json(round6(s.rmse_y_mm)) : json(nullptr)},
-          {"z", scored ? json(round6(s.rmse_z_mm)) : json(nullptr)}}},
-        {"box_err_px_max", round6(score.max_box_err_px)},
-        {"depth_err_pct_max", round6(score.max_depth_err_pct)}};
-    summary["data_path"] = {{"pairs_checked", score.integrity_checked},
-                            {"pairs_intact", score.integrity_equal}};
-    const platform::run_figures f = platform::figures_of(top);
-    summary["sim"] = {{"simulated_s", round6(f.sim_s)},
-                      {"wall_s", round6(f.wall_s)},
-                      {"ratio", round6(f.sim_per_wall())}};
-    summary["hashes"] = {
-        {"pins",
-         top.config().hash_pins ? json(hex64(top.cycle_island().pin_hash())) : json(nullptr)},
-        {"timeline", hex64(top.events().hash())}};
-    report["summary"] = summary;
+    report["summary"] = summary_json(top, score, budget, over.size());
 
     json frames = json::array();
     for (const platform::period_budget& p : budget.periods)

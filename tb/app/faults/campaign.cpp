@@ -344,15 +344,13 @@ std::vector<campaign_run> shard_of(const std::vector<campaign_run>& runs, int sh
     return out;
 }
 
-std::vector<campaign_row> run_campaign(const campaign_options& given, std::FILE* log,
-                                       std::string* error) {
-    campaign_options o = given;
-    if (o.binary.empty()) o.binary = this_program();
-    if (o.out_dir.empty()) o.out_dir = "campaign-" + o.name;
+namespace {
+
+// The shard's runs whose spec matches --match A|B (contains A or B).
+std::vector<campaign_run> selected_runs(const campaign_options& o) {
     std::vector<campaign_run> plan;
     for (const campaign_run& r : shard_of(campaign_plan(o.name, o.seeds), o.shard, o.shards)) {
         const std::string spec = r.fault.empty() ? "clean" : r.fault;
-        // --match A|B: runs whose spec contains A or B.
         bool hit = false;
         for (size_t from = 0; from <= o.match.size();) {
             const size_t bar = std::min(o.match.find('|', from), o.match.size());
@@ -361,14 +359,23 @@ std::vector<campaign_row> run_campaign(const campaign_options& given, std::FILE*
         }
         if (hit) plan.push_back(r);
     }
-    std::vector<campaign_row> rows(plan.size());
+    return plan;
+}
+
+void log_row(std::FILE* log, size_t done, size_t total, const campaign_row& row) {
+    std::fprintf(log, "[%zu/%zu] %-45s seed %-4llu %s%s (%.1f s)\n", done, total,
+                 row.run.fault.empty() ? "clean" : row.run.fault.c_str(),
+                 static_cast<unsigned long long>(row.run.seed),
+                 row.ran ? outcome_name(row.result.verdicts.front().actual) : "NOT RUN",
+                 row.ok() ? "" : "  CONTRACT BROKEN", row.wall_s);
+    std::fflush(log);
+}
+
+// Runs the plan, at most o.jobs children at a time, each in its own folder
+// under runs/; fills rows[i] as run i ends.
+void run_plan(const campaign_options& o, const std::vector<campaign_run>& plan,
+              std::vector<campaign_row>& rows, std::FILE* log) {
     std::error_code ec;
-    fs::create_directories(o.out_dir + "/runs", ec);
-    if (ec) {
-        *error = "cannot create " + o.out_dir + "/runs: " + ec.message();
-        return {};
-    }
-    const auto t0 = std::chrono::steady_clock::now();
     std::map<pid_t, size_t> running;
     std::vector<std::chrono::steady_clock::time_point> started(plan.size());
     const auto run_dir = [&](size_t i) {
@@ -406,21 +413,12 @@ std::vector<campaign_row> run_campaign(const campaign_options& given, std::FILE*
         collect(row, run_dir(i), status);
         if (!o.keep_runs && row.ran) fs::remove_all(run_dir(i), ec);
         ++done;
-        if (log) {
-            std::fprintf(log, "[%zu/%zu] %-45s seed %-4llu %s%s (%.1f s)\n", done, plan.size(),
-                         row.run.fault.empty() ? "clean" : row.run.fault.c_str(),
-                         static_cast<unsigned long long>(row.run.seed),
-                         row.ran ? outcome_name(row.result.verdicts.front().actual) : "NOT RUN",
-                         row.ok() ? "" : "  CONTRACT BROKEN", row.wall_s);
-            std::fflush(log);
-        }
+        if (log) log_row(log, done, plan.size(), row);
     }
-    const double wall =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
 
-    // Files.
-    json all = json::array();
-    for (const campaign_row& r : rows) all.push_back(row_json(r));
+json campaign_json(const campaign_options& o, const std::vector<campaign_row>& rows,
+                   const json& all, double wall) {
     int broken = 0, clean_frames = 0, false_alarms = 0;
     for (const campaign_row& r : rows) {
         broken += !r.ok();
@@ -429,18 +427,20 @@ std::vector<campaign_row> run_campaign(const campaign_options& given, std::FILE*
             false_alarms += r.result.run.false_alarms;
         }
     }
-    const json doc = {{"campaign", o.name},
-                      {"shard", std::to_string(o.shard) + "/" + std::to_string(o.shards)},
-                      {"seeds", o.seeds},
-                      {"jobs", o.jobs},
-                      {"runs", rows.size()},
-                      {"contract_broken", broken},
-                      {"clean_frames", clean_frames},
-                      {"clean_false_alarms", false_alarms},
-                      {"wall_s", wall},
-                      {"rows", all}};
-    std::ofstream(o.out_dir + "/campaign.json") << doc.dump(2) << "\n";
-    std::ofstream csv(o.out_dir + "/campaign.csv");
+    return {{"campaign", o.name},
+            {"shard", std::to_string(o.shard) + "/" + std::to_string(o.shards)},
+            {"seeds", o.seeds},
+            {"jobs", o.jobs},
+            {"runs", rows.size()},
+            {"contract_broken", broken},
+            {"clean_frames", clean_frames},
+            {"clean_false_alarms", false_alarms},
+            {"wall_s", wall},
+            {"rows", all}};
+}
+
+void write_csv(const std::string& path, const json& all) {
+    std::ofstream csv(path);
     for (size_t c = 0; c < std::size(csv_columns); ++c) csv << (c ? "," : "") << csv_columns[c];
     csv << "\n";
     for (const json& r : all) {
@@ -448,7 +448,38 @@ std::vector<campaign_row> run_campaign(const campaign_options& given, std::FILE*
             csv << (c ? "," : "") << csv_value(r, csv_columns[c]);
         csv << "\n";
     }
+}
+
+// campaign.json, campaign.csv and campaign.txt in the output folder.
+void write_files(const campaign_options& o, const std::vector<campaign_row>& rows, double wall) {
+    json all = json::array();
+    for (const campaign_row& r : rows) all.push_back(row_json(r));
+    std::ofstream(o.out_dir + "/campaign.json")
+        << campaign_json(o, rows, all, wall).dump(2) << "\n";
+    write_csv(o.out_dir + "/campaign.csv", all);
     std::ofstream(o.out_dir + "/campaign.txt") << campaign_table(rows, o, wall);
+}
+
+}  // namespace
+
+std::vector<campaign_row> run_campaign(const campaign_options& given, std::FILE* log,
+                                       std::string* error) {
+    campaign_options o = given;
+    if (o.binary.empty()) o.binary = this_program();
+    if (o.out_dir.empty()) o.out_dir = "campaign-" + o.name;
+    const std::vector<campaign_run> plan = selected_runs(o);
+    std::vector<campaign_row> rows(plan.size());
+    std::error_code ec;
+    fs::create_directories(o.out_dir + "/runs", ec);
+    if (ec) {
+        *error = "cannot create " + o.out_dir + "/runs: " + ec.message();
+        return {};
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    run_plan(o, plan, rows, log);
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    write_files(o, rows, wall);
     return rows;
 }
 

@@ -67,56 +67,57 @@ bool fault_run_result::contract_ok() const {
     return true;
 }
 
-void add_to_report(json& report, const fault_run_result& r) {
-    json list = json::array();
-    for (size_t i = 0; i < r.specs.size(); ++i) {
-        const fault_observation& f = r.run.faults[i];
-        const verdict& v = r.verdicts[i];
-        list.push_back({
-            {"spec", r.specs[i].text},
-            {"canonical", f.spec},
-            {"kind", fault_type_name(f.type)},
-            {"hook", kind_of(f.type).hook},
-            {"in_effect", f.in_effect},
-            {"onset_ms", null_if(f.in_effect, f.onset_ms)},
-            {"onset_frame", f.in_effect ? json(f.onset_frame) : json(nullptr)},
-            {"detected", f.detected},
-            {"detected_by", f.detected_by},
-            {"detect_ms", null_if(f.detected, f.detect_ms)},
-            {"frames_to_detect", f.detected ? json(f.frames_to_detect) : json(nullptr)},
-            {"masked_checks", f.masked_checks},
-            {"verdict_causes", f.causes},
-            {"reported", f.reported},
-            {"reported_by", f.reported_by},
-            {"report_ms", null_if(f.reported, f.report_ms)},
-            {"onset_start_out_of_step", f.onset_start_out_of_step},
-            {"resumed_ms", null_if(f.resumed_ms >= 0, f.resumed_ms)},
-            {"pair_ms_min", null_if(f.pair_ms_min >= 0, f.pair_ms_min)},
-            {"slowed_ms_max", null_if(f.slowed_ms_max >= 0, f.slowed_ms_max)},
-            {"slowed_pairs", f.slowed_pairs},
-            {"dropped_pairs", f.dropped_pairs},
-            {"recovered", f.recovered},
-            {"recover_ms", null_if(f.recovered, f.recover_ms)},
-            {"frames_to_recover", f.recovered ? json(f.frames_to_recover) : json(nullptr)},
-            {"failed_starts", f.failed_starts},
-            {"oe_starts_after", f.oe_starts_after},
-            {"pairs_discarded", f.pairs_discarded},
-            {"pairs_used", f.pairs_used},
-            {"unsynced_pairs_used", f.unsynced_pairs_used},
-            {"stale_pairs_used", f.stale_pairs_used},
-            {"pairs_dropped", f.pairs_dropped},
-            {"outcome", outcome_name(v.actual)},
-            {"expected", v.expected_text},
-            {"contract_ok", v.ok},
-            {"violations", v.violations},
-        });
-    }
-    report["faults"] = list;
+namespace {
+
+// One --fault's object in report["faults"].
+json fault_json(const std::string& spec_text, const fault_observation& f, const verdict& v) {
+    return {
+        {"spec", spec_text},
+        {"canonical", f.spec},
+        {"kind", fault_type_name(f.type)},
+        {"hook", kind_of(f.type).hook},
+        {"in_effect", f.in_effect},
+        {"onset_ms", null_if(f.in_effect, f.onset_ms)},
+        {"onset_frame", f.in_effect ? json(f.onset_frame) : json(nullptr)},
+        {"detected", f.detected},
+        {"detected_by", f.detected_by},
+        {"detect_ms", null_if(f.detected, f.detect_ms)},
+        {"frames_to_detect", f.detected ? json(f.frames_to_detect) : json(nullptr)},
+        {"masked_checks", f.masked_checks},
+        {"verdict_causes", f.causes},
+        {"reported", f.reported},
+        {"reported_by", f.reported_by},
+        {"report_ms", null_if(f.reported, f.report_ms)},
+        {"onset_start_out_of_step", f.onset_start_out_of_step},
+        {"resumed_ms", null_if(f.resumed_ms >= 0, f.resumed_ms)},
+        {"pair_ms_min", null_if(f.pair_ms_min >= 0, f.pair_ms_min)},
+        {"slowed_ms_max", null_if(f.slowed_ms_max >= 0, f.slowed_ms_max)},
+        {"slowed_pairs", f.slowed_pairs},
+        {"dropped_pairs", f.dropped_pairs},
+        {"recovered", f.recovered},
+        {"recover_ms", null_if(f.recovered, f.recover_ms)},
+        {"frames_to_recover", f.recovered ? json(f.frames_to_recover) : json(nullptr)},
+        {"failed_starts", f.failed_starts},
+        {"oe_starts_after", f.oe_starts_after},
+        {"pairs_discarded", f.pairs_discarded},
+        {"pairs_used", f.pairs_used},
+        {"unsynced_pairs_used", f.unsynced_pairs_used},
+        {"stale_pairs_used", f.stale_pairs_used},
+        {"pairs_dropped", f.pairs_dropped},
+        {"outcome", outcome_name(v.actual)},
+        {"expected", v.expected_text},
+        {"contract_ok", v.ok},
+        {"violations", v.violations},
+    };
+}
+
+// report["fault_run"]: the run-wide figures and the contract's settings.
+json fault_run_json(const fault_run_result& r) {
     const run_observation& run = r.run;
     json violations = json::array();
     for (const verdict& v : r.verdicts)
         for (const std::string& s : v.violations) violations.push_back(s);
-    report["fault_run"] = {
+    return {
         {"frames", run.frames},
         {"period_ms", run.period_ms},
         {"end_ms", run.end_ms},
@@ -157,16 +158,9 @@ void add_to_report(json& report, const fault_run_result& r) {
     };
 }
 
-bool read_from_report(const json& report, fault_run_result* r, std::string* error) {
-    if (!report.contains("fault_run") || !report["fault_run"].is_object() ||
-        !report.contains("faults") || !report["faults"].is_array()) {
-        *error = "report.json has no faults / fault_run";
-        return false;
-    }
-    const json& j = report["fault_run"];
-    *r = fault_run_result{};
-    r->params = params_of(j.value("contract_params", json::object()));
-    run_observation& run = r->run;
+// The run-wide figures back from report["fault_run"].
+run_observation run_of(const json& j) {
+    run_observation run;
     run.frames = integer(j, "frames");
     run.period_ms = num(j, "period_ms", 24.5);
     run.end_ms = num(j, "end_ms", 0);
@@ -202,6 +196,66 @@ bool read_from_report(const json& report, fault_run_result* r, std::string* erro
     run.points_scored = integer(j, "points_scored");
     run.max_box_err_px = num(j, "max_box_err_px", 0);
     run.max_depth_err_pct = num(j, "max_depth_err_pct", 0);
+    return run;
+}
+
+// One --fault's observation back from its object in report["faults"].
+fault_observation observation_of(const json& f, const fault_spec& spec) {
+    fault_observation o;
+    o.spec = f.value("canonical", canonical(spec));
+    o.type = spec.type;
+    o.in_effect = f.value("in_effect", false);
+    o.onset_ms = num(f, "onset_ms");
+    o.onset_frame = static_cast<int64_t>(num(f, "onset_frame"));
+    o.detected = f.value("detected", false);
+    o.detected_by = f.value("detected_by", std::string("none"));
+    o.detect_ms = num(f, "detect_ms");
+    o.frames_to_detect = static_cast<int>(num(f, "frames_to_detect"));
+    o.causes = static_cast<uint32_t>(integer(f, "verdict_causes"));
+    o.masked_checks = integer(f, "masked_checks");
+    o.reported = f.value("reported", false);
+    o.reported_by = f.value("reported_by", std::string("none"));
+    o.report_ms = num(f, "report_ms");
+    o.onset_start_out_of_step = f.value("onset_start_out_of_step", false);
+    o.resumed_ms = num(f, "resumed_ms");
+    o.pair_ms_min = num(f, "pair_ms_min");
+    o.slowed_ms_max = num(f, "slowed_ms_max");
+    o.slowed_pairs = integer(f, "slowed_pairs");
+    o.dropped_pairs = pair_list(f, "dropped_pairs");
+    o.recovered = f.value("recovered", false);
+    o.recover_ms = num(f, "recover_ms");
+    o.frames_to_recover = static_cast<int>(num(f, "frames_to_recover"));
+    o.failed_starts = integer(f, "failed_starts");
+    o.oe_starts_after = integer(f, "oe_starts_after");
+    o.pairs_discarded = integer(f, "pairs_discarded");
+    o.pairs_used = integer(f, "pairs_used");
+    o.unsynced_pairs_used = integer(f, "unsynced_pairs_used");
+    o.stale_pairs_used = integer(f, "stale_pairs_used");
+    o.pairs_dropped = integer(f, "pairs_dropped");
+    return o;
+}
+
+}  // namespace
+
+void add_to_report(json& report, const fault_run_result& r) {
+    json list = json::array();
+    for (size_t i = 0; i < r.specs.size(); ++i)
+        list.push_back(fault_json(r.specs[i].text, r.run.faults[i], r.verdicts[i]));
+    report["faults"] = list;
+    report["fault_run"] = fault_run_json(r);
+}
+
+bool read_from_report(const json& report, fault_run_result* r, std::string* error) {
+    if (!report.contains("fault_run") || !report["fault_run"].is_object() ||
+        !report.contains("faults") || !report["faults"].is_array()) {
+        *error = "report.json has no faults / fault_run";
+        return false;
+    }
+    const json& j = report["fault_run"];
+    *r = fault_run_result{};
+    r->params = params_of(j.value("contract_params", json::object()));
+    r->run = run_of(j);
+    run_observation& run = r->run;
     for (const json& f : report["faults"]) {
         std::string parse_error;
         const std::optional<fault_spec> spec =
@@ -210,39 +264,8 @@ bool read_from_report(const json& report, fault_run_result* r, std::string* erro
             *error = parse_error;
             return false;
         }
-        fault_observation o;
-        o.spec = f.value("canonical", canonical(*spec));
-        o.type = spec->type;
-        o.in_effect = f.value("in_effect", false);
-        o.onset_ms = num(f, "onset_ms");
-        o.onset_frame = static_cast<int64_t>(num(f, "onset_frame"));
-        o.detected = f.value("detected", false);
-        o.detected_by = f.value("detected_by", std::string("none"));
-        o.detect_ms = num(f, "detect_ms");
-        o.frames_to_detect = static_cast<int>(num(f, "frames_to_detect"));
-        o.causes = static_cast<uint32_t>(integer(f, "verdict_causes"));
-        o.masked_checks = integer(f, "masked_checks");
-        o.reported = f.value("reported", false);
-        o.reported_by = f.value("reported_by", std::string("none"));
-        o.report_ms = num(f, "report_ms");
-        o.onset_start_out_of_step = f.value("onset_start_out_of_step", false);
-        o.resumed_ms = num(f, "resumed_ms");
-        o.pair_ms_min = num(f, "pair_ms_min");
-        o.slowed_ms_max = num(f, "slowed_ms_max");
-        o.slowed_pairs = integer(f, "slowed_pairs");
-        o.dropped_pairs = pair_list(f, "dropped_pairs");
-        o.recovered = f.value("recovered", false);
-        o.recover_ms = num(f, "recover_ms");
-        o.frames_to_recover = static_cast<int>(num(f, "frames_to_recover"));
-        o.failed_starts = integer(f, "failed_starts");
-        o.oe_starts_after = integer(f, "oe_starts_after");
-        o.pairs_discarded = integer(f, "pairs_discarded");
-        o.pairs_used = integer(f, "pairs_used");
-        o.unsynced_pairs_used = integer(f, "unsynced_pairs_used");
-        o.stale_pairs_used = integer(f, "stale_pairs_used");
-        o.pairs_dropped = integer(f, "pairs_dropped");
         r->specs.push_back(*spec);
-        run.faults.push_back(o);
+        run.faults.push_back(observation_of(f, *spec));
     }
     if (r->specs.empty()) r->verdicts.push_back(check_clean(run));
     for (size_t i = 0; i < r->specs.size(); ++i)

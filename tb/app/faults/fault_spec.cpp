@@ -159,6 +159,144 @@ bool is_sensor_fault(fault_type type) {
     return type != fault_type::emif_wait && type != fault_type::cpu_slow;
 }
 
+namespace {
+
+// The parsers below return "" or why the spec is bad.
+using param_values = std::map<std::string, double>;
+
+const kind_info* find_kind(const std::string& name) {
+    const kind_info* kind = nullptr;
+    for (const kind_info& k : fault_kinds())
+        if (name == k.name) kind = &k;
+    return kind;
+}
+
+std::string unknown_param(const kind_info& kind, const std::string& key) {
+    std::string names;
+    for (const param_info& q : kind.params)
+        names += (names.empty() ? "" : ", ") + std::string(q.name);
+    return "unknown parameter '" + key + "' for " + kind.name +
+           (names.empty() ? " (it takes none)" : " (parameters: " + names + ")");
+}
+
+// One "key=value" of the kind's parameters.
+std::string parse_param(const kind_info& kind, const std::string& item, param_values* values) {
+    const size_t eq = item.find('=');
+    if (item.empty() || eq == std::string::npos || eq == 0)
+        return "expected key=value, got '" + item + "'";
+    const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
+    const param_info* p = nullptr;
+    for (const param_info& q : kind.params)
+        if (key == q.name) p = &q;
+    if (!p) return unknown_param(kind, key);
+    if (values->count(key)) return "parameter '" + key + "' given twice";
+    double v = 0;
+    if (p->choices) {
+        const int i = choice_index(*p, value);
+        if (i < 0) return "bad value '" + value + "' for " + key + " (" + range_text(*p) + ")";
+        v = i;
+    } else if (!parse_number(value, p->decimal, &v) || v < p->min || v > p->max) {
+        return "bad value '" + value + "' for " + key + " (" + range_text(*p) + ")";
+    }
+    (*values)[key] = v;
+    return "";
+}
+
+// Parameters: key=value, comma separated; then the defaults of those not given.
+std::string parse_params(const kind_info& kind, const std::string& params, bool given,
+                         param_values* values) {
+    size_t start = 0;
+    while (given && start <= params.size()) {
+        const size_t comma = params.find(',', start);
+        const std::string item =
+            params.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        start = comma == std::string::npos ? params.size() + 1 : comma + 1;
+        const std::string why = parse_param(kind, item, values);
+        if (!why.empty()) return why;
+    }
+    for (const param_info& p : kind.params) {
+        if (values->count(p.name)) continue;
+        if (!p.default_text) return std::string("missing parameter '") + p.name + "'";
+        double v = 0;
+        if (p.choices)
+            v = choice_index(p, p.default_text);
+        else
+            parse_number(p.default_text, p.decimal, &v);
+        (*values)[p.name] = v;
+    }
+    return "";
+}
+
+// Trigger: frame=N or ms=T.
+std::string parse_trigger(const std::string& trigger, trigger_spec* when) {
+    const size_t eq = trigger.find('=');
+    const std::string key = trigger.substr(0, eq);
+    const std::string value = eq == std::string::npos ? "" : trigger.substr(eq + 1);
+    double v = 0;
+    if (key == "frame" && parse_number(value, false, &v) && v >= 0 && v <= 1e9) {
+        when->kind = trigger_spec::by::frame;
+        when->frame = static_cast<uint64_t>(v);
+    } else if (key == "ms" && parse_number(value, true, &v) && v >= 0 && v <= 1e7) {
+        when->kind = trigger_spec::by::ms;
+        when->ms = v;
+    } else {
+        return "bad trigger '@" + trigger +
+               "' (expected @frame=N with N >= 0 or @ms=T with T >= 0)";
+    }
+    return "";
+}
+
+// The parsed values into the spec's fields of its kind, with the checks
+// that involve more than one value.
+std::string apply_params(const param_values& values, fault_spec* spec) {
+    const auto get = [&](const char* name) {
+        const auto it = values.find(name);
+        return it != values.end() ? it->second : 0.0;
+    };
+    spec->camera = is_sensor_fault(spec->type) ? static_cast<int>(get("sensor")) : -1;
+    switch (spec->type) {
+        case fault_type::skew:
+            spec->lines = static_cast<int>(get("lines"));
+            spec->pixels = static_cast<int>(get("pixels"));
+            if (spec->lines + spec->pixels == 0) return "skew needs lines or pixels > 0";
+            break;
+        case fault_type::drop_line:
+            spec->line = static_cast<int>(get("line"));
+            if (spec->line != 0 && spec->when.kind != trigger_spec::by::frame)
+                return "parameter 'line' needs a @frame=N trigger";
+            break;
+        case fault_type::drift:
+            spec->ppm = static_cast<int32_t>(get("ppm"));
+            if (spec->ppm == 0) return "bad value '0' for ppm (not 0)";
+            break;
+        case fault_type::glitch:
+            spec->href = get("signal") == 1;
+            spec->width = static_cast<int>(get("width"));
+            break;
+        case fault_type::dark_leak:
+            spec->level = static_cast<int>(get("level"));
+            break;
+        case fault_type::stuck_bit:
+            spec->bit = static_cast<int>(get("bit"));
+            spec->value = static_cast<int>(get("value"));
+            break;
+        case fault_type::emif_wait:
+            spec->cycles = static_cast<uint32_t>(get("cycles"));
+            spec->ce = static_cast<int>(get("ce"));
+            break;
+        case fault_type::cpu_slow:
+            spec->factor = get("factor");
+            if (std::fabs(spec->factor * 1000 - std::round(spec->factor * 1000)) > 1e-6)
+                return "bad value for factor (at most 3 decimals)";
+            break;
+        default:
+            break;
+    }
+    return "";
+}
+
+}  // namespace
+
 std::optional<fault_spec> parse_fault_spec(const std::string& text, std::string* error) {
     const auto fail = [&](const std::string& why) {
         *error = "bad fault spec '" + text + "': " + why;
@@ -174,115 +312,15 @@ std::optional<fault_spec> parse_fault_spec(const std::string& text, std::string*
     const size_t colon = head.find(':');
     const std::string kind_name = head.substr(0, colon);
     const std::string params = colon == std::string::npos ? "" : head.substr(colon + 1);
-    const kind_info* kind = nullptr;
-    for (const kind_info& k : fault_kinds())
-        if (kind_name == k.name) kind = &k;
+    const kind_info* kind = find_kind(kind_name);
     if (!kind) return fail("unknown fault kind '" + kind_name + "' (kinds: " + kind_names() + ")");
     spec.type = kind->type;
 
-    // Parameters: key=value, comma separated.
-    std::map<std::string, double> values;
-    size_t start = 0;
-    while (colon != std::string::npos && start <= params.size()) {
-        const size_t comma = params.find(',', start);
-        const std::string item =
-            params.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-        start = comma == std::string::npos ? params.size() + 1 : comma + 1;
-        const size_t eq = item.find('=');
-        if (item.empty() || eq == std::string::npos || eq == 0)
-            return fail("expected key=value, got '" + item + "'");
-        const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
-        const param_info* p = nullptr;
-        for (const param_info& q : kind->params)
-            if (key == q.name) p = &q;
-        if (!p) {
-            std::string names;
-            for (const param_info& q : kind->params)
-                names += (names.empty() ? "" : ", ") + std::string(q.name);
-            return fail("unknown parameter '" + key + "' for " + kind->name +
-                        (names.empty() ? " (it takes none)" : " (parameters: " + names + ")"));
-        }
-        if (values.count(key)) return fail("parameter '" + key + "' given twice");
-        double v = 0;
-        if (p->choices) {
-            const int i = choice_index(*p, value);
-            if (i < 0)
-                return fail("bad value '" + value + "' for " + key + " (" + range_text(*p) + ")");
-            v = i;
-        } else if (!parse_number(value, p->decimal, &v) || v < p->min || v > p->max) {
-            return fail("bad value '" + value + "' for " + key + " (" + range_text(*p) + ")");
-        }
-        values[key] = v;
-    }
-    for (const param_info& p : kind->params) {
-        if (values.count(p.name)) continue;
-        if (!p.default_text) return fail(std::string("missing parameter '") + p.name + "'");
-        double v = 0;
-        if (p.choices)
-            v = choice_index(p, p.default_text);
-        else
-            parse_number(p.default_text, p.decimal, &v);
-        values[p.name] = v;
-    }
-
-    // Trigger: frame=N or ms=T.
-    if (at != std::string::npos) {
-        const size_t eq = trigger.find('=');
-        const std::string key = trigger.substr(0, eq);
-        const std::string value = eq == std::string::npos ? "" : trigger.substr(eq + 1);
-        double v = 0;
-        if (key == "frame" && parse_number(value, false, &v) && v >= 0 && v <= 1e9) {
-            spec.when.kind = trigger_spec::by::frame;
-            spec.when.frame = static_cast<uint64_t>(v);
-        } else if (key == "ms" && parse_number(value, true, &v) && v >= 0 && v <= 1e7) {
-            spec.when.kind = trigger_spec::by::ms;
-            spec.when.ms = v;
-        } else {
-            return fail("bad trigger '@" + trigger +
-                        "' (expected @frame=N with N >= 0 or @ms=T with T >= 0)");
-        }
-    }
-
-    const auto get = [&](const char* name) { return values.count(name) ? values[name] : 0.0; };
-    spec.camera = is_sensor_fault(spec.type) ? static_cast<int>(get("sensor")) : -1;
-    switch (spec.type) {
-        case fault_type::skew:
-            spec.lines = static_cast<int>(get("lines"));
-            spec.pixels = static_cast<int>(get("pixels"));
-            if (spec.lines + spec.pixels == 0) return fail("skew needs lines or pixels > 0");
-            break;
-        case fault_type::drop_line:
-            spec.line = static_cast<int>(get("line"));
-            if (spec.line != 0 && spec.when.kind != trigger_spec::by::frame)
-                return fail("parameter 'line' needs a @frame=N trigger");
-            break;
-        case fault_type::drift:
-            spec.ppm = static_cast<int32_t>(get("ppm"));
-            if (spec.ppm == 0) return fail("bad value '0' for ppm (not 0)");
-            break;
-        case fault_type::glitch:
-            spec.href = get("signal") == 1;
-            spec.width = static_cast<int>(get("width"));
-            break;
-        case fault_type::dark_leak:
-            spec.level = static_cast<int>(get("level"));
-            break;
-        case fault_type::stuck_bit:
-            spec.bit = static_cast<int>(get("bit"));
-            spec.value = static_cast<int>(get("value"));
-            break;
-        case fault_type::emif_wait:
-            spec.cycles = static_cast<uint32_t>(get("cycles"));
-            spec.ce = static_cast<int>(get("ce"));
-            break;
-        case fault_type::cpu_slow:
-            spec.factor = get("factor");
-            if (std::fabs(spec.factor * 1000 - std::round(spec.factor * 1000)) > 1e-6)
-                return fail("bad value for factor (at most 3 decimals)");
-            break;
-        default:
-            break;
-    }
+    param_values values;
+    std::string why = parse_params(*kind, params, colon != std::string::npos, &values);
+    if (why.empty() && at != std::string::npos) why = parse_trigger(trigger, &spec.when);
+    if (why.empty()) why = apply_params(values, &spec);
+    if (!why.empty()) return fail(why);
     return spec;
 }
 

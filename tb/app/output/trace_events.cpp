@@ -45,101 +45,138 @@ json thread_name(int tid, const char* name) {
 const char* const irq_names[3] = {"EXT_INT4 FRAME_READY", "EXT_INT5 SYNC_ERROR",
                                   "EXT_INT6 OVERFLOW"};
 
-}  // namespace
+// The pair each firmware stage worked on: the pair of the next
+// pair_processed report; a capture stage's: the next pair_captured (it ends
+// just before that report).
+struct stage_pairs {
+    std::vector<uint32_t> next_processed, next_captured;  // per timeline index
 
-std::string trace_events_json(const platform::platform_top& top) {
-    json events = json::array();
+    explicit stage_pairs(const std::vector<platform::timeline_event>& tl)
+        : next_processed(tl.size() + 1, 0), next_captured(tl.size() + 1, 0) {
+        for (size_t i = tl.size(); i-- > 0;) {
+            next_processed[i] = next_processed[i + 1];
+            next_captured[i] = next_captured[i + 1];
+            if (tl[i].kind != event_kind::firmware) continue;
+            if (tl[i].a == static_cast<uint8_t>(dsp::firmware_event::pair_processed))
+                next_processed[i] = tl[i].b;
+            if (tl[i].a == static_cast<uint8_t>(dsp::firmware_event::pair_captured))
+                next_captured[i] = tl[i].b;
+        }
+    }
+    uint32_t of(dsp::stage s, size_t i) const {
+        return s == dsp::stage::capture ? next_captured[i] : next_processed[i];
+    }
+};
+
+// The timeline's events as trace events, in timeline order: spans (stages,
+// sleeps, OE high) close at their end event, instants as they come.
+class timeline_tracks {
+  public:
+    timeline_tracks(json& events, const std::vector<platform::timeline_event>& tl)
+        : m_events(events), m_pairs(tl) {}
+
+    void add(size_t i, const platform::timeline_event& e) {
+        switch (e.kind) {
+            case event_kind::stage_begin:
+                m_stage_begin = e.tick;
+                break;
+            case event_kind::stage_end:
+                stage_end(i, e);
+                break;
+            case event_kind::cpu_sleep:
+                m_sleep_begin = e.tick;
+                break;
+            case event_kind::cpu_wake:
+                cpu_wake(e);
+                break;
+            case event_kind::firmware:
+                firmware(e);
+                break;
+            case event_kind::irq:
+                if (e.b == 1 && e.a >= 4 && e.a <= 6)
+                    m_events.push_back(instant(irq_names[e.a - 4], "interrupt", card, e.tick));
+                break;
+            case event_kind::oe:
+                oe(e);
+                break;
+            case event_kind::sensor_frame:
+                m_events.push_back(
+                    instant(e.a == 0 ? "VSYNC L" : "VSYNC R", "frame", sensors, e.tick));
+                break;
+            case event_kind::fault:
+                fault(e);
+                break;
+            default:  // results: in report.json
+                break;
+        }
+    }
+
+    // Spans still open at the end of the run end there.
+    void close(ticks end) {
+        if (m_sleep_begin >= 0)
+            m_events.push_back(complete("sleep", "idle", cpu, m_sleep_begin, end));
+        if (m_oe_begin >= 0) m_events.push_back(complete("OE high", "oe", card, m_oe_begin, end));
+    }
+
+  private:
+    void stage_end(size_t i, const platform::timeline_event& e) {
+        if (m_stage_begin < 0) return;
+        const auto s = static_cast<dsp::stage>(e.a);
+        json x = complete(dsp::stage_name(s), "stage", cpu, m_stage_begin, e.tick);
+        x["args"] = {{"cycles", e.b}, {"pair", m_pairs.of(s, i)}};
+        m_events.push_back(x);
+        m_stage_begin = -1;
+    }
+
+    void cpu_wake(const platform::timeline_event& e) {
+        if (m_sleep_begin >= 0)
+            m_events.push_back(complete("sleep", "idle", cpu, m_sleep_begin, e.tick));
+        m_sleep_begin = -1;
+        m_events.push_back(instant(e.a == 255 ? std::string("stop") : "INT" + std::to_string(e.a),
+                                   "interrupt", cpu, e.tick));
+    }
+
+    void firmware(const platform::timeline_event& e) {
+        const auto kind = static_cast<dsp::firmware_event>(e.a);
+        json x = instant(dsp::firmware_event_name(kind), "firmware", cpu, e.tick);
+        x["args"] = {{"pair", e.b}, {"value", e.c}};
+        m_events.push_back(x);
+    }
+
+    void oe(const platform::timeline_event& e) {
+        if (e.a == 1) {
+            m_oe_begin = e.tick;
+        } else if (m_oe_begin >= 0) {
+            m_events.push_back(complete("OE high", "oe", card, m_oe_begin, e.tick));
+            m_oe_begin = -1;
+        }
+    }
+
+    // An injected fault's onset (tb/faults, docs/faults.md).
+    void fault(const platform::timeline_event& e) {
+        json x = instant(
+            std::string("fault ") + faults::fault_type_name(static_cast<faults::fault_type>(e.b)),
+            "fault", sensors, e.tick);
+        x["args"] = {{"index", e.a}, {"frame", e.c}};
+        m_events.push_back(x);
+    }
+
+    json& m_events;
+    const stage_pairs m_pairs;
+    ticks m_stage_begin = -1, m_sleep_begin = -1, m_oe_begin = -1;
+};
+
+void add_track_names(json& events) {
     events.push_back(
         json{{"name", "process_name"}, {"ph", "M"}, {"pid", 1}, {"args", {{"name", "stereosim"}}}});
     events.push_back(thread_name(cpu, "CPU (firmware)"));
     events.push_back(thread_name(edma, "EDMA"));
     events.push_back(thread_name(card, "card"));
     events.push_back(thread_name(sensors, "sensors"));
-    const ticks end = top.end_tick();
+}
 
-    // ---- CPU: stages, sleeps, interrupts taken, reports --------------------------------------
-    // A stage's pair: the pair of the next pair_processed report (the one it
-    // worked on); a capture stage's: the next pair_captured.
-    const std::vector<platform::timeline_event>& tl = top.events().events();
-    std::vector<uint32_t> next_processed(tl.size() + 1, 0), next_captured(tl.size() + 1, 0);
-    for (size_t i = tl.size(); i-- > 0;) {
-        next_processed[i] = next_processed[i + 1];
-        next_captured[i] = next_captured[i + 1];
-        if (tl[i].kind != event_kind::firmware) continue;
-        if (tl[i].a == static_cast<uint8_t>(dsp::firmware_event::pair_processed))
-            next_processed[i] = tl[i].b;
-        if (tl[i].a == static_cast<uint8_t>(dsp::firmware_event::pair_captured))
-            next_captured[i] = tl[i].b;
-    }
-    ticks stage_begin = -1, sleep_begin = -1, oe_begin = -1;
-    for (size_t i = 0; i < tl.size(); ++i) {
-        const platform::timeline_event& e = tl[i];
-        switch (e.kind) {
-            case event_kind::stage_begin:
-                stage_begin = e.tick;
-                break;
-            case event_kind::stage_end: {
-                if (stage_begin < 0) break;
-                const auto s = static_cast<dsp::stage>(e.a);
-                json x = complete(dsp::stage_name(s), "stage", cpu, stage_begin, e.tick);
-                // The capture stage ends just before its pair_captured report.
-                x["args"] = {
-                    {"cycles", e.b},
-                    {"pair", s == dsp::stage::capture ? next_captured[i] : next_processed[i]}};
-                events.push_back(x);
-                stage_begin = -1;
-                break;
-            }
-            case event_kind::cpu_sleep:
-                sleep_begin = e.tick;
-                break;
-            case event_kind::cpu_wake:
-                if (sleep_begin >= 0)
-                    events.push_back(complete("sleep", "idle", cpu, sleep_begin, e.tick));
-                sleep_begin = -1;
-                events.push_back(
-                    instant(e.a == 255 ? std::string("stop") : "INT" + std::to_string(e.a),
-                            "interrupt", cpu, e.tick));
-                break;
-            case event_kind::firmware: {
-                const auto kind = static_cast<dsp::firmware_event>(e.a);
-                json x = instant(dsp::firmware_event_name(kind), "firmware", cpu, e.tick);
-                x["args"] = {{"pair", e.b}, {"value", e.c}};
-                events.push_back(x);
-                break;
-            }
-            case event_kind::irq:
-                if (e.b == 1 && e.a >= 4 && e.a <= 6)
-                    events.push_back(instant(irq_names[e.a - 4], "interrupt", card, e.tick));
-                break;
-            case event_kind::oe:
-                if (e.a == 1) {
-                    oe_begin = e.tick;
-                } else if (oe_begin >= 0) {
-                    events.push_back(complete("OE high", "oe", card, oe_begin, e.tick));
-                    oe_begin = -1;
-                }
-                break;
-            case event_kind::sensor_frame:
-                events.push_back(
-                    instant(e.a == 0 ? "VSYNC L" : "VSYNC R", "frame", sensors, e.tick));
-                break;
-            case event_kind::fault: {  // an injected fault's onset (tb/faults, docs/faults.md)
-                json x = instant(std::string("fault ") +
-                                     faults::fault_type_name(static_cast<faults::fault_type>(e.b)),
-                                 "fault", sensors, e.tick);
-                x["args"] = {{"index", e.a}, {"frame", e.c}};
-                events.push_back(x);
-                break;
-            }
-            default:  // results: in report.json
-                break;
-        }
-    }
-    if (sleep_begin >= 0) events.push_back(complete("sleep", "idle", cpu, sleep_begin, end));
-    if (oe_begin >= 0) events.push_back(complete("OE high", "oe", card, oe_begin, end));
-
-    // ---- EDMA: capture chains and bursts ----------------------------------------------------
+// EDMA: per FRAME_READY, a capture chain up to its last burst; the bursts.
+void add_edma_track(json& events, const platform::platform_top& top, ticks end) {
     const std::vector<ticks>& ready = top.cycle_island().irq_rises(0);
     const std::vector<ticks>& bursts = top.cycle_island().edma_completions();
     for (size_t p = 0; p < ready.size(); ++p) {
@@ -153,6 +190,22 @@ std::string trace_events_json(const platform::platform_top& top) {
         events.push_back(x);
     }
     for (ticks t : bursts) events.push_back(instant("burst", "edma", edma, t));
+}
+
+}  // namespace
+
+std::string trace_events_json(const platform::platform_top& top) {
+    json events = json::array();
+    add_track_names(events);
+    const ticks end = top.end_tick();
+
+    // CPU (stages, sleeps, interrupts taken, reports), card and sensors.
+    const std::vector<platform::timeline_event>& tl = top.events().events();
+    timeline_tracks tracks(events, tl);
+    for (size_t i = 0; i < tl.size(); ++i) tracks.add(i, tl[i]);
+    tracks.close(end);
+
+    add_edma_track(events, top, end);
 
     json doc{{"traceEvents", events},
              {"displayTimeUnit", "ns"},

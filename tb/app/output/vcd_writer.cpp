@@ -319,6 +319,108 @@ std::string marker_line(uint8_t value, const std::string& code) {
     return line + " " + code + "\n";
 }
 
+// Copies a finished VCD line by line: header and $dumpvars as they are (the
+// marker's dumped value replaced by `initial`), each onset of
+// markers[next, end) inserted before the first later time.
+class marker_splicer {
+  public:
+    marker_splicer(const std::vector<fault_marker>& markers, size_t next, size_t end,
+                   const std::string& code, uint8_t initial, int64_t window_from_fs)
+        : m_markers(markers),
+          m_next(next),
+          m_end(end),
+          m_code(code),
+          m_dumped(marker_line(0, code)),
+          m_initial(initial),
+          m_window_from_fs(window_from_fs) {
+        m_buffer.reserve(1 << 20);
+    }
+
+    // False if a write failed.
+    bool copy(std::FILE* in, std::FILE* out) {
+        m_out = out;
+        char chunk[4096];
+        std::string line;
+        while (std::fgets(chunk, sizeof chunk, in)) {
+            line += chunk;
+            if (line.back() != '\n' && !std::feof(in)) continue;  // a longer line: read on
+            take(line);
+            line.clear();
+        }
+        m_buffer += line;
+        flush();
+        return m_write_ok;
+    }
+
+    uint64_t added() const { return m_added; }
+    uint64_t bytes() const { return m_bytes; }
+
+  private:
+    // One whole line of the source.
+    void take(std::string& line) {
+        if (m_in_dumpvars) {
+            if (line == m_dumped) {
+                line = marker_line(m_initial, m_code);
+            } else if (line.rfind("$end", 0) == 0) {
+                m_in_dumpvars = false;
+                m_in_body = true;
+                m_buffer += line;
+                // An onset at the window start: a change right after the snapshot.
+                emit_markers_up_to(m_window_from_fs, true);
+                return;
+            }
+        } else if (!m_in_body) {
+            if (line.rfind("$dumpvars", 0) == 0) m_in_dumpvars = true;
+        } else if (line[0] == '#') {
+            const int64_t fs = std::stoll(line.substr(1));
+            // Markers strictly between the previous time and this one.
+            emit_markers_up_to(fs - 1, false);
+            m_buffer += line;
+            emit_markers_up_to(fs, true);
+            if (m_buffer.size() >= (1u << 20)) flush();
+            return;
+        }
+        m_buffer += line;
+        if (m_buffer.size() >= (1u << 20)) flush();
+    }
+
+    void emit_markers_up_to(int64_t fs, bool same_time_written) {
+        // Onsets before `fs` get their own time; one at `fs` joins that time.
+        while (m_next < m_end && simtime::to_fs(m_markers[m_next].tick) <= fs) {
+            const int64_t at = simtime::to_fs(m_markers[m_next].tick);
+            if (at < fs || !same_time_written) {
+                m_buffer.push_back('#');
+                append_u64(m_buffer, static_cast<uint64_t>(at));
+                m_buffer.push_back('\n');
+            }
+            // Several onsets on one tick: the last one's kind stands.
+            while (m_next + 1 < m_end && m_markers[m_next + 1].tick == m_markers[m_next].tick)
+                ++m_next;
+            m_buffer += marker_line(m_markers[m_next].value, m_code);
+            ++m_added;
+            ++m_next;
+        }
+    }
+
+    void flush() {
+        if (std::fwrite(m_buffer.data(), 1, m_buffer.size(), m_out) != m_buffer.size())
+            m_write_ok = false;
+        m_bytes += m_buffer.size();
+        m_buffer.clear();
+    }
+
+    const std::vector<fault_marker>& m_markers;
+    size_t m_next, m_end;
+    const std::string& m_code;
+    const std::string m_dumped;  // the marker's line in $dumpvars
+    const uint8_t m_initial;
+    const int64_t m_window_from_fs;
+    std::FILE* m_out = nullptr;
+    std::string m_buffer;
+    bool m_in_body = false, m_in_dumpvars = false, m_write_ok = true;
+    uint64_t m_added = 0, m_bytes = 0;
+};
+
 }  // namespace
 
 bool vcd_writer::add_fault_markers(std::vector<fault_marker> markers) {
@@ -339,8 +441,6 @@ bool vcd_writer::add_fault_markers(std::vector<fault_marker> markers) {
         ++end;
     if (initial == 0 && next == end) return true;  // nothing changes the file
 
-    const std::string& code = m_signals[m_marker].code;
-    const std::string dumped = marker_line(0, code);
     const std::string temp = m_path + ".markers";
     std::FILE* in = std::fopen(m_path.c_str(), "rb");
     std::FILE* out = in ? std::fopen(temp.c_str(), "wb") : nullptr;
@@ -349,70 +449,9 @@ bool vcd_writer::add_fault_markers(std::vector<fault_marker> markers) {
         if (in) std::fclose(in);
         return false;
     }
-    std::string buffer;
-    buffer.reserve(1 << 20);
-    uint64_t added = 0;
-    const auto emit_markers_up_to = [&](int64_t fs, bool same_time_written) {
-        // Onsets before `fs` get their own time; one at `fs` joins that time.
-        while (next < end && simtime::to_fs(markers[next].tick) <= fs) {
-            const int64_t at = simtime::to_fs(markers[next].tick);
-            if (at < fs || !same_time_written) {
-                buffer.push_back('#');
-                append_u64(buffer, static_cast<uint64_t>(at));
-                buffer.push_back('\n');
-            }
-            // Several onsets on one tick: the last one's kind stands.
-            while (next + 1 < end && markers[next + 1].tick == markers[next].tick) ++next;
-            buffer += marker_line(markers[next].value, code);
-            ++added;
-            ++next;
-        }
-    };
-    // Line by line: header and $dumpvars copied (the marker's initial value
-    // replaced), each marker inserted before the first later time.
-    bool in_body = false, in_dumpvars = false;
-    uint64_t bytes = 0;
-    char chunk[4096];
-    std::string line;
-    bool write_ok = true;
-    const auto flush = [&]() {
-        if (std::fwrite(buffer.data(), 1, buffer.size(), out) != buffer.size()) write_ok = false;
-        bytes += buffer.size();
-        buffer.clear();
-    };
-    while (std::fgets(chunk, sizeof chunk, in)) {
-        line += chunk;
-        if (line.back() != '\n' && !std::feof(in)) continue;  // a longer line: read on
-        if (in_dumpvars) {
-            if (line == dumped) {
-                line = marker_line(initial, code);
-            } else if (line.rfind("$end", 0) == 0) {
-                in_dumpvars = false;
-                in_body = true;
-                buffer += line;
-                line.clear();
-                // An onset at the window start: a change right after the snapshot.
-                emit_markers_up_to(simtime::to_fs(m_window.from), true);
-                continue;
-            }
-        } else if (!in_body) {
-            if (line.rfind("$dumpvars", 0) == 0) in_dumpvars = true;
-        } else if (line[0] == '#') {
-            const int64_t fs = std::stoll(line.substr(1));
-            // Markers strictly between the previous time and this one.
-            emit_markers_up_to(fs - 1, false);
-            buffer += line;
-            line.clear();
-            emit_markers_up_to(fs, true);
-            if (buffer.size() >= (1u << 20)) flush();
-            continue;
-        }
-        buffer += line;
-        line.clear();
-        if (buffer.size() >= (1u << 20)) flush();
-    }
-    buffer += line;
-    flush();
+    marker_splicer splicer(markers, next, end, m_signals[m_marker].code, initial,
+                           simtime::to_fs(m_window.from));
+    const bool write_ok = splicer.copy(in, out);
     const bool read_ok = !std::ferror(in);
     std::fclose(in);
     const bool closed = std::fclose(out) == 0;
@@ -421,8 +460,8 @@ bool vcd_writer::add_fault_markers(std::vector<fault_marker> markers) {
         std::remove(temp.c_str());
         return false;
     }
-    m_changes += added;
-    m_bytes = bytes;
+    m_changes += splicer.added();
+    m_bytes = splicer.bytes();
     return true;
 }
 
