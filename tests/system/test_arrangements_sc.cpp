@@ -15,8 +15,8 @@
 // One simulation per process: each arrangement runs in a forked child that
 // writes its digest to a pipe; the two children run at once (both cores).
 // A negative control proves the comparison can fail: the pin-level
-// arrangement with the right sensor one pixel clock late from its frame 1
-// (a start_skew fault given to that run only, from the test side) must differ.
+// arrangement with the right sensor's HREF inverted for one pixel clock in
+// the window (a fault given to that run only, from the test side) must differ.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -430,15 +430,15 @@ TEST(Arrangements, DskV3GivesIdenticalPinsAndReport) {
     expect_identical(r);
 }
 
-// The comparison can fail: one idle pixel clock before the right sensor's
-// frame 1, in the pin-level run only, shifts that sensor's stream by one
-// clock from there on.
+// The comparison can fail: the right sensor's HREF inverted for one pixel
+// clock inside the window, in the pin-level run only (a sensor fault given
+// to that run from the test side).
 TEST(Arrangements, OneCycleDifferenceIsSeen) {
     platform::platform_config config = functional_run(3);
     config.frames = 3;
-    const sensor::fault one_clock_late = sensor::fault::start_skew(
-        sensor::fault_trigger::at_frame(1), 0, 1, config.profile.line_pclks);
-    const pair_of_runs r = run_both(config, window_from, window_to, {one_clock_late});
+    const sensor::fault one_clock_glitch = sensor::fault::href_glitch(
+        sensor::fault_trigger::at_time((window_from + window_to) / 2), 1);
+    const pair_of_runs r = run_both(config, window_from, window_to, {one_clock_glitch});
     print("one-cycle difference", r);
     EXPECT_NE(r.fast.pin_hash, r.pins.pin_hash);
     const size_t first = first_difference(r.fast.window, r.pins.window);
