@@ -5,21 +5,12 @@
 #include <string>
 
 #include "dsp/c6416_regs.h"
+#include "model/time/sc_ticks.h"
 
 namespace c6416 {
 
 namespace regs = dsp::c6416;
 using sc_core::sc_time;
-
-simtime::ticks ticks_at_or_after_fs(int64_t fs) {
-    if (fs <= 0) return 0;
-    // floor(fs * 18 / 10^6), then onto the first tick that is not earlier.
-    simtime::ticks t = static_cast<simtime::ticks>(static_cast<__int128>(fs) *
-                                                   simtime::ticks_per_ns / simtime::fs_per_ns);
-    while (simtime::to_fs(t) < fs) ++t;
-    while (t > 0 && simtime::to_fs(t - 1) >= fs) --t;
-    return t;
-}
 
 // ---- the firmware's HAL: forwards to the module on the CPU thread ---------------------------
 class c6416_sc::firmware_hal final : public dsp::hal {
@@ -117,13 +108,11 @@ uint64_t c6416_sc::charged_cycles_total() const {
 
 // ---- CPU clock ---------------------------------------------------------------------------
 uint64_t c6416_sc::cpu_cycle_at_or_after(const sc_time& t) const {
-    const simtime::ticks tick = ticks_at_or_after_fs(static_cast<int64_t>(t.value()));
-    return m_cpu_clock.first_rise_at_or_after(tick);
+    return m_cpu_clock.first_rise_at_or_after(simtime::tick_at_or_after(t));
 }
 
 sc_time c6416_sc::time_of_cpu_cycle(uint64_t k) const {
-    return sc_time::from_value(
-        static_cast<sc_core::sc_time::value_type>(simtime::to_fs(m_cpu_clock.rise(k))));
+    return simtime::sc_time_of(m_cpu_clock.rise(k));
 }
 
 void c6416_sc::cpu_thread() {

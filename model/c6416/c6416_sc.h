@@ -258,7 +258,9 @@ class c6416_sc : public sc_core::sc_module {
     sc_core::sc_time m_sdram_transfer, m_sdram_late;
 };
 
-// Ticks (1/18 ns) of the earliest tick whose femtosecond time is >= fs.
-simtime::ticks ticks_at_or_after_fs(int64_t fs);
+// Kept for tb/ (probe_hal.cpp): simtime::tick_at_or_after_fs is the one conversion.
+inline simtime::ticks ticks_at_or_after_fs(int64_t fs) {
+    return simtime::tick_at_or_after_fs(fs);
+}
 
 }  // namespace c6416

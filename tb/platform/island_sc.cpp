@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "model/emif/emif_tlm_target_sc.h"
+#include "model/time/sc_ticks.h"
 
 // verilated.h, seeing SystemC, expects sc_time_stamp in the global namespace
 // (where <systemc.h> would put it). The card is --cc: it never calls it.
@@ -160,14 +161,14 @@ void island::reset_card() {
 
 // ---- the SystemC side ------------------------------------------------------------------------
 void island::run() {
-    const sc_core::sc_time quantum = emif::time_of_tick(m_config.quantum);
+    const sc_core::sc_time quantum = simtime::sc_time_of(m_config.quantum);
     for (;;) {
         // Everything else at this time acts first: its bus requests are then
         // queued before any edge after now is stepped.
         while (sc_core::sc_pending_activity_at_current_time()) sc_core::wait(sc_core::SC_ZERO_TIME);
         const sc_core::sc_time now = sc_core::sc_time_stamp();
         const sc_core::sc_time ahead = std::min(quantum, sc_core::sc_time_to_pending_activity());
-        const ticks limit = std::min(m_config.end, emif::tick_at_or_before(now + ahead));
+        const ticks limit = std::min(m_config.end, simtime::tick_at_or_before(now + ahead));
         if (limit < 0 || (m_last_tick >= m_config.end && limit == m_config.end)) {
             sc_core::wait();  // past the end of the run: nothing more to step
             continue;
@@ -179,7 +180,7 @@ void island::run() {
         m_stats.wall_s +=
             std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
 
-        const sc_core::sc_time wake = emif::time_of_tick(stopped ? last : limit);
+        const sc_core::sc_time wake = simtime::sc_time_of(stopped ? last : limit);
         ++m_stats.syncs;
         sc_core::wait(wake > now ? wake - now : sc_core::SC_ZERO_TIME);
         if (m_irq != m_irq_written) {

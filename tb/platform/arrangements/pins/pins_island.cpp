@@ -8,6 +8,7 @@
 #include "model/emif/emif_pins_sc.h"
 #include "model/emif/emif_tlm_target_sc.h"
 #include "model/sensor/sensor_sc.h"
+#include "model/time/sc_ticks.h"
 
 // verilated.h, seeing SystemC, expects sc_time_stamp in the global namespace.
 using sc_core::sc_time_stamp;
@@ -27,7 +28,7 @@ using platform::pin_group_card_out;
 using platform::pin_group_emif_dsp;
 
 sc_core::sc_time time_of(ticks t) {
-    return emif::time_of_tick(t);
+    return simtime::sc_time_of(t);
 }
 
 // The sensor's pins as one word (sensor::pin_word).
@@ -244,7 +245,7 @@ class pins_island : public platform::island {
     // EMIF's writes of this edge land a delta later); its count as a signal
     // so that drive_bus sees the change.
     void clock_glue() {
-        m_glue.clock(strobe_pins(), emif::tick_at_or_before(sc_core::sc_time_stamp()));
+        m_glue.clock(strobe_pins(), simtime::tick_at_or_before(sc_core::sc_time_stamp()));
         m_glue_edges.write(m_glue_edges.read() + 1);
     }
 
@@ -254,7 +255,7 @@ class pins_island : public platform::island {
         const sensor_wires& w = m_wires[m_wire_camera];
         const platform::wire_fault& f = m_config.wire;
         uint32_t data = w.data.read();
-        if (emif::tick_at_or_before(sc_core::sc_time_stamp()) >= f.from_tick) {
+        if (simtime::tick_at_or_before(sc_core::sc_time_stamp()) >= f.from_tick) {
             const uint32_t mask = 1u << f.bit;
             data = f.value ? (data | mask) : (data & ~mask);
         }
