@@ -13,7 +13,8 @@
 // incrementing one. Byte enables (a 4-byte pattern, repeated) apply to writes.
 //
 // The engine is stepped by someone else: emif_pins_sc (pin-level, one
-// SC_METHOD per ECLK edge) or emif_cycle_driver (the fast island). Requires
+// SC_METHOD per ECLK edge), the platform's fast island (tb/platform) or, in
+// tests, emif_cycle_driver (tests/support/emif). Requires
 // 1 fs time resolution (tests/support/sc_test_main.cpp): tick edges are placed with
 // simtime::sc_time_of (model/time/sc_ticks.h).
 #pragma once

@@ -1,4 +1,4 @@
-#include "model/emif/emif_cycle_driver_sc.h"
+#include "tests/support/emif/emif_cycle_driver_sc.h"
 
 #include <algorithm>
 
