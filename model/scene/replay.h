@@ -80,13 +80,7 @@ class replay {
     const rgb_image& frame(camera_id id, uint64_t index);
 
   private:
-    int resolve_index(uint64_t index) const;
-
-    std::string m_manifest_path;
-    int m_width = 0;
-    int m_height = 0;
-    int m_frames = 0;
-    int m_first_number = 0;
+    struct manifest_line;
     // A file pattern split at its %d / %0Nd, resolved against the manifest folder.
     struct name_pattern {
         std::string prefix, suffix;
@@ -94,6 +88,21 @@ class replay {
         std::string format(int number) const;
     };
 
+    int resolve_index(uint64_t index) const;
+    // Reading the manifest (the constructor's steps).
+    void read_manifest(name_pattern (&patterns)[2], std::string& truth_path);
+    std::string resolve(const std::string& path) const;
+    void apply_key(const manifest_line& l, name_pattern (&patterns)[2], std::string& truth_path);
+    void apply_calibration_key(const manifest_line& l);
+    static after_last_policy after_last_of(const manifest_line& l);
+    void check_frame_files(const name_pattern (&patterns)[2]);
+    void read_truth(const std::string& truth_path);
+
+    std::string m_manifest_path;
+    int m_width = 0;
+    int m_height = 0;
+    int m_frames = 0;
+    int m_first_number = 0;
     name_pattern m_pattern[2];  // [camera_id]
     replay_calibration m_calibration;
     after_last_policy m_after_last = after_last_policy::error;
