@@ -12,6 +12,34 @@ namespace c6416 {
 namespace regs = dsp::c6416;
 using sc_core::sc_time;
 
+// ---- the chip's memory map as the EDMA transfer controller sees it ------------------------
+class c6416_sc::edma_port final : public edma_memory_map {
+  public:
+    explicit edma_port(c6416_sc& chip) : m_chip(chip) {}
+
+    uint8_t* memory(uint32_t address, uint32_t bytes) override {
+        return m_chip.memory(address, bytes);
+    }
+    bool is_local(uint32_t address) const override { return m_chip.m_memory.is_local(address); }
+    bool is_peripheral(uint32_t address) const override { return m_chip.is_peripheral(address); }
+    uint32_t register_read(uint32_t address) override { return m_chip.register_read(address); }
+    void register_write(uint32_t address, uint32_t value) override {
+        m_chip.register_write(address, value);
+    }
+    void emifa_access(bool write, uint32_t address, uint8_t* data, uint32_t length,
+                      uint32_t streaming_width) override {
+        m_chip.bus_access(m_chip.emifa_edma, write ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND,
+                          address, data, length, streaming_width);
+    }
+    void map_error(const char* what) override {
+        ++m_chip.m_bus_errors;
+        SC_REPORT_WARNING(m_chip.name(), what);
+    }
+
+  private:
+    c6416_sc& m_chip;
+};
+
 namespace {
 
 sdram_window traffic_window(const c6416_config& config) {
@@ -34,6 +62,8 @@ c6416_sc::c6416_sc(sc_core::sc_module_name name, const c6416_config& config)
       m_hal(std::make_unique<firmware_hal>(*this)),
       m_memory(config.sdram_over_emifa),
       m_replay(traffic_window(config)),
+      m_edma_port(std::make_unique<edma_port>(*this)),
+      m_edma_transfer(*m_edma_port),
       m_timer_event("timer_event"),
       m_edma_kick("edma_kick"),
       m_irq_event("irq_event"),
@@ -287,6 +317,20 @@ void c6416_sc::timer_method() {
     }
     after_edma_change();
     arm_timer_event();
+}
+
+// ---- EDMA --------------------------------------------------------------------------------
+void c6416_sc::edma_thread() {
+    for (;;) {
+        while (!m_edma.has_request()) sc_core::wait(m_edma_kick);
+        const transfer_request r = m_edma.take_request();
+        const sc_time start = sc_core::sc_time_stamp();
+        m_edma_transfer.execute(r);
+        m_edma_busy += sc_core::sc_time_stamp() - start;
+        m_edma_bytes += r.bytes();
+        m_edma.complete(r);
+        after_edma_change();
+    }
 }
 
 // ---- EMIFA -------------------------------------------------------------------------------

@@ -4,9 +4,9 @@
 // dsp::hal, firmware_hal.h), 1 MB L2 SRAM at 0x00000000 and the DSK's 16 MB
 // SDRAM storage for EMIFA CE0 (0x80000000) (c6416_memory.h), the EMIFA
 // control registers (emifa_registers.h), the interrupt selector, the EDMA
-// (channel controller edma_core.h + one transfer controller, the EDMA thread
-// here) and timers 0-2 (timer_block.h), at their data-sheet addresses
-// (dsp/c6416_regs.h). This module wires the blocks together and runs their
+// (channel controller edma_core.h + one transfer controller
+// edma_transfer_controller.h, run on the EDMA thread here) and timers 0-2 (timer_block.h), at their
+// data-sheet addresses (dsp/c6416_regs.h). This module wires the blocks together and runs their
 // SystemC processes; each block is its own class.
 //
 // Ports and sockets (named after the pins / roles):
@@ -68,6 +68,7 @@
 #include "model/c6416/cpu_clock_sc.h"
 #include "model/c6416/dsk_profile.h"
 #include "model/c6416/edma_core.h"
+#include "model/c6416/edma_transfer_controller.h"
 #include "model/c6416/emifa_registers.h"
 #include "model/c6416/interrupt_selector.h"
 #include "model/c6416/sdram_traffic_replay.h"
@@ -160,6 +161,7 @@ class c6416_sc : public sc_core::sc_module {
 
   private:
     class firmware_hal;
+    class edma_port;
 
     // Processes.
     void cpu_thread();
@@ -187,14 +189,7 @@ class c6416_sc : public sc_core::sc_module {
     void after_edma_change();
     void arm_timer_event();
 
-    // Transfers.
-    void execute(const transfer_request& r);
-    void bus_run(tlm::tlm_command command, uint32_t address, int64_t step, uint32_t elements,
-                 uint32_t element_bytes, uint8_t* data);
-    void read_run(uint32_t address, int64_t step, uint32_t elements, uint32_t element_bytes,
-                  uint8_t* out);
-    void write_run(uint32_t address, int64_t step, uint32_t elements, uint32_t element_bytes,
-                   const uint8_t* in);
+    // EMIFA.
     void bus_access(tlm_utils::simple_initiator_socket_optional<c6416_sc>& socket,
                     tlm::tlm_command command, uint32_t address, uint8_t* data, uint32_t length,
                     uint32_t streaming_width);
@@ -210,10 +205,11 @@ class c6416_sc : public sc_core::sc_module {
     edma_core m_edma;
     timer_block m_timers;
     sdram_traffic_replay m_replay;
+    std::unique_ptr<edma_port> m_edma_port;  // the chip as the transfer controller sees it
+    edma_transfer_controller m_edma_transfer;
     sc_core::sc_event m_timer_event;
     sc_core::sc_event m_edma_kick;
     sc_core::sc_event m_irq_event;
-    std::vector<uint8_t> m_staging;
 
     uint32_t m_ifr = 0;
     uint32_t m_ier = 0;
