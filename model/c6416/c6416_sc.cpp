@@ -5,56 +5,48 @@
 #include <string>
 
 #include "dsp/c6416_regs.h"
+#include "model/c6416/firmware_hal.h"
 
 namespace c6416 {
 
 namespace regs = dsp::c6416;
 using sc_core::sc_time;
 
-simtime::ticks ticks_at_or_after_fs(int64_t fs) {
-    if (fs <= 0) return 0;
-    // floor(fs * 18 / 10^6), then onto the first tick that is not earlier.
-    simtime::ticks t = static_cast<simtime::ticks>(static_cast<__int128>(fs) *
-                                                   simtime::ticks_per_ns / simtime::fs_per_ns);
-    while (simtime::to_fs(t) < fs) ++t;
-    while (t > 0 && simtime::to_fs(t - 1) >= fs) --t;
-    return t;
-}
-
-// ---- the firmware's HAL: forwards to the module on the CPU thread ---------------------------
-class c6416_sc::firmware_hal final : public dsp::hal {
+// ---- the chip's memory map as the EDMA transfer controller sees it ------------------------
+class c6416_sc::edma_port final : public edma_memory_map {
   public:
-    explicit firmware_hal(c6416_sc& chip) : m_chip(chip) {}
+    explicit edma_port(c6416_sc& chip) : m_chip(chip) {}
 
-    void charge_cycles(dsp::stage s, uint64_t cycles) override { m_chip.charge(s, cycles, {}); }
-    void charge_with_traffic(dsp::stage s, uint64_t cycles,
-                             const dsp::sdram_traffic& traffic) override {
-        m_chip.charge(s, cycles, traffic);
-    }
-    void stage_begin(dsp::stage s) override {
-        if (m_chip.m_stage_observer) m_chip.m_stage_observer(sc_core::sc_time_stamp(), s, true);
-    }
-    void stage_end(dsp::stage s) override {
-        if (m_chip.m_stage_observer) m_chip.m_stage_observer(sc_core::sc_time_stamp(), s, false);
-    }
-    uint32_t read32(uint32_t address) override { return m_chip.cpu_read32(address); }
-    void write32(uint32_t address, uint32_t value) override { m_chip.cpu_write32(address, value); }
     uint8_t* memory(uint32_t address, uint32_t bytes) override {
         return m_chip.memory(address, bytes);
     }
-    void set_interrupt_enable(uint32_t ier) override { m_chip.m_ier = ier & 0xFFF0u; }
-    uint32_t interrupt_flags() override { return m_chip.m_ifr; }
-    void clear_interrupt_flags(uint32_t mask) override { m_chip.m_ifr &= ~mask; }
-    int wait_for_interrupt() override { return m_chip.wait_for_interrupt(); }
-    void report(const dsp::event_record& e) override { m_chip.report(e); }
-    void report_result(uint32_t /*pair*/, const dsp::frame_output& out) override {
-        if (m_chip.m_result_observer) m_chip.m_result_observer(sc_core::sc_time_stamp(), out);
+    bool is_local(uint32_t address) const override { return m_chip.m_memory.is_local(address); }
+    bool is_peripheral(uint32_t address) const override { return m_chip.is_peripheral(address); }
+    uint32_t register_read(uint32_t address) override { return m_chip.register_read(address); }
+    void register_write(uint32_t address, uint32_t value) override {
+        m_chip.register_write(address, value);
     }
-    bool stop_requested() override { return m_chip.m_stop; }
+    void emifa_access(bool write, uint32_t address, uint8_t* data, uint32_t length,
+                      uint32_t streaming_width) override {
+        m_chip.bus_access(m_chip.emifa_edma, write ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND,
+                          address, data, length, streaming_width);
+    }
+    void map_error(const char* what) override {
+        ++m_chip.m_bus_errors;
+        SC_REPORT_WARNING(m_chip.name(), what);
+    }
 
   private:
     c6416_sc& m_chip;
 };
+
+namespace {
+
+sdram_window traffic_window(const c6416_config& config) {
+    return {config.l2_line_bytes, config.sdram_traffic_base, config.sdram_traffic_bytes};
+}
+
+}  // namespace
 
 // ---- construction ------------------------------------------------------------------------
 c6416_sc::c6416_sc(sc_core::sc_module_name name, const c6416_config& config)
@@ -66,24 +58,19 @@ c6416_sc::c6416_sc(sc_core::sc_module_name name, const c6416_config& config)
       emifa_cpu("emifa_cpu"),
       emifa_edma("emifa_edma"),
       m_config(config),
-      m_cpu_clock(config.dsk.cpu_period()),
+      m_cpu_clock(simtime::tick_clock(config.dsk.cpu_period())),
       m_hal(std::make_unique<firmware_hal>(*this)),
-      m_l2(regs::l2_bytes, 0),
-      m_sdram(regs::sdram_bytes, 0),
+      m_memory(config.sdram_over_emifa),
+      m_replay(traffic_window(config)),
+      m_edma_port(std::make_unique<edma_port>(*this)),
+      m_edma_transfer(*m_edma_port),
       m_timer_event("timer_event"),
       m_edma_kick("edma_kick"),
       m_irq_event("irq_event"),
-      m_firmware_returned_event("firmware_returned_event"),
-      m_line_buffer(config.l2_line_bytes < 4 ? 4 : config.l2_line_bytes, 0) {
+      m_firmware_returned_event("firmware_returned_event") {
     if (sc_core::sc_get_time_resolution() != sc_time(1, sc_core::SC_FS)) {
         SC_REPORT_ERROR(this->name(), "the C6416 model needs a 1 fs time resolution");
     }
-    for (int ce = 0; ce < 4; ++ce) {
-        int index = 0;
-        emifa_register_index(regs::emifa::cectl(ce), index);
-        m_emifa_regs[index] = regs::emifa::cectl_reset;
-    }
-    for (timer_unit& t : m_timers) t.reset();
 
     SC_THREAD(cpu_thread);
     set_stack_size(m_config.cpu_stack_bytes);
@@ -115,17 +102,7 @@ uint64_t c6416_sc::charged_cycles_total() const {
     return sum;
 }
 
-// ---- CPU clock ---------------------------------------------------------------------------
-uint64_t c6416_sc::cpu_cycle_at_or_after(const sc_time& t) const {
-    const simtime::ticks tick = ticks_at_or_after_fs(static_cast<int64_t>(t.value()));
-    return m_cpu_clock.first_rise_at_or_after(tick);
-}
-
-sc_time c6416_sc::time_of_cpu_cycle(uint64_t k) const {
-    return sc_time::from_value(
-        static_cast<sc_core::sc_time::value_type>(simtime::to_fs(m_cpu_clock.rise(k))));
-}
-
+// ---- the CPU -----------------------------------------------------------------------------
 void c6416_sc::cpu_thread() {
     if (!m_firmware) return;
     m_firmware(*m_hal);
@@ -134,16 +111,19 @@ void c6416_sc::cpu_thread() {
     if (m_config.stop_when_firmware_returns) sc_core::sc_stop();
 }
 
+// The "CPU too slow" fault: cycles before the onset run at the nominal
+// rate, the rest scaled by num / den (rounded up).
+uint64_t c6416_sc::scaled_cycles(uint64_t k0, uint64_t cycles) const {
+    if (m_scale_num == m_scale_den) return cycles;
+    const uint64_t onset = cpu_cycle_at_or_after(m_scale_from);
+    const uint64_t before = onset > k0 ? std::min<uint64_t>(cycles, onset - k0) : 0;
+    const __int128 after = static_cast<__int128>(cycles - before) * m_scale_num;
+    return before + static_cast<uint64_t>((after + m_scale_den - 1) / m_scale_den);
+}
+
 void c6416_sc::charge(dsp::stage s, uint64_t cycles, const dsp::sdram_traffic& traffic) {
-    const uint64_t k0 = cpu_cycle_at_or_after(sc_core::sc_time_stamp());
-    uint64_t scaled = cycles;
-    if (m_scale_num != m_scale_den) {
-        // Cycles before the onset run at the nominal rate, the rest scaled.
-        const uint64_t onset = cpu_cycle_at_or_after(m_scale_from);
-        const uint64_t before = onset > k0 ? std::min<uint64_t>(cycles, onset - k0) : 0;
-        const __int128 after = static_cast<__int128>(cycles - before) * m_scale_num;
-        scaled = before + static_cast<uint64_t>((after + m_scale_den - 1) / m_scale_den);
-    }
+    const uint64_t k0 = m_cpu_clock.current_cycle();
+    const uint64_t scaled = scaled_cycles(k0, cycles);
     m_stage_cycles[static_cast<int>(s)] += scaled;
     const sc_time start = time_of_cpu_cycle(k0);
     const sc_time target = time_of_cpu_cycle(k0 + scaled);
@@ -158,46 +138,23 @@ void c6416_sc::charge(dsp::stage s, uint64_t cycles, const dsp::sdram_traffic& t
     if (target > now) sc_core::wait(target - now);
 }
 
-// The charge's SDRAM traffic as L2 line transfers on emifa_cpu, spread over
-// its CPU cycles [first_cycle, first_cycle + cycles): transfer k of T waits
-// for CPU cycle first_cycle + cycles k / T (or goes at once if the previous
-// one ended later). Write-backs are interleaved evenly among the reads
-// (Bresenham), each after at least one fetch.
 void c6416_sc::replay_traffic(uint64_t first_cycle, uint64_t cycles,
                               const dsp::sdram_traffic& traffic) {
     if (traffic.empty() || !m_config.sdram_over_emifa || !m_config.replay_sdram_traffic ||
         emifa_cpu.size() == 0) {
         return;
     }
-    const uint64_t line = m_line_buffer.size();
-    const uint64_t written = (traffic.bytes_written + line - 1) / line;
-    const uint64_t fetched = (traffic.bytes_read + line - 1) / line + written;
-    const uint64_t transfers = fetched + written;
-    const uint64_t window_lines = std::max<uint64_t>(1, m_config.sdram_traffic_bytes / line);
-    for (uint64_t k = 0; k < transfers; ++k) {
-        const uint64_t slot_cycle =
-            first_cycle +
-            static_cast<uint64_t>(static_cast<unsigned __int128>(cycles) * k / transfers);
-        const sc_time slot = time_of_cpu_cycle(slot_cycle);
-        if (slot > sc_core::sc_time_stamp()) sc_core::wait(slot - sc_core::sc_time_stamp());
-        const bool write_back = (k + 1) * written / transfers > k * written / transfers;
-        const uint32_t address = m_config.sdram_traffic_base +
-                                 static_cast<uint32_t>((m_traffic_cursor++ % window_lines) * line);
-        const sc_time issued = sc_core::sc_time_stamp();
-        bus_access(emifa_cpu, write_back ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND, address,
-                   m_line_buffer.data(), static_cast<uint32_t>(line), static_cast<uint32_t>(line));
-        m_sdram_transfer += sc_core::sc_time_stamp() - issued;
-        if (write_back) {
-            ++m_sdram_lines_written;
-        } else {
-            ++m_sdram_lines_read;
-        }
-    }
+    m_replay.run(m_cpu_clock, first_cycle, cycles, traffic,
+                 [this](bool write_back, uint32_t address, uint8_t* data, uint32_t bytes) {
+                     bus_access(emifa_cpu,
+                                write_back ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND,
+                                address, data, bytes, bytes);
+                 });
 }
 
 void c6416_sc::wait_cpu_cycles(uint64_t cycles) {
     if (cycles == 0) return;
-    const uint64_t k0 = cpu_cycle_at_or_after(sc_core::sc_time_stamp());
+    const uint64_t k0 = m_cpu_clock.current_cycle();
     const sc_time target = time_of_cpu_cycle(k0 + cycles);
     sc_core::wait(target - sc_core::sc_time_stamp());
 }
@@ -222,104 +179,9 @@ void c6416_sc::report(const dsp::event_record& e) {
     if (m_event_observer) m_event_observer(te);
 }
 
-// ---- memory and registers ----------------------------------------------------------------
-uint8_t* c6416_sc::memory(uint32_t address, uint32_t bytes) {
-    const uint64_t end = static_cast<uint64_t>(address) + bytes;
-    if (end <= regs::l2_base + static_cast<uint64_t>(regs::l2_bytes)) return &m_l2[address];
-    if (address >= regs::sdram_base && end <= regs::sdram_base + uint64_t{regs::sdram_bytes}) {
-        return &m_sdram[address - regs::sdram_base];
-    }
-    return nullptr;
-}
-
-bool c6416_sc::local_memory(uint32_t address) const {
-    if (address < regs::l2_base + regs::l2_bytes) return true;
-    return !m_config.sdram_over_emifa && address >= regs::sdram_base &&
-           address < regs::sdram_base + regs::sdram_bytes;
-}
-
-bool c6416_sc::is_peripheral(uint32_t address) const {
-    return address >= regs::emifa::base && address < 0x02000000u;
-}
-
-bool c6416_sc::emifa_register_index(uint32_t address, int& index) const {
-    if (address < regs::emifa::base || address >= regs::emifa::base + regs::emifa::block_bytes ||
-        (address & 3u) != 0) {
-        return false;
-    }
-    index = static_cast<int>((address - regs::emifa::base) / 4);
-    return true;
-}
-
-uint32_t c6416_sc::peek_register(uint32_t address) {
-    return register_read(address);
-}
-
-uint32_t c6416_sc::register_read(uint32_t address) {
-    uint32_t value = 0;
-    int index = 0;
-    if (emifa_register_index(address, index)) return m_emifa_regs[index];
-    if (m_selector.read(address, value)) return value;
-    if (m_edma.read(address, value)) return value;
-    for (int n = 0; n < 3; ++n) {
-        const uint32_t base = regs::timer::base(n);
-        if (address >= base && address < base + regs::timer::block_bytes) {
-            const uint64_t cycle = cpu_cycle_at_or_after(sc_core::sc_time_stamp());
-            switch (address - base) {
-                case regs::timer::ctl:
-                    return m_timers[n].read_ctl();
-                case regs::timer::prd:
-                    return m_timers[n].read_prd();
-                default:
-                    return m_timers[n].read_cnt(cycle);
-            }
-        }
-    }
-    SC_REPORT_WARNING(name(), ("read of an unmodelled register at 0x" +
-                               sc_dt::sc_uint<32>(address).to_string(sc_dt::SC_HEX_US))
-                                  .c_str());
-    return 0;
-}
-
-void c6416_sc::register_write(uint32_t address, uint32_t value) {
-    int index = 0;
-    if (emifa_register_index(address, index)) {
-        m_emifa_regs[index] = value;
-        if (m_emifa_observer) m_emifa_observer(address, value);
-        return;
-    }
-    if (m_selector.write(address, value)) return;
-    if (m_edma.write(address, value)) {
-        after_edma_change();
-        return;
-    }
-    for (int n = 0; n < 3; ++n) {
-        const uint32_t base = regs::timer::base(n);
-        if (address >= base && address < base + regs::timer::block_bytes) {
-            const uint64_t cycle = cpu_cycle_at_or_after(sc_core::sc_time_stamp());
-            switch (address - base) {
-                case regs::timer::ctl:
-                    m_timers[n].write_ctl(value, cycle);
-                    break;
-                case regs::timer::prd:
-                    m_timers[n].write_prd(value);
-                    break;
-                default:
-                    m_timers[n].write_cnt(value, cycle);
-                    break;
-            }
-            reschedule_timer(n);
-            return;
-        }
-    }
-    SC_REPORT_WARNING(name(), ("write of an unmodelled register at 0x" +
-                               sc_dt::sc_uint<32>(address).to_string(sc_dt::SC_HEX_US))
-                                  .c_str());
-}
-
 uint32_t c6416_sc::cpu_read32(uint32_t address) {
     uint32_t value = 0;
-    if (local_memory(address)) {
+    if (m_memory.is_local(address)) {
         uint8_t* p = memory(address, 4);
         if (p) std::memcpy(&value, p, 4);
         return value;
@@ -341,7 +203,7 @@ uint32_t c6416_sc::cpu_read32(uint32_t address) {
 }
 
 void c6416_sc::cpu_write32(uint32_t address, uint32_t value) {
-    if (local_memory(address)) {
+    if (m_memory.is_local(address)) {
         uint8_t* p = memory(address, 4);
         if (p) std::memcpy(p, &value, 4);
         return;
@@ -360,6 +222,46 @@ void c6416_sc::cpu_write32(uint32_t address, uint32_t value) {
         return;
     }
     SC_REPORT_WARNING(name(), "CPU write outside the memory map");
+}
+
+// ---- registers: each block answers for its own addresses ---------------------------------
+bool c6416_sc::is_peripheral(uint32_t address) const {
+    return address >= regs::emifa::base && address < 0x02000000u;
+}
+
+uint32_t c6416_sc::peek_register(uint32_t address) {
+    return register_read(address);
+}
+
+uint32_t c6416_sc::register_read(uint32_t address) {
+    uint32_t value = 0;
+    if (m_emifa_regs.read(address, value)) return value;
+    if (m_selector.read(address, value)) return value;
+    if (m_edma.read(address, value)) return value;
+    const int timer = timer_block::timer_at(address);
+    if (timer >= 0) return m_timers.read(timer, address, m_cpu_clock.current_cycle());
+    SC_REPORT_WARNING(name(), ("read of an unmodelled register at 0x" +
+                               sc_dt::sc_uint<32>(address).to_string(sc_dt::SC_HEX_US))
+                                  .c_str());
+    return 0;
+}
+
+void c6416_sc::register_write(uint32_t address, uint32_t value) {
+    if (m_emifa_regs.write(address, value)) return;
+    if (m_selector.write(address, value)) return;
+    if (m_edma.write(address, value)) {
+        after_edma_change();
+        return;
+    }
+    const int timer = timer_block::timer_at(address);
+    if (timer >= 0) {
+        m_timers.write(timer, address, value, m_cpu_clock.current_cycle());
+        arm_timer_event();
+        return;
+    }
+    SC_REPORT_WARNING(name(), ("write of an unmodelled register at 0x" +
+                               sc_dt::sc_uint<32>(address).to_string(sc_dt::SC_HEX_US))
+                                  .c_str());
 }
 
 // ---- interrupts --------------------------------------------------------------------------
@@ -394,46 +296,36 @@ void c6416_sc::ext_int_method() {
     after_edma_change();
 }
 
-void c6416_sc::reschedule_timer(int n) {
-    // An interrupt due this very cycle has fired already (timer_method) or
-    // belongs to the old setting: look from the next cycle.
-    const uint64_t cycle = cpu_cycle_at_or_after(sc_core::sc_time_stamp());
-    m_timer_next[n] = m_timers[n].next_interrupt(cycle + 1);
-    arm_timer_event();
-}
-
 void c6416_sc::arm_timer_event() {
-    uint64_t earliest = timer_unit::never;
-    for (uint64_t next : m_timer_next) earliest = std::min(earliest, next);
+    const uint64_t earliest = m_timers.earliest_interrupt();
     m_timer_event.cancel();
-    if (earliest != timer_unit::never) {
+    if (earliest != timer_block::never) {
         m_timer_event.notify(time_of_cpu_cycle(earliest) - sc_core::sc_time_stamp());
     }
 }
 
 void c6416_sc::timer_method() {
-    static constexpr uint32_t codes[3] = {regs::irq::sel_tint0, regs::irq::sel_tint1,
-                                          regs::irq::sel_tint2};
-    static constexpr int channels[3] = {regs::edma::channel_tint0, regs::edma::channel_tint1,
-                                        regs::edma::channel_tint2};
-    const uint64_t cycle = cpu_cycle_at_or_after(sc_core::sc_time_stamp());
-    for (int n = 0; n < 3; ++n) {
-        if (m_timer_next[n] == timer_unit::never || m_timer_next[n] > cycle) continue;
+    static constexpr uint32_t codes[timer_block::count] = {
+        regs::irq::sel_tint0, regs::irq::sel_tint1, regs::irq::sel_tint2};
+    static constexpr int channels[timer_block::count] = {
+        regs::edma::channel_tint0, regs::edma::channel_tint1, regs::edma::channel_tint2};
+    const uint32_t due = m_timers.take_due(m_cpu_clock.current_cycle());
+    for (int n = 0; n < timer_block::count; ++n) {
+        if (!((due >> n) & 1u)) continue;
         raise_interrupt_event(codes[n]);
         m_edma.event(channels[n]);
-        m_timer_next[n] = m_timers[n].next_interrupt(cycle + 1);
     }
     after_edma_change();
     arm_timer_event();
 }
 
-// ---- EDMA transfer controller ------------------------------------------------------------
+// ---- EDMA --------------------------------------------------------------------------------
 void c6416_sc::edma_thread() {
     for (;;) {
         while (!m_edma.has_request()) sc_core::wait(m_edma_kick);
         const transfer_request r = m_edma.take_request();
         const sc_time start = sc_core::sc_time_stamp();
-        execute(r);
+        m_edma_transfer.execute(r);
         m_edma_busy += sc_core::sc_time_stamp() - start;
         m_edma_bytes += r.bytes();
         m_edma.complete(r);
@@ -441,79 +333,7 @@ void c6416_sc::edma_thread() {
     }
 }
 
-void c6416_sc::execute(const transfer_request& r) {
-    const uint64_t array_bytes = static_cast<uint64_t>(r.elements) * r.element_bytes;
-    if (m_staging.size() < array_bytes) m_staging.resize(array_bytes);
-    for (uint32_t a = 0; a < r.arrays; ++a) {
-        const uint32_t src = static_cast<uint32_t>(r.src.start + r.src.array_step * a);
-        const uint32_t dst = static_cast<uint32_t>(r.dst.start + r.dst.array_step * a);
-        read_run(src, r.src.element_step, r.elements, r.element_bytes, m_staging.data());
-        write_run(dst, r.dst.element_step, r.elements, r.element_bytes, m_staging.data());
-    }
-}
-
-// One EDMA run of `elements` elements of `es` bytes on EMIFA: a whole burst
-// when the addresses increment by the element size, a fixed-address stream
-// when they do not move (a FIFO port), else one access per element.
-void c6416_sc::bus_run(tlm::tlm_command command, uint32_t address, int64_t step, uint32_t elements,
-                       uint32_t es, uint8_t* data) {
-    const uint32_t length = elements * es;
-    if (step == es) {
-        bus_access(emifa_edma, command, address, data, length, length);
-    } else if (step == 0) {
-        bus_access(emifa_edma, command, address, data, length, es);
-    } else {
-        for (uint32_t i = 0; i < elements; ++i) {
-            bus_access(emifa_edma, command, static_cast<uint32_t>(address + step * i),
-                       data + i * es, es, es);
-        }
-    }
-}
-
-void c6416_sc::read_run(uint32_t address, int64_t step, uint32_t elements, uint32_t es,
-                        uint8_t* out) {
-    if (regs::in_emifa(address) && !local_memory(address)) {
-        bus_run(tlm::TLM_READ_COMMAND, address, step, elements, es, out);
-        return;
-    }
-    for (uint32_t i = 0; i < elements; ++i) {
-        const uint32_t a = static_cast<uint32_t>(address + step * i);
-        if (uint8_t* p = memory(a, es)) {
-            std::memcpy(out + i * es, p, es);
-        } else if (is_peripheral(a) && es == 4) {
-            const uint32_t v = register_read(a);
-            std::memcpy(out + i * es, &v, 4);
-        } else {
-            ++m_bus_errors;
-            SC_REPORT_WARNING(name(), "EDMA read outside the memory map");
-            return;
-        }
-    }
-}
-
-void c6416_sc::write_run(uint32_t address, int64_t step, uint32_t elements, uint32_t es,
-                         const uint8_t* in) {
-    if (regs::in_emifa(address) && !local_memory(address)) {
-        // TLM payloads carry a non-const pointer; a write only reads it.
-        bus_run(tlm::TLM_WRITE_COMMAND, address, step, elements, es, const_cast<uint8_t*>(in));
-        return;
-    }
-    for (uint32_t i = 0; i < elements; ++i) {
-        const uint32_t a = static_cast<uint32_t>(address + step * i);
-        if (uint8_t* p = memory(a, es)) {
-            std::memcpy(p, in + i * es, es);
-        } else if (is_peripheral(a) && es == 4) {
-            uint32_t v = 0;
-            std::memcpy(&v, in + i * es, 4);
-            register_write(a, v);
-        } else {
-            ++m_bus_errors;
-            SC_REPORT_WARNING(name(), "EDMA write outside the memory map");
-            return;
-        }
-    }
-}
-
+// ---- EMIFA -------------------------------------------------------------------------------
 void c6416_sc::bus_access(tlm_utils::simple_initiator_socket_optional<c6416_sc>& socket,
                           tlm::tlm_command command, uint32_t address, uint8_t* data,
                           uint32_t length, uint32_t streaming_width) {

@@ -1,10 +1,13 @@
 // The TMS320C6416 as a loosely-timed SystemC / TLM-2.0 model (docs/c6416.md).
 //
 // What it holds: the CPU (a thread that runs the firmware natively through
-// dsp::hal), 1 MB L2 SRAM at 0x00000000, the DSK's 16 MB SDRAM storage for
-// EMIFA CE0 (0x80000000), the EMIFA control registers, the interrupt
-// selector, the EDMA (channel controller + one transfer controller) and
-// timers 0-2, at their data-sheet addresses (dsp/c6416_regs.h).
+// dsp::hal, firmware_hal.h), 1 MB L2 SRAM at 0x00000000 and the DSK's 16 MB
+// SDRAM storage for EMIFA CE0 (0x80000000) (c6416_memory.h), the EMIFA
+// control registers (emifa_registers.h), the interrupt selector, the EDMA
+// (channel controller edma_core.h + one transfer controller
+// edma_transfer_controller.h, run on the EDMA thread here) and timers 0-2 (timer_block.h), at their
+// data-sheet addresses (dsp/c6416_regs.h). This module wires the blocks together and runs their
+// SystemC processes; each block is its own class.
 //
 // Ports and sockets (named after the pins / roles):
 //   ext_int4..7  bool signal inputs: the EXT_INT pins (J3), each may stay
@@ -35,7 +38,8 @@
 // "CPU too slow" fault: set_cycle_scale(num, den, from): cycles charged
 // after `from` are multiplied by num / den (rounded up).
 //
-// The firmware's own SDRAM traffic (dsp::hal::charge_with_traffic): the
+// The firmware's own SDRAM traffic (dsp::hal::charge_with_traffic,
+// sdram_traffic_replay.h): the
 // bytes a charge's kernels stream from / to SDRAM go out on emifa_cpu as L2
 // line transfers (one 128-byte burst per line read; a line written is
 // fetched (write-allocate) and later written back: two), spread evenly over
@@ -59,39 +63,19 @@
 
 #include "dsp/hal.h"
 #include "dsp/stage.h"
+#include "model/c6416/c6416_config.h"
+#include "model/c6416/c6416_memory.h"
+#include "model/c6416/cpu_clock_sc.h"
 #include "model/c6416/dsk_profile.h"
 #include "model/c6416/edma_core.h"
+#include "model/c6416/edma_transfer_controller.h"
+#include "model/c6416/emifa_registers.h"
 #include "model/c6416/interrupt_selector.h"
-#include "model/c6416/timer_unit.h"
+#include "model/c6416/sdram_traffic_replay.h"
+#include "model/c6416/timer_block.h"
 #include "model/time/ticks.h"
 
 namespace c6416 {
-
-struct c6416_config {
-    dsk_profile dsk = dsk_v1();
-    // CE0 (SDRAM) accesses go out on emifa_cpu / emifa_edma (true) or are
-    // served locally in zero time (false: no EMIF model, e.g. unit tests).
-    bool sdram_over_emifa = true;
-    // CPU cycles one access to a C6416 peripheral register costs (ASSUMED 0:
-    // the C64x peripheral bus latency was not at hand).
-    uint32_t peripheral_access_cycles = 0;
-    // The firmware's SDRAM traffic goes out on emifa_cpu (see the top comment;
-    // only with sdram_over_emifa). false: it is ignored (the cost model's
-    // stall cycles are all it costs, as before issue 5).
-    bool replay_sdram_traffic = true;
-    // L2 cache line: the unit of the replayed transfers (ASSUMED 128 bytes,
-    // as dsp::c64x::model_params::l2_line_bytes; NOT FOUND in the sheet).
-    uint32_t l2_line_bytes = 128;
-    // SDRAM window the replayed transfers read and write (line after line,
-    // wrapping): the top 4 MB of the DSK's 16 MB, which the firmware's pair
-    // buffers (from 0x80000000, ~1.2 MB) never reach. Its bytes are garbage.
-    uint32_t sdram_traffic_base = 0x80C00000u;
-    uint32_t sdram_traffic_bytes = 4u << 20;
-    // Stack of the CPU thread that runs the firmware (DESIGN.md, "Known traps").
-    std::size_t cpu_stack_bytes = std::size_t{64} << 20;
-    // sc_stop() when the firmware's entry returns.
-    bool stop_when_firmware_returns = false;
-};
 
 // A firmware report with its simulated time.
 struct timed_event {
@@ -134,18 +118,22 @@ class c6416_sc : public sc_core::sc_module {
     void set_stage_observer(stage_observer f) { m_stage_observer = std::move(f); }
     // Every write to an EMIFA control register (GBLCTL, CECTLn, SDCTL, ...):
     // the EMIF model takes its timing from them.
-    void set_emifa_register_observer(register_observer f) { m_emifa_observer = std::move(f); }
+    void set_emifa_register_observer(register_observer f) {
+        m_emifa_regs.set_observer(std::move(f));
+    }
 
     // ---- inspection (tests, platform) -----------------------------------------------------
     const c6416_config& config() const { return m_config; }
-    const simtime::tick_clock& cpu_clock() const { return m_cpu_clock; }
+    const simtime::tick_clock& cpu_clock() const { return m_cpu_clock.ticks(); }
     // The CPU cycle (edge index) at or after t, and the time of edge k.
-    uint64_t cpu_cycle_at_or_after(const sc_core::sc_time& t) const;
-    sc_core::sc_time time_of_cpu_cycle(uint64_t k) const;
+    uint64_t cpu_cycle_at_or_after(const sc_core::sc_time& t) const {
+        return m_cpu_clock.cycle_at_or_after(t);
+    }
+    sc_core::sc_time time_of_cpu_cycle(uint64_t k) const { return m_cpu_clock.time_of_cycle(k); }
     // Modelled memory (L2 or SDRAM), nullptr outside it.
-    uint8_t* memory(uint32_t address, uint32_t bytes);
-    uint8_t* sdram_storage() { return m_sdram.data(); }
-    std::size_t sdram_storage_bytes() const { return m_sdram.size(); }
+    uint8_t* memory(uint32_t address, uint32_t bytes) { return m_memory.at(address, bytes); }
+    uint8_t* sdram_storage() { return m_memory.sdram(); }
+    std::size_t sdram_storage_bytes() const { return m_memory.sdram_bytes(); }
     // A C6416 register (EMIFA, selector, EDMA, timers), no time, no side effect.
     uint32_t peek_register(uint32_t address);
     uint32_t ifr() const { return m_ifr; }
@@ -166,13 +154,14 @@ class c6416_sc : public sc_core::sc_module {
     // (reads and write-allocate fetches) and written back, the time the
     // transfers took (queue + bus, summed), and the time the CPU waited past
     // a charge's end for its last transfer.
-    uint64_t sdram_lines_read() const { return m_sdram_lines_read; }
-    uint64_t sdram_lines_written() const { return m_sdram_lines_written; }
-    sc_core::sc_time sdram_transfer_time() const { return m_sdram_transfer; }
+    uint64_t sdram_lines_read() const { return m_replay.lines_read(); }
+    uint64_t sdram_lines_written() const { return m_replay.lines_written(); }
+    sc_core::sc_time sdram_transfer_time() const { return m_replay.transfer_time(); }
     sc_core::sc_time sdram_late_time() const { return m_sdram_late; }
 
   private:
     class firmware_hal;
+    class edma_port;
 
     // Processes.
     void cpu_thread();
@@ -182,6 +171,7 @@ class c6416_sc : public sc_core::sc_module {
 
     // CPU side (called on the CPU thread through firmware_hal).
     void charge(dsp::stage s, uint64_t cycles, const dsp::sdram_traffic& traffic);
+    uint64_t scaled_cycles(uint64_t k0, uint64_t cycles) const;
     void replay_traffic(uint64_t first_cycle, uint64_t cycles, const dsp::sdram_traffic& traffic);
     void wait_cpu_cycles(uint64_t cycles);
     uint32_t cpu_read32(uint32_t address);
@@ -193,43 +183,33 @@ class c6416_sc : public sc_core::sc_module {
     bool is_peripheral(uint32_t address) const;
     uint32_t register_read(uint32_t address);
     void register_write(uint32_t address, uint32_t value);
-    bool emifa_register_index(uint32_t address, int& index) const;
 
     // Events and interrupts.
     void raise_interrupt_event(uint32_t selector_code);
     void after_edma_change();
-    void reschedule_timer(int n);
     void arm_timer_event();
 
-    // Transfers.
-    void execute(const transfer_request& r);
-    void bus_run(tlm::tlm_command command, uint32_t address, int64_t step, uint32_t elements,
-                 uint32_t element_bytes, uint8_t* data);
-    void read_run(uint32_t address, int64_t step, uint32_t elements, uint32_t element_bytes,
-                  uint8_t* out);
-    void write_run(uint32_t address, int64_t step, uint32_t elements, uint32_t element_bytes,
-                   const uint8_t* in);
+    // EMIFA.
     void bus_access(tlm_utils::simple_initiator_socket_optional<c6416_sc>& socket,
                     tlm::tlm_command command, uint32_t address, uint8_t* data, uint32_t length,
                     uint32_t streaming_width);
-    bool local_memory(uint32_t address) const;
 
     c6416_config m_config;
-    simtime::tick_clock m_cpu_clock;
+    cpu_clock_sc m_cpu_clock;
     std::unique_ptr<firmware_hal> m_hal;
     firmware_entry m_firmware;
 
-    std::vector<uint8_t> m_l2;
-    std::vector<uint8_t> m_sdram;
-    uint32_t m_emifa_regs[dsp::c6416::emifa::block_bytes / 4] = {};
+    c6416_memory m_memory;
+    emifa_registers m_emifa_regs;
     interrupt_selector m_selector;
     edma_core m_edma;
-    timer_unit m_timers[3];
-    uint64_t m_timer_next[3] = {timer_unit::never, timer_unit::never, timer_unit::never};
+    timer_block m_timers;
+    sdram_traffic_replay m_replay;
+    std::unique_ptr<edma_port> m_edma_port;  // the chip as the transfer controller sees it
+    edma_transfer_controller m_edma_transfer;
     sc_core::sc_event m_timer_event;
     sc_core::sc_event m_edma_kick;
     sc_core::sc_event m_irq_event;
-    std::vector<uint8_t> m_staging;
 
     uint32_t m_ifr = 0;
     uint32_t m_ier = 0;
@@ -245,20 +225,13 @@ class c6416_sc : public sc_core::sc_module {
     event_observer m_event_observer;
     result_observer m_result_observer;
     stage_observer m_stage_observer;
-    register_observer m_emifa_observer;
     std::vector<timed_event> m_events;
 
     uint64_t m_stage_cycles[dsp::stage_count] = {};
     sc_core::sc_time m_cpu_busy, m_cpu_bus, m_edma_busy;
     uint64_t m_edma_bytes = 0;
     uint64_t m_bus_errors = 0;
-    std::vector<uint8_t> m_line_buffer;  // data of the replayed line transfers
-    uint64_t m_traffic_cursor = 0;       // next line of the SDRAM window
-    uint64_t m_sdram_lines_read = 0, m_sdram_lines_written = 0;
-    sc_core::sc_time m_sdram_transfer, m_sdram_late;
+    sc_core::sc_time m_sdram_late;
 };
-
-// Ticks (1/18 ns) of the earliest tick whose femtosecond time is >= fs.
-simtime::ticks ticks_at_or_after_fs(int64_t fs);
 
 }  // namespace c6416

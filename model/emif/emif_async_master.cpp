@@ -328,8 +328,7 @@ void emif_async_master::start_op(uint64_t e) {
 void emif_async_master::begin_strobe(uint64_t e) {
     const async_timing& t = m_timing[m_op.ce];
     const uint32_t programmed = m_op.write ? t.write_strobe : t.read_strobe;
-    const uint32_t shorten = m_config.test_strobe_shortening;
-    m_strobe_cycles = programmed > shorten ? programmed - shorten : 1;
+    m_strobe_cycles = std::max(1u, programmed);
     m_strobe_start = e;
     if (m_op.write)
         m_pins.awe_n = false;

@@ -69,9 +69,6 @@ struct emif_config {
     // the strobe can end at edge E only if ARDY was high when sampled at edge E - ardy_lead.
     uint32_t ardy_lead = 1;
     sdram_timing sdram;
-    // TEST ONLY: every programmed strobe is this many cycles shorter (at least
-    // 1), a protocol violation the checker must flag. Never set it otherwise.
-    uint32_t test_strobe_shortening = 0;
 };
 
 // Fault hook: ARDY held low `extra_cycles` more cycles at the end of the

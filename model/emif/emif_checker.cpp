@@ -91,15 +91,26 @@ void emif_checker::observe(uint64_t c, const emif_pins& p) {
     if (read_strobe && write_strobe) flag(c, violation_kind::are_awe_both_low, active, 0, 1);
     if (p.ed_oe && (!p.aoe_n || read_strobe)) flag(c, violation_kind::ed_in_read, active, 0, 1);
 
-    // ---- turnaround between CE spaces and, on one CE, between directions ----
+    const bool reading = active >= 0 && !p.aoe_n;
+    const bool driving = p.ed_oe;
+    check_turnarounds(c, active, reading, driving);
+    check_async_cycle(c, p, active, read_strobe, write_strobe);
+
+    m_prev_strobe = read_strobe || write_strobe;
+    m_prev_ce = active;
+    m_prev_read = reading;
+    m_prev_drive = driving;
+    m_have_prev = true;
+}
+
+// Turnaround between CE spaces and, on one CE, between directions.
+void emif_checker::check_turnarounds(uint64_t c, int active, bool reading, bool driving) {
     if (active >= 0 && active != m_prev_ce && m_last_ce >= 0 && m_last_ce != active) {
         const uint64_t gap = c - (m_last_ce_cycle + 1);
         const uint32_t required = turnaround(m_last_ce, active);
         if (gap < required)
             flag(c, violation_kind::ce_turnaround, active, required, static_cast<uint32_t>(gap));
     }
-    const bool reading = active >= 0 && !p.aoe_n;
-    const bool driving = p.ed_oe;
     if (reading && !m_prev_read && m_have_drive && m_drive_ce == active &&
         (!m_have_read || m_last_drive_cycle > m_last_read_cycle)) {
         const uint64_t gap = c - (m_last_drive_cycle + 1);
@@ -128,8 +139,12 @@ void emif_checker::observe(uint64_t c, const emif_pins& p) {
         m_drive_ce = active;
         m_last_drive_cycle = c;
     }
+}
 
-    // ---- setup / strobe / hold of async accesses ----
+// Setup / strobe / hold of async accesses: the strobe rising, the select
+// changing, the strobe falling, in that order within one cycle.
+void emif_checker::check_async_cycle(uint64_t c, const emif_pins& p, int active, bool read_strobe,
+                                     bool write_strobe) {
     select sel;
     if (active >= 0) {
         sel.ce = active;
@@ -142,18 +157,7 @@ void emif_checker::observe(uint64_t c, const emif_pins& p) {
     const bool strobe = read_strobe || write_strobe;
     const bool sel_changed = !m_have_prev || !(sel == m_sel);
 
-    if (m_in_strobe && !strobe) {  // strobe rose at c
-        const async_timing& t = m_timing[m_strobe_ce];
-        const uint32_t required = m_strobe_write ? t.write_strobe : t.read_strobe;
-        const uint64_t length = c - m_strobe_start;
-        if (length < required)
-            flag(c, violation_kind::strobe_short, m_strobe_ce, required,
-                 static_cast<uint32_t>(length));
-        m_in_strobe = false;
-        m_hold_pending = true;
-        m_hold_required = m_strobe_write ? t.write_hold : t.read_hold;
-        m_strobe_end = c;
-    }
+    if (m_in_strobe && !strobe) strobe_rose(c);
     if (sel_changed) {
         if (m_in_strobe && strobe) {
             flag(c, violation_kind::select_in_strobe, m_strobe_ce, 0, 1);
@@ -167,41 +171,48 @@ void emif_checker::observe(uint64_t c, const emif_pins& p) {
         m_sel = sel;
         m_sel_since = c;
     }
-    if (strobe && !m_prev_strobe) {  // strobe fell at c
-        ++m_strobes;
-        if (!async_space(active)) {
-            flag(c, violation_kind::strobe_no_ce, active, 0, 0);
-            m_hold_pending = false;
-        } else {
-            const async_timing& t = m_timing[active];
-            const uint32_t setup_required = write_strobe ? t.write_setup : t.read_setup;
-            if (m_hold_pending && m_strobe_ce == active) {
-                // CE held low and nothing changed since the last strobe: only
-                // hold + setup together can be measured.
-                const uint64_t gap = c - m_strobe_end;
-                const uint32_t required = m_hold_required + setup_required;
-                if (gap < required)
-                    flag(c, violation_kind::hold_setup_short, active, required,
-                         static_cast<uint32_t>(gap));
-            } else {
-                const uint64_t setup = c - m_sel_since;
-                if (setup < setup_required)
-                    flag(c, violation_kind::setup_short, active, setup_required,
-                         static_cast<uint32_t>(setup));
-            }
-            m_hold_pending = false;
-            m_in_strobe = true;
-            m_strobe_write = write_strobe;
-            m_strobe_ce = active;
-            m_strobe_start = c;
-        }
-    }
+    if (strobe && !m_prev_strobe) strobe_fell(c, active, write_strobe);
+}
 
-    m_prev_strobe = strobe;
-    m_prev_ce = active;
-    m_prev_read = reading;
-    m_prev_drive = driving;
-    m_have_prev = true;
+void emif_checker::strobe_rose(uint64_t c) {
+    const async_timing& t = m_timing[m_strobe_ce];
+    const uint32_t required = m_strobe_write ? t.write_strobe : t.read_strobe;
+    const uint64_t length = c - m_strobe_start;
+    if (length < required)
+        flag(c, violation_kind::strobe_short, m_strobe_ce, required, static_cast<uint32_t>(length));
+    m_in_strobe = false;
+    m_hold_pending = true;
+    m_hold_required = m_strobe_write ? t.write_hold : t.read_hold;
+    m_strobe_end = c;
+}
+
+void emif_checker::strobe_fell(uint64_t c, int active, bool write_strobe) {
+    ++m_strobes;
+    if (!async_space(active)) {
+        flag(c, violation_kind::strobe_no_ce, active, 0, 0);
+        m_hold_pending = false;
+        return;
+    }
+    const async_timing& t = m_timing[active];
+    const uint32_t setup_required = write_strobe ? t.write_setup : t.read_setup;
+    if (m_hold_pending && m_strobe_ce == active) {
+        // CE held low and nothing changed since the last strobe: only
+        // hold + setup together can be measured.
+        const uint64_t gap = c - m_strobe_end;
+        const uint32_t required = m_hold_required + setup_required;
+        if (gap < required)
+            flag(c, violation_kind::hold_setup_short, active, required, static_cast<uint32_t>(gap));
+    } else {
+        const uint64_t setup = c - m_sel_since;
+        if (setup < setup_required)
+            flag(c, violation_kind::setup_short, active, setup_required,
+                 static_cast<uint32_t>(setup));
+    }
+    m_hold_pending = false;
+    m_in_strobe = true;
+    m_strobe_write = write_strobe;
+    m_strobe_ce = active;
+    m_strobe_start = c;
 }
 
 }  // namespace emif

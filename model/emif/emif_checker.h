@@ -91,6 +91,11 @@ class emif_checker : public emif_pin_observer {
         }
     };
     void flag(uint64_t cycle, violation_kind k, int ce, uint32_t required, uint32_t actual);
+    void check_turnarounds(uint64_t c, int active, bool reading, bool driving);
+    void check_async_cycle(uint64_t c, const emif_pins& p, int active, bool read_strobe,
+                           bool write_strobe);
+    void strobe_rose(uint64_t c);
+    void strobe_fell(uint64_t c, int active, bool write_strobe);
     bool async_space(int ce) const { return ce >= 0 && is_async(m_timing[ce].type); }
     uint32_t turnaround(int a, int b) const;
 

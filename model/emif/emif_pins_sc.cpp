@@ -1,6 +1,6 @@
 #include "model/emif/emif_pins_sc.h"
 
-#include "model/emif/emif_tlm_target_sc.h"
+#include "model/time/sc_ticks.h"
 
 namespace emif {
 
@@ -41,7 +41,7 @@ emif_pins_sc::emif_pins_sc(sc_core::sc_module_name name, emif_async_master& engi
 
 void emif_pins_sc::on_rising_edge() {
     const uint64_t edge = m_engine.next_edge();
-    if (time_of_tick(m_engine.edge_tick(edge)) != sc_core::sc_time_stamp())
+    if (simtime::sc_time_of(m_engine.edge_tick(edge)) != sc_core::sc_time_stamp())
         SC_REPORT_ERROR(name(), "ECLKOUT edge off the engine's clock");
     emif_inputs in;
     in.ed_in = ed_in.read();

@@ -1,19 +1,8 @@
 #include "model/emif/emif_tlm_target_sc.h"
 
+#include "model/time/sc_ticks.h"
+
 namespace emif {
-
-sc_core::sc_time time_of_tick(simtime::ticks t) {
-    return sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(simtime::to_fs(t)));
-}
-
-simtime::ticks tick_at_or_before(const sc_core::sc_time& t) {
-    const int64_t fs = static_cast<int64_t>(t.value());
-    simtime::ticks tick = fs / simtime::fs_per_ns * simtime::ticks_per_ns +
-                          (fs % simtime::fs_per_ns) * simtime::ticks_per_ns / simtime::fs_per_ns;
-    while (simtime::to_fs(tick + 1) <= fs) ++tick;
-    while (tick > 0 && simtime::to_fs(tick) > fs) --tick;
-    return tick;
-}
 
 emif_tlm_target::emif_tlm_target(sc_core::sc_module_name name, emif_async_master& engine)
     : sc_core::sc_module(name), cpu("cpu"), edma("edma"), m_engine(engine) {
@@ -77,7 +66,7 @@ void emif_tlm_target::transport(requester who, tlm::tlm_generic_payload& p,
     }
     sc_core::sc_event done;
     a.user = &done;
-    if (!m_engine.submit_at(a, tick_at_or_before(sc_core::sc_time_stamp()))) {
+    if (!m_engine.submit_at(a, simtime::tick_at_or_before(sc_core::sc_time_stamp()))) {
         p.set_response_status(a.status == access_status::unsupported_memory
                                   ? tlm::TLM_COMMAND_ERROR_RESPONSE
                                   : tlm::TLM_ADDRESS_ERROR_RESPONSE);
@@ -93,7 +82,7 @@ void emif_tlm_target::on_complete(void* self, emif_access& a) {
     auto* target = static_cast<emif_tlm_target*>(self);
     auto* done = static_cast<sc_core::sc_event*>(a.user);
     if (!done) return;
-    const sc_core::sc_time at = time_of_tick(target->m_engine.edge_tick(a.done_edge));
+    const sc_core::sc_time at = simtime::sc_time_of(target->m_engine.edge_tick(a.done_edge));
     const sc_core::sc_time now = sc_core::sc_time_stamp();
     if (at < now)
         SC_REPORT_ERROR(target->name(), "EMIF access completed in the past: the engine ran late");

@@ -13,9 +13,10 @@
 // incrementing one. Byte enables (a 4-byte pattern, repeated) apply to writes.
 //
 // The engine is stepped by someone else: emif_pins_sc (pin-level, one
-// SC_METHOD per ECLK edge) or emif_cycle_driver (the fast island). Requires
+// SC_METHOD per ECLK edge), the platform's fast island (tb/platform) or, in
+// tests, emif_cycle_driver (tests/support/emif). Requires
 // 1 fs time resolution (tests/support/sc_test_main.cpp): tick edges are placed with
-// simtime::to_fs.
+// simtime::sc_time_of (model/time/sc_ticks.h).
 #pragma once
 
 #include <tlm_utils/simple_target_socket.h>
@@ -25,11 +26,6 @@
 #include "model/emif/emif_async_master.h"
 
 namespace emif {
-
-// SystemC time of a tick (rounded once, from the exact tick count).
-sc_core::sc_time time_of_tick(simtime::ticks t);
-// The last tick whose time is at or before t.
-simtime::ticks tick_at_or_before(const sc_core::sc_time& t);
 
 class emif_tlm_target : public sc_core::sc_module {
   public:

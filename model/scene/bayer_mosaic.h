@@ -16,7 +16,23 @@ namespace scene {
 
 enum class cfa_colour : uint8_t { red, green, blue };
 
-cfa_colour cfa_colour_at(dsp::cfa_order order, int x, int y);
+// The one CFA table of the model (the sensor's pixel pipeline uses it too).
+inline cfa_colour cfa_colour_at(dsp::cfa_order order, int x, int y) {
+    // [order][y & 1][x & 1]
+    constexpr cfa_colour r = cfa_colour::red, g = cfa_colour::green, b = cfa_colour::blue;
+    static constexpr cfa_colour cells[4][2][2] = {
+        {{r, g}, {g, b}},  // rggb
+        {{b, g}, {g, r}},  // bggr
+        {{g, r}, {b, g}},  // grbg
+        {{g, b}, {r, g}},  // gbrg
+    };
+    return cells[static_cast<int>(order)][y & 1][x & 1];
+}
+
+// The component of px that colour c samples.
+inline uint8_t cfa_sample(const dsp::rgb8& px, cfa_colour c) {
+    return c == cfa_colour::red ? px.r : (c == cfa_colour::green ? px.g : px.b);
+}
 
 // raw must have rgb's size.
 void mosaic(dsp::rgb_cplane rgb, dsp::cfa_order order, dsp::gray_plane raw);

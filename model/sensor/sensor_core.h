@@ -1,6 +1,9 @@
 // The CMOS sensor model's core: plain C++, stepped one pixel clock at a time
 // (for the fast RTL island); model/sensor/sensor_sc.h puts SystemC pins around
-// the same core. docs/sensor.md describes the pins and timing decisions,
+// the same core. The core is the timing FSM (sensor_core.cpp: start-up,
+// frames, lines, segments); the pixels come from pixel_pipeline, the fault
+// triggers are sensor_core_faults.cpp and their effects on the pins
+// fault_effects. docs/sensor.md describes the pins and timing decisions,
 // docs/sensor-faults.md the fault outcomes.
 //
 // Clocking: cycle n of the pixel clock starts with a rising edge (rise tick)
@@ -23,45 +26,17 @@
 
 #include "model/scene/camera.h"
 #include "model/sensor/fault.h"
+#include "model/sensor/fault_effects.h"
 #include "model/sensor/frame_source.h"
+#include "model/sensor/pin_word.h"
 #include "model/sensor/pixel_noise.h"
+#include "model/sensor/pixel_pipeline.h"
 #include "model/sensor/profile.h"
+#include "model/sensor/sensor_config.h"
 #include "model/sensor/truth.h"
 #include "model/time/ticks.h"
 
 namespace sensor {
-
-// The sensor's outputs during one pixel clock (PCLK itself aside). Two-state:
-// when valid is low the data bus would be tri-stated; it then reads 0.
-struct pin_word {
-    static constexpr uint16_t data_mask = 0x00FF;
-    static constexpr uint16_t href_bit = 1u << 8;
-    static constexpr uint16_t vsync_bit = 1u << 9;
-    static constexpr uint16_t valid_bit = 1u << 10;
-
-    uint16_t bits = 0;
-
-    uint8_t data() const { return static_cast<uint8_t>(bits & data_mask); }
-    bool href() const { return (bits & href_bit) != 0; }
-    bool vsync() const { return (bits & vsync_bit) != 0; }
-    bool valid() const { return (bits & valid_bit) != 0; }
-    friend bool operator==(pin_word a, pin_word b) { return a.bits == b.bits; }
-    friend bool operator!=(pin_word a, pin_word b) { return a.bits != b.bits; }
-};
-
-struct sensor_config {
-    uint64_t seed = 1;                   // start-up delays and noise; give each sensor its own
-    bool noise = false;                  // shot + read noise (off for exact tests)
-    double read_noise_dn = 1.0;          // ASSUMED: read noise sigma, DN
-    double shot_noise_dn2_per_dn = 0.1;  // ASSUMED: shot variance per DN (10 e-/DN)
-    int gain_q8 = 256;                   // analogue gain, Q8 (256 = 1.0)
-    int exposure_lines = 0;              // 0 = the profile's exposure_lines
-    simtime::ticks clock_origin = 0;     // tick of cycle 0's rising edge
-    // Time origin of the scene frame numbering: scene frame k is the frame
-    // period slot centred on scene_origin + k * frame period. Give every sensor
-    // of a rig the same origin (the default, 0 = simulation start, does).
-    simtime::ticks scene_origin = 0;
-};
 
 // One OE start: when OE was sampled high and how long the start-up took.
 struct start_record {
@@ -126,10 +101,6 @@ class sensor_core {
         fault f;
         bool fired = false;
     };
-    struct glitch_window {
-        uint64_t begin, end;  // cycles [begin, end)
-        uint16_t bit;
-    };
 
     pin_word step_slow(bool oe);
     void advance_clock() {
@@ -144,12 +115,17 @@ class sensor_core {
     void advance_segment();
     void enter_const_phase(phase p, uint64_t end_cycle);
     void fill_const_segment();
+    uint16_t const_word() const;
     void begin_frame_or_gap();
     void begin_frame();
+    frame_truth new_frame_truth();
+    void take_frame_faults(frame_truth& t);
+    void load_frame_image(const frame_truth& t);
+    frame_request image_request(const frame_truth& t) const;
     void begin_line();
+    bool take_dropped_line();
     void build_line(int from_col);
     void finish_frame(bool complete);
-    void finalize_words(int from_col, int to_col, uint64_t cycle_of_col0);
     void limit_segment();
     void on_oe_edge(bool oe);
     void note_marks();
@@ -159,7 +135,7 @@ class sensor_core {
     bool frame_fault_reached(const fault& f, uint64_t frame_index, uint64_t start_cycle) const;
     bool position_reached(const fault_trigger& t, uint64_t frame, int line, int col) const;
     void activate(const fault& f);
-    void drop_finished_glitches();
+    void switch_to_own_oscillator(int32_t drift_ppm);
     uint64_t next_pixel_fault_onset() const;
     bool activate_due_faults();
 
@@ -170,21 +146,16 @@ class sensor_core {
         return m_clock.fall(cycle - m_clock_origin_cycle);
     }
     int draw_startup_latency(int* extra);
-    int pixel_value(int col_x, int row_y);
 
     // Configuration.
     sensor_profile m_profile;
     scene::camera_id m_camera;
     frame_source& m_source;
     sensor_config m_config;
-    int64_t m_gain_q16 = 65536;  // gain x exposure ratio, Q16, set per frame
     int m_exposure_lines = 0;
     uint64_t m_extra_threshold = 0;  // extra start-up delay if rng < threshold
+    pixel_pipeline m_pixels;
 
-    // Per-column / per-row maps of the readout window: image x (y) of each
-    // readout column (row), -1 for dark.
-    std::vector<int> m_col_image_x;
-    std::vector<int> m_row_image_y;
     int m_first_active_col = 0;  // in the line
     int m_last_active_col = 0;
 
@@ -217,28 +188,18 @@ class sensor_core {
     bool m_next_is_extra = false;
     bool m_line_dropped = false;
     uint64_t m_current_scene_frame = 0;
-    int m_skew_pending = 0;  // start_skew clocks inserted before the next frame
-    dsp::rgb_cplane m_image{};
-    bool m_have_image = false;
-    uint64_t m_image_scene_frame = 0;
+    int m_skew_pending = 0;    // start_skew clocks inserted before the next frame
     int m_line_href_col = -1;  // marks in this line, -1 if none
     int m_line_first_active = -1;
     int m_line_last_active = -1;
 
     // Faults.
     std::vector<pending> m_pending;
-    std::vector<glitch_window> m_glitches;
-    uint16_t m_stuck_mask = 0;  // data bits stuck (several faults may add up)
-    uint16_t m_stuck_set = 0;   // their values
-    bool m_leak = false;
-    int m_leak_level = 0;
-    bool m_never_start = false;
-    bool m_ignore_oe = false;
+    fault_effects m_effects;
     uint32_t m_persistent_faults = 0;  // fault bits active from now on
 
     // Randomness and truth.
     splitmix64 m_startup_rng;
-    pixel_noise m_noise;
     std::vector<frame_truth> m_truth;
     std::vector<start_record> m_starts;
 };

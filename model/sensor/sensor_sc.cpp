@@ -2,15 +2,9 @@
 
 #include <string>
 
+#include "model/time/sc_ticks.h"
+
 namespace sensor {
-
-namespace {
-
-sc_core::sc_time time_of(simtime::ticks t) {
-    return sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(simtime::to_fs(t)));
-}
-
-}  // namespace
 
 tick_clock_sc::tick_clock_sc(sc_core::sc_module_name name, const simtime::tick_clock& clock)
     : sc_core::sc_module(name), clk("clk"), m_clock(clock) {
@@ -22,7 +16,7 @@ void tick_clock_sc::run() {
     simtime::clock_cursor cursor(m_clock);
     bool level = false;
     for (;;) {
-        const sc_core::sc_time at = time_of(cursor.tick());
+        const sc_core::sc_time at = simtime::sc_time_of(cursor.tick());
         if (at > sc_core::sc_time_stamp()) wait(at - sc_core::sc_time_stamp());
         level = !level;
         clk.write(level);
@@ -46,7 +40,7 @@ sensor_sc::sensor_sc(sc_core::sc_module_name name, const sensor_profile& profile
 }
 
 void sensor_sc::wait_for_edge(simtime::ticks tick) {
-    const sc_core::sc_time target = time_of(tick);
+    const sc_core::sc_time target = simtime::sc_time_of(tick);
     if (m_core.on_master_clock()) {
         // Always woken by an mclk edge (also the first one, at time 0), so
         // PCLK follows MCLK by exactly one delta cycle on every edge.

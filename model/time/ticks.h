@@ -49,6 +49,16 @@ constexpr int64_t to_fs(ticks t) {
     return q * fs_per_ns + (r * fs_per_ns + ticks_per_ns / 2) / ticks_per_ns;
 }
 
+// The first tick whose time (to_fs) is at or after fs femtoseconds; 0 for fs <= 0.
+constexpr ticks tick_at_or_after_fs(int64_t fs) {
+    if (fs <= 0) return 0;
+    // floor(fs * 18 / 10^6), then onto the first tick that is not earlier.
+    ticks t = static_cast<ticks>(static_cast<__int128>(fs) * ticks_per_ns / fs_per_ns);
+    while (to_fs(t) < fs) ++t;
+    while (t > 0 && to_fs(t - 1) >= fs) --t;
+    return t;
+}
+
 // Ticks of a frequency given as num/den Hz, as a reduced fraction N/D:
 // period = 18e9 * den / num ticks. E.g. 120e6/7 Hz -> 1050/1, 27e6 Hz -> 2000/3.
 struct rational_ticks {

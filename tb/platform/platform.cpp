@@ -4,6 +4,7 @@
 
 #include "dsp/c6416_regs.h"
 #include "dsp/kernel_costs.h"
+#include "model/time/sc_ticks.h"
 #include "tb/platform/arrangements/fast/fast_island.h"
 #include "tb/platform/arrangements/pins/pins_island.h"
 
@@ -83,7 +84,7 @@ platform_top::platform_top(const platform_config& config)
     // are the board glue's, in the island (model/emif/ardy_glue.h).
     if (config.cpu_slow_num != config.cpu_slow_den)
         m_cpu->set_cycle_scale(config.cpu_slow_num, config.cpu_slow_den,
-                               emif::time_of_tick(config.cpu_slow_from));
+                               simtime::sc_time_of(config.cpu_slow_from));
     m_cpu->emifa_cpu.bind(m_target->cpu);
     m_cpu->emifa_edma.bind(m_target->edma);
     m_cpu->set_emifa_register_observer([this](uint32_t address, uint32_t value) {
@@ -123,10 +124,10 @@ void platform_top::run() {
     const auto wall0 = std::chrono::steady_clock::now();
     m_end_tick = m_config.period * m_config.frames;
     if (!m_progress) {
-        sc_core::sc_start(emif::time_of_tick(m_end_tick));
+        sc_core::sc_start(simtime::sc_time_of(m_end_tick));
     } else {
         for (int done = 1; done <= m_config.frames; ++done) {
-            sc_core::sc_start(emif::time_of_tick(m_config.period * done) -
+            sc_core::sc_start(simtime::sc_time_of(m_config.period * done) -
                               sc_core::sc_time_stamp());
             m_progress(done);
         }

@@ -3,11 +3,12 @@
 #include <systemc>
 
 #include "model/c6416/c6416_sc.h"
+#include "model/time/sc_ticks.h"
 
 namespace platform {
 
 simtime::ticks probe_hal::now() {
-    return c6416::ticks_at_or_after_fs(static_cast<int64_t>(sc_core::sc_time_stamp().value()));
+    return simtime::tick_at_or_after(sc_core::sc_time_stamp());
 }
 
 void probe_hal::start() {

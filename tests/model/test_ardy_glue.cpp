@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "model/emif/ardy_glue.h"
-#include "model/emif/async_sram_slave.h"
 #include "model/emif/cectl.h"
 #include "model/emif/emif_async_master.h"
+#include "tests/support/emif/async_sram_slave.h"
 
 using namespace emif;
 

@@ -21,10 +21,10 @@
 #include "dsp/c6416_regs.h"
 #include "dsp/kernel_costs.h"
 #include "model/c6416/c6416_sc.h"
-#include "model/emif/async_sram_slave.h"
 #include "model/emif/cectl.h"
-#include "model/emif/emif_cycle_driver_sc.h"
 #include "model/emif/emif_tlm_target_sc.h"
+#include "tests/support/emif/async_sram_slave.h"
+#include "tests/support/emif/emif_cycle_driver_sc.h"
 
 using namespace c6416_test;
 

@@ -1,11 +1,10 @@
 // The EMIF protocol checker: silent on everything the engine drives (a
 // random mix of CPU, EDMA, SDRAM, refresh and ARDY faults at three CECTL
-// values), firing on the engine's test-only shortened strobe, and firing
-// exactly the expected rule, with the expected cycle counts, on hand-written
-// pin sequences: short setup / strobe / hold, back-to-back words too close,
-// select change inside a strobe, ARE and AWE together, ED driven during a
-// read, CE change and direction change without turnaround, two CEs at once,
-// a strobe without CE.
+// values), firing on every strobe of an engine programmed shorter than the
+// checker was told, and firing exactly the expected rule, with the expected
+// cycle counts, on hand-written pin sequences: short setup / strobe / hold, back-to-back words too
+// close, select change inside a strobe, ARE and AWE together, ED driven during a read, CE change
+// and direction change without turnaround, two CEs at once, a strobe without CE.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -13,10 +12,10 @@
 #include <set>
 #include <vector>
 
-#include "model/emif/async_sram_slave.h"
 #include "model/emif/emif_async_master.h"
 #include "model/emif/emif_checker.h"
 #include "model/emif/emif_pin_loop.h"
+#include "tests/support/emif/async_sram_slave.h"
 
 using namespace emif;
 
@@ -31,14 +30,30 @@ struct traffic_result {
     std::vector<violation> list;
 };
 
+// cectl with its read and write strobes `shorten` cycles shorter (at least
+// 1): programmed into the engine while the checker is told cectl, every
+// strobe the engine drives is too short, a violation made on the test side.
+uint32_t with_shorter_strobes(uint32_t cectl, uint32_t shorten) {
+    if (shorten == 0) return cectl;
+    const auto shorter = [shorten](uint32_t raw) {
+        const uint32_t cycles = raw == 0 ? 1 : raw;  // a field of 0 acts as 1
+        return cycles > shorten ? cycles - shorten : 1;
+    };
+    cectl_fields f = cectl_unpack(cectl);
+    f.rdstrb = shorter(f.rdstrb);
+    f.wrstrb = shorter(f.wrstrb);
+    return cectl_pack(f);
+}
+
 // Random accesses queued at random edges; reads come from a region no write touches.
 traffic_result run_traffic(uint32_t cectl, uint32_t shorten, uint32_t seed, uint64_t edges,
                            bool ardy_fault_on = true) {
     emif_config cfg;
     cfg.cectl[2] = cfg.cectl[3] = cectl;
     cfg.sdram.refresh_period = 700;
-    cfg.test_strobe_shortening = shorten;
-    emif_async_master engine(cfg);
+    emif_config engine_cfg = cfg;
+    engine_cfg.cectl[2] = engine_cfg.cectl[3] = with_shorter_strobes(cectl, shorten);
+    emif_async_master engine(engine_cfg);
     async_sram_slave ce2(sram_config{2, 1024, 2, true}), ce3(sram_config{3, 1024, 2, true});
     for (uint32_t i = 0; i < 512; ++i) {
         ce2.word(i) = 0x20000000u + i * 3;

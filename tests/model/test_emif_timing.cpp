@@ -13,10 +13,10 @@
 #include <random>
 #include <vector>
 
-#include "model/emif/async_sram_slave.h"
 #include "model/emif/emif_async_master.h"
 #include "model/emif/emif_checker.h"
 #include "model/emif/emif_pin_loop.h"
+#include "tests/support/emif/async_sram_slave.h"
 
 using namespace emif;
 

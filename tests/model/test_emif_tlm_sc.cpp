@@ -22,12 +22,12 @@
 #include <tlm>
 #include <vector>
 
-#include "model/emif/async_sram_slave.h"
 #include "model/emif/emif_checker.h"
-#include "model/emif/emif_cycle_driver_sc.h"
 #include "model/emif/emif_pins_sc.h"
 #include "model/emif/emif_tlm_target_sc.h"
 #include "model/sensor/sensor_sc.h"
+#include "tests/support/emif/async_sram_slave.h"
+#include "tests/support/emif/emif_cycle_driver_sc.h"
 
 using namespace emif;
 using sc_core::SC_NS;

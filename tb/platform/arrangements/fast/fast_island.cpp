@@ -4,8 +4,8 @@
 #include <chrono>
 
 #include "model/emif/ardy_glue.h"
-#include "model/emif/emif_tlm_target_sc.h"
 #include "model/sensor/sensor_core.h"
+#include "model/time/sc_ticks.h"
 #include "tb/platform/island/card_signals.h"
 
 // verilated.h, seeing SystemC, expects sc_time_stamp in the global namespace
@@ -156,14 +156,14 @@ void fast_island::reset_card() {
 
 // ---- the SystemC side ------------------------------------------------------------------------
 void fast_island::run() {
-    const sc_core::sc_time quantum = emif::time_of_tick(m_config.quantum);
+    const sc_core::sc_time quantum = simtime::sc_time_of(m_config.quantum);
     for (;;) {
         // Everything else at this time acts first: its bus requests are then
         // queued before any edge after now is stepped.
         while (sc_core::sc_pending_activity_at_current_time()) sc_core::wait(sc_core::SC_ZERO_TIME);
         const sc_core::sc_time now = sc_core::sc_time_stamp();
         const sc_core::sc_time ahead = std::min(quantum, sc_core::sc_time_to_pending_activity());
-        const ticks limit = std::min(m_config.end, emif::tick_at_or_before(now + ahead));
+        const ticks limit = std::min(m_config.end, simtime::tick_at_or_before(now + ahead));
         if (limit < 0 || (m_last_tick >= m_config.end && limit == m_config.end)) {
             sc_core::wait();  // past the end of the run: nothing more to step
             continue;
@@ -175,7 +175,7 @@ void fast_island::run() {
         m_observer.stats().wall_s +=
             std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
 
-        const sc_core::sc_time wake = emif::time_of_tick(stopped ? last : limit);
+        const sc_core::sc_time wake = simtime::sc_time_of(stopped ? last : limit);
         ++m_observer.stats().syncs;
         sc_core::wait(wake > now ? wake - now : sc_core::SC_ZERO_TIME);
         if (m_irq != m_irq_written) {

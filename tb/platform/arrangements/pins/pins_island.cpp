@@ -6,8 +6,8 @@
 
 #include "model/emif/ardy_glue.h"
 #include "model/emif/emif_pins_sc.h"
-#include "model/emif/emif_tlm_target_sc.h"
 #include "model/sensor/sensor_sc.h"
+#include "model/time/sc_ticks.h"
 #include "tb/platform/island/card_signals.h"
 
 // verilated.h, seeing SystemC, expects sc_time_stamp in the global namespace.
@@ -25,10 +25,6 @@ using sig_u32 = sc_core::sc_signal<uint32_t>;
 
 using platform::card_signals;
 using platform::trace_pin;
-
-sc_core::sc_time time_of(ticks t) {
-    return emif::time_of_tick(t);
-}
 
 // The sensor's pins as one word (sensor::pin_word).
 struct sensor_wires {
@@ -255,7 +251,7 @@ class pins_island : public platform::island {
     // EMIF's writes of this edge land a delta later); its count as a signal
     // so that drive_bus sees the change.
     void clock_glue() {
-        m_glue.clock(strobe_pins(), emif::tick_at_or_before(sc_core::sc_time_stamp()));
+        m_glue.clock(strobe_pins(), simtime::tick_at_or_before(sc_core::sc_time_stamp()));
         m_glue_edges.write(m_glue_edges.read() + 1);
     }
 
@@ -265,7 +261,7 @@ class pins_island : public platform::island {
     void drive_wire() {
         const sensor_wires& w = m_wires[m_wire_camera];
         const uint8_t data = static_cast<uint8_t>(w.data.read() & sensor::pin_word::data_mask);
-        const simtime::ticks driven = emif::tick_at_or_before(sc_core::sc_time_stamp());
+        const simtime::ticks driven = simtime::tick_at_or_before(sc_core::sc_time_stamp());
         m_wires[m_wire_camera].card_data.write(m_config.wire.on_wire(m_wire_camera, data, driven));
     }
 
@@ -289,7 +285,7 @@ class pins_island : public platform::island {
         for (;;) {
             const ticks t = std::min(pclk.tick(), eclk.tick());
             if (t > m_config.end) break;
-            const sc_core::sc_time at = time_of(t);
+            const sc_core::sc_time at = simtime::sc_time_of(t);
             const sc_core::sc_time now = sc_core::sc_time_stamp();
             if (at > now) sc_core::wait(at - now);
             // Every delta of the previous tick has run: observe it.

@@ -1,4 +1,4 @@
-#include "model/emif/async_sram_slave.h"
+#include "tests/support/emif/async_sram_slave.h"
 
 #include <algorithm>
 

@@ -1,6 +1,6 @@
-// The fast arrangement for the EMIF alone: one SystemC thread that steps the
-// engine and a C++ pin slave (e.g. async_sram_slave) cycle by cycle, as the
-// platform's RTL island will with the verilated card.
+// Test support: the fast arrangement for the EMIF alone, one SystemC thread
+// that steps the engine and a C++ pin slave (e.g. async_sram_slave) cycle by
+// cycle, as the platform's RTL island does with the verilated card.
 //
 // It runs ahead of SystemC time through an access and syncs (wait) only
 // before an edge where the engine may arbitrate (emif_async_master::

@@ -1,4 +1,4 @@
-// A simple asynchronous memory on one CE space that answers on the EMIF pins
+// Test support: a simple asynchronous memory on one CE space that answers on the EMIF pins
 // with the daughter card's timing (rtl/emif_slave.v), for tests of the EMIF
 // engine and its TLM side without the card RTL.
 //

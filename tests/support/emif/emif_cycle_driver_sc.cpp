@@ -1,8 +1,8 @@
-#include "model/emif/emif_cycle_driver_sc.h"
+#include "tests/support/emif/emif_cycle_driver_sc.h"
 
 #include <algorithm>
 
-#include "model/emif/emif_tlm_target_sc.h"
+#include "model/time/sc_ticks.h"
 
 namespace emif {
 
@@ -19,13 +19,14 @@ void emif_cycle_driver::run() {
         if (m_engine.idle()) {
             while (m_engine.idle()) wait(m_work);
             // Requests made at this time start at the first edge after it.
-            const simtime::ticks now = tick_at_or_before(sc_core::sc_time_stamp());
+            const simtime::ticks now = simtime::tick_at_or_before(sc_core::sc_time_stamp());
             m_engine.skip_idle_to(
                 std::max(m_engine.next_edge(), eclk.first_rise_at_or_after(now + 1)));
             continue;
         }
         if (m_engine.arbitrates_at_next_edge()) {
-            const sc_core::sc_time at = time_of_tick(m_engine.edge_tick(m_engine.next_edge()));
+            const sc_core::sc_time at =
+                simtime::sc_time_of(m_engine.edge_tick(m_engine.next_edge()));
             if (at > sc_core::sc_time_stamp()) {
                 wait(at - sc_core::sc_time_stamp());
                 ++m_syncs;
