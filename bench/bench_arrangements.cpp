@@ -5,7 +5,7 @@
 // (VGA, DSK v1, overlapped mode, the platform's defaults, 12 sync periods)
 // in the fast arrangement (cores stepped in one SystemC thread) and in the
 // literal pin-level one (sc_signals, verilator --sc); traces off (no pin
-// hash), or with a 1 ms VCD window (tb/output's writer, 49-50 ms). SystemC
+// hash), or with a 1 ms VCD window (tb/app/output's writer, 49-50 ms). SystemC
 // elaborates once per process, so each simulation runs in a forked child
 // that reports its wall time. The machine is shared: runs are interleaved
 // (fast, pins, pins, fast, ...) over STEREOSIM_BENCH_REPS repetitions

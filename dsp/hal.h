@@ -1,5 +1,5 @@
 // The firmware's only way to the hardware (DESIGN.md, "Layers"). The host
-// harness implements it with plain counters (tb/host/counting_hal); the C6416
+// harness implements it with plain counters (tests/support/host/counting_hal); the C6416
 // TLM model (model/c6416) implements it with registers, EDMA, interrupts and
 // simulated time. Everything a real C6416 program needs and nothing OS-like:
 //   - time: charge_cycles (CPU cycles from the cost model);

@@ -80,7 +80,7 @@ platform_top::platform_top(const platform_config& config)
                                           m_timeline);
     }
     m_engine.set_sdram_storage(m_cpu->sdram_storage(), m_cpu->sdram_storage_bytes());
-    // Injected CPU faults (tb/faults, docs/faults.md); the bus's ARDY faults
+    // Injected CPU faults (tb/app/faults, docs/faults.md); the bus's ARDY faults
     // are the board glue's, in the island (model/emif/ardy_glue.h).
     if (config.cpu_slow_num != config.cpu_slow_den)
         m_cpu->set_cycle_scale(config.cpu_slow_num, config.cpu_slow_den,

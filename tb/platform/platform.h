@@ -86,7 +86,7 @@ class platform_top {
     bool firmware_init_failed() const { return m_init_failed; }
     const dsp::control_program& program() const { return m_program; }
     const timeline& events() const { return m_timeline; }
-    // An injected fault's onset on the timeline (tb/faults, after the run).
+    // An injected fault's onset on the timeline (tb/app/faults, after the run).
     void mark_fault(simtime::ticks tick, uint8_t index, uint32_t type, uint32_t frame) {
         m_timeline.insert(tick, event_kind::fault, index, type, frame);
     }

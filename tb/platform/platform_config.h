@@ -78,7 +78,7 @@ struct platform_config {
     uint32_t card_start_timeout = dsp::card_regs::start_timeout_reset;  // lines
     uint32_t hard_error_rearms = dsp::control_program_config{}.hard_error_rearms;
 
-    // ---- faults beyond the sensors' (tb/faults, docs/faults.md) ------------------------------
+    // ---- faults beyond the sensors' (tb/app/faults, docs/faults.md) ------------------------------
     // Extra ARDY wait states on the card's CE spaces from a time on, and a
     // slower CPU: cycles charged after cpu_slow_from x num / den.
     std::vector<emif::ardy_fault> ardy_faults;

@@ -10,7 +10,7 @@
 //     against the sensors' active pixels (platform_top::captured);
 //   - the firmware's 3D output against the scene's ground truth of exactly
 //     the images it saw: box centre vs the ball's image centre, X / Y vs the
-//     ball centre, depth vs the visible-surface depth (tb/host/error_metrics).
+//     ball centre, depth vs the visible-surface depth (tb/platform/scoring/error_metrics).
 #pragma once
 
 #include <cstdint>

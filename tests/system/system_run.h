@@ -45,7 +45,7 @@ inline double ticks_to_ms(simtime::ticks t) {
 
 // The closed-form estimate's processing time, taken independently of the
 // platform: the same firmware on the same scenario in the host harness (no
-// hardware, tb/host), its largest pair's modelled cycles plus the capture
+// hardware, tests/support/host), its largest pair's modelled cycles plus the capture
 // stage's, at the platform's CPU clock (the cost model is the platform's).
 inline double host_max_processing_ms(const platform::platform_config& config, int frames) {
     host::stereo_runner runner(config.scenario, platform::pipeline_config(config));

@@ -7,7 +7,7 @@
 // EMIF and card pin change with its tick (tb/platform/island/pin_hash.h), every such
 // change of a 1 ms window compared one by one (the per-signal-group change
 // lists; the first difference is printed), the VCD of that window as --vcd
-// writes it (tb/output's writer) parsed and compared signal by signal, the
+// writes it (tb/app/output's writer) parsed and compared signal by signal, the
 // timeline (pins and firmware) hash, and the printed report except the
 // run-speed line and the island's sync count (the pin-level arrangement does
 // not sync: it is SystemC). Every case runs until at least 2 3D outputs.
@@ -69,7 +69,7 @@ std::string normalise(const std::string& report) {
     return out;
 }
 
-// `vcd`: where the window's VCD goes (tb/output's writer, as --vcd writes it).
+// `vcd`: where the window's VCD goes (tb/app/output's writer, as --vcd writes it).
 digest simulate(platform::platform_config config, simtime::ticks window_from,
                 simtime::ticks window_to, const std::string& vcd) {
     const platform::tick_window window{window_from, window_to};

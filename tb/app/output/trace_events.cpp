@@ -152,7 +152,7 @@ class timeline_tracks {
         }
     }
 
-    // An injected fault's onset (tb/faults, docs/faults.md).
+    // An injected fault's onset (tb/app/faults, docs/faults.md).
     void fault(const platform::timeline_event& e) {
         json x = instant(
             std::string("fault ") + faults::fault_type_name(static_cast<faults::fault_type>(e.b)),

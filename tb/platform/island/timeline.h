@@ -24,12 +24,12 @@ enum class event_kind : uint8_t {
     cpu_sleep,     // the CPU waits for an interrupt
     cpu_wake,      // a: interrupt taken (-1 as 255: stop)
     result,        // a: dsp::tracker_state after the pair, b: pair, c: 1 with a 3D point
-    // An injected fault took effect (tb/faults, docs/faults.md): a: its index
+    // An injected fault took effect (tb/app/faults, docs/faults.md): a: its index
     // in the run's --fault list, b: faults::fault_type, c: the frame it hit
     // (sensor truth index, or sync period for bus / CPU faults). Inserted
     // after the run (the onset of a sensor fault is known from its truth).
     // timeline.json shows it (instant event "fault <kind>"); for the VCD
-    // ("out": tb/output) a marker needs a signal declared before the run and
+    // ("out": tb/app/output) a marker needs a signal declared before the run and
     // written at this tick after it, since the pin trace streams live.
     fault,
 };
