@@ -15,7 +15,8 @@ island_observer::island_observer(const island_config& config, emif::emif_async_m
       m_next_boundary(config.period) {
     m_access_seen[0] = engine.stats().accesses[0];
     m_access_seen[1] = engine.stats().accesses[1];
-    set_initial_dsp_pins(engine.pins());
+    m_dsp_seen = pack_dsp_pins(engine.pins());
+    m_hash.set_initial(pin_group_emif_dsp, m_dsp_seen);
 }
 
 void island_observer::interrupt_edges(simtime::ticks t, uint8_t irq) {

@@ -38,11 +38,8 @@ class island_observer {
     canonical_pin_hash& pin_hash() { return m_hash; }
     const canonical_pin_hash& pin_hash() const { return m_hash; }
 
-    // The pins' values before the first edge (a change is a difference from these).
-    void set_initial_dsp_pins(const emif::emif_pins& p) {
-        m_dsp_seen = pack_dsp_pins(p);
-        m_hash.set_initial(pin_group_emif_dsp, m_dsp_seen);
-    }
+    // The card's outputs before the first edge (a change is a difference
+    // from these; the DSP's pins are the engine's at construction).
     void set_initial_card_outputs(uint64_t packed) {
         m_card_out_seen = packed;
         m_hash.set_initial(pin_group_card_out, packed);

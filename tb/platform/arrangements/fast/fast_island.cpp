@@ -150,7 +150,7 @@ void fast_island::reset_card() {
     d.eval();
     d.rst_n = 1;
     d.eval();
-    m_observer.set_initial_dsp_pins(p);
+    // (The DSP's pins before the first edge: the observer took them from the engine.)
     m_observer.set_initial_card_outputs(card_outputs_of(d));
 }
 

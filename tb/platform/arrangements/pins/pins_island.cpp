@@ -229,13 +229,10 @@ class pins_island : public platform::island {
     // CE2/CE3 is selected (ARDY has a pull-up; idle ED reads as 0), as the
     // fast island feeds the engine (docs/emif.md).
     void drive_bus() {
-        int ce = -1;
-        for (int i = 0; i < emif::ce_count && ce < 0; ++i)
-            if (!m_ce[i].read()) ce = i;
-        const bool card = ce == 2 || ce == 3;
-        m_bus_ardy.write(m_glue.bus_ardy(strobe_pins(), m_card_ardy.read(), m_engine));
+        const emif::emif_pins strobes = strobe_pins();
+        m_bus_ardy.write(m_glue.bus_ardy(strobes, m_card_ardy.read(), m_engine));
         m_bus_ed.write(
-            platform::bus_ed_from_card(card ? 2 : -1, m_card_ed_oe.read(), m_card_ed.read()));
+            platform::bus_ed_from_card(strobes.active_ce(), m_card_ed_oe.read(), m_card_ed.read()));
     }
 
     // The DSP's pins the board glue looks at, as the signals carry them now.
@@ -276,7 +273,11 @@ class pins_island : public platform::island {
         for (int i = 0; i < 3; ++i) sc_core::wait(sc_core::SC_ZERO_TIME);
         m_observer.set_initial_card_outputs(card().packed_outputs());
         // The values before the first edge, as the fast island's.
-        if (m_tracer.active()) trace_card(-1);
+        if (m_tracer.active()) {
+            card_signals settled = card();
+            platform::read_card_internals(*m_card, &settled);
+            m_tracer.card(-1, settled, m_bus_ardy.read(), dsp_pins());
+        }
 
         simtime::clock_cursor& pclk = m_pclk_cursor;
         simtime::clock_cursor& eclk = m_eclk_cursor;
@@ -312,7 +313,8 @@ class pins_island : public platform::island {
         }
     }
 
-    // The card's signals as settled now.
+    // The card's pins and debug outputs as settled now (the internals from
+    // the verilated root only where they are looked at: read_card_internals).
     card_signals card() const {
         card_signals s;
         s.sensor_oe = m_oe.read();
@@ -324,7 +326,6 @@ class pins_island : public platform::island {
         s.slave_ed = m_card_ed.read();
         s.fifo_level[0] = m_fifo_level[0].read();
         s.fifo_level[1] = m_fifo_level[1].read();
-        platform::read_card_internals(*m_card, &s);
         return s;
     }
 
@@ -343,11 +344,14 @@ class pins_island : public platform::island {
 
     // The settled pins of tick t, fed to the observer in the fast island's order.
     void observe(ticks t) {
-        if (m_tracer.active() && m_tracer.edges_at(t)) trace_tick(t);
+        card_signals settled = card();
+        const emif::emif_pins dsp = dsp_pins();
+        const bool trace = m_tracer.active() && m_tracer.edges_at(t);
+        if (trace || (m_edges & pclk_rise)) platform::read_card_internals(*m_card, &settled);
+        if (trace) trace_tick(t, settled, dsp);
         if (m_edges & pclk_fall) {
             for (int c = 0; c < 2; ++c) m_observer.sensor_word(c, m_wires[c].word(), t);
         }
-        const card_signals settled = card();
         if (m_edges & pclk_rise) {
             m_observer.pclk_rise(t, settled.sensor_oe, settled.fifo_level, settled.fifo_overflow);
         }
@@ -355,7 +359,7 @@ class pins_island : public platform::island {
             m_observer.eclk_rise(t, settled.irq_bits());
             m_observer.bus_completed(t);
         }
-        m_observer.dsp_pins(t, dsp_pins());
+        m_observer.dsp_pins(t, dsp);
         m_observer.card_outputs(t, settled.packed_outputs());
         m_observer.flush_hash_before(t + 1);
     }
@@ -363,18 +367,16 @@ class pins_island : public platform::island {
     // ---- pin trace: every signal's settled value per observed tick (the
     // tracer drops repeats), so each change is reported at the tick it
     // settled, as the fast island reports it.
-    void trace_tick(ticks t) {
+    void trace_tick(ticks t, const card_signals& card, const emif::emif_pins& dsp) {
         // Every firmware event up to t exists: the CPU added them at or before time t.
         m_tracer.firmware_up_to(t);
         for (int c = 0; c < 2; ++c)
             m_tracer.sensor_pins(c, t, m_wires[c].pclk.read(), m_wires[c].word());
         m_tracer.set(t, trace_pin::card_pclk, m_mclk.read());
         m_tracer.set(t, trace_pin::eclkout, m_eclk.read());
-        m_tracer.emif(t, dsp_pins());
-        trace_card(t);
+        m_tracer.emif(t, dsp);
+        m_tracer.card(t, card, m_bus_ardy.read(), dsp);
     }
-
-    void trace_card(ticks t) { m_tracer.card(t, card(), m_bus_ardy.read(), dsp_pins()); }
 
     static constexpr uint8_t pclk_rise = 1, pclk_fall = 2, eclk_rise = 4;
 
