@@ -46,10 +46,13 @@ module async_fifo #(
         bin2gray = b ^ (b >> 1);
     endfunction
 
+    // Bit i of the binary value is the XOR of Gray bits i..AW: a prefix XOR
+    // in log2(AW+1) shift steps (a bit-serial loop would cost a simulator
+    // one dependent step per bit on every read-side edge; same logic).
     function automatic logic [AW:0] gray2bin(input logic [AW:0] g);
         logic [AW:0] b;
-        b[AW] = g[AW];
-        for (int i = AW - 1; i >= 0; i--) b[i] = b[i+1] ^ g[i];
+        b = g;
+        for (int s = 1; s <= AW; s = s * 2) b = b ^ (b >> s);
         gray2bin = b;
     endfunction
 
