@@ -7,6 +7,9 @@
 //   firmware_share    the firmware's own host time over the wall time (target < 10 %)
 //   island_share      the cycle island's host time (sensors, scene, card RTL, EMIF)
 //   syncs_per_period  island <-> SystemC syncs per period
+//   pairs_per_s       frame pairs (24.5 ms periods) per wall second (issue 14's figure)
+//   card_evals_per_edge  evaluations of the verilated card per clock edge (pclk + ECLK)
+// bench_arrangements has both arrangements side by side, docs/performance.md the history.
 #include <benchmark/benchmark.h>
 
 #include <systemc>
@@ -30,6 +33,10 @@ void default_scenario_traces_off(benchmark::State& state) {
         state.counters["syncs_per_period"] =
             static_cast<double>(top.cycle_island().stats().syncs) / config.frames;
         state.counters["pairs_processed"] = static_cast<double>(top.probe().results().size());
+        state.counters["pairs_per_s"] = f.wall_s > 0.0 ? config.frames / f.wall_s : 0.0;
+        const platform::island_stats& s = top.cycle_island().stats();
+        state.counters["card_evals_per_edge"] =
+            static_cast<double>(s.card_evals) / static_cast<double>(s.pclk_edges + s.eclk_edges);
     }
 }
 // One simulation per process: exactly one iteration, timed as wall time.

@@ -74,6 +74,7 @@ struct island_stats {
     uint64_t stops_bus = 0;    // early stops at a bus completion
     uint64_t stops_irq = 0;    // early stops at an interrupt pin change
     uint64_t pin_changes = 0;  // pin changes folded into the hash
+    uint64_t card_evals = 0;   // evaluations of the verilated card (fast arrangement)
     double wall_s = 0.0;       // host time spent stepping (sensors and scene included)
 };
 

@@ -22,16 +22,41 @@ namespace {
 using platform::card_signals;
 using simtime::ticks;
 
-// The card's EMIF inputs (CE2/CE3, strobes, EA, BE, ED) as the engine drives them.
-void drive_card_emif_inputs(Vcard& d, const emif::emif_pins& p) {
-    d.ce2_n = p.ce_n[2];
-    d.ce3_n = p.ce_n[3];
-    d.aoe_n = p.aoe_n;
-    d.are_n = p.are_n;
-    d.awe_n = p.awe_n;
-    d.ea = p.ea;
-    d.be_n = p.be_n;
-    d.ed_in = p.ed_out;
+// Writes one of the card's input ports; true if its value changed.
+template <typename Port, typename Value>
+bool drive(Port& port, Value value) {
+    const Port v = static_cast<Port>(value);
+    if (port == v) return false;
+    port = v;
+    return true;
+}
+
+// The card's EMIF inputs (CE2/CE3, strobes, EA, BE, ED) as the engine drives
+// them; true if any of them changed.
+bool drive_card_emif_inputs(Vcard& d, const emif::emif_pins& p) {
+    bool changed = drive(d.ce2_n, p.ce_n[2]);
+    changed |= drive(d.ce3_n, p.ce_n[3]);
+    changed |= drive(d.aoe_n, p.aoe_n);
+    changed |= drive(d.are_n, p.are_n);
+    changed |= drive(d.awe_n, p.awe_n);
+    changed |= drive(d.ea, p.ea);
+    changed |= drive(d.be_n, p.be_n);
+    changed |= drive(d.ed_in, p.ed_out);
+    return changed;
+}
+
+// The falling half of the clocks when no input of the card changed since its
+// last eval: that eval would only record the clocks' low level for edge
+// detection (the card has no negedge logic and reads its clocks nowhere but
+// in its triggers; its input-driven logic was settled by the last eval, in
+// its ico and nba regions alike), so record it without one. The names are
+// Verilator 5's trigger bookkeeping: a later Verilator that renames them
+// fails to compile here rather than running wrong.
+void lower_clocks_without_eval(Vcard& d) {
+    d.pclk = 0;
+    d.eclk = 0;
+    d.rootp->__Vtrigrprev__TOP__pclk = 0;
+    d.rootp->__Vtrigrprev__TOP__eclk = 0;
 }
 
 card_signals card_signals_of(const Vcard& d) {
@@ -93,6 +118,7 @@ class fast_island final : public platform::island {
     void advance_pclk(bool trace);
     void deliver_sensor_words();
     void settle_card(ticks t, bool trace);
+    void eval_card();
     void step_sensor(int camera, bool oe);
     void apply_sensor_word(int camera, const pending_word& w);
     void trace_card(ticks t);
@@ -110,6 +136,7 @@ class fast_island final : public platform::island {
     pending_word m_pending[2];
     uint8_t m_irq = 0;  // EXT_INT4..6 as bits 0..2, as last stepped
     uint8_t m_irq_written = 0;
+    bool m_inputs_changed = false;  // since the card's last eval
 };
 
 fast_island::fast_island(sc_core::sc_module_name name, const platform::island_config& config,
@@ -253,7 +280,7 @@ void fast_island::clock_rising(const edges& e, bool trace) {
     const bool oe_before = d.sensor_oe != 0;
     if (e.pclk) d.pclk = 1;
     if (e.eclk) d.eclk = 1;
-    if (e.pclk || e.eclk) d.eval();
+    if (e.pclk || e.eclk) eval_card();
     for (int c = 0; c < 2; ++c) {
         if (!e.sensor[c]) continue;
         step_sensor(c, oe_before);
@@ -280,7 +307,7 @@ bool fast_island::eclk_outputs(ticks t, const emif::emif_inputs& in, bool trace)
     m_engine.step(in);
     if (m_observer.bus_completed(t)) stop = true;
     const emif::emif_pins& p = m_engine.pins();
-    drive_card_emif_inputs(d, p);
+    m_inputs_changed |= drive_card_emif_inputs(d, p);
     m_observer.dsp_pins(t, p);
     m_eclk.advance();
     if (trace) {
@@ -317,11 +344,21 @@ void fast_island::deliver_sensor_words() {
 // The falling half of the card's clocks: its combinational outputs settle.
 void fast_island::settle_card(ticks t, bool trace) {
     Vcard& d = *m_card;
-    d.pclk = 0;
-    d.eclk = 0;
-    d.eval();
+    if (m_inputs_changed) {
+        d.pclk = 0;
+        d.eclk = 0;
+        eval_card();
+    } else {
+        lower_clocks_without_eval(d);
+    }
     m_observer.card_outputs(t, card_outputs_of(d));
     if (trace) trace_card(t);
+}
+
+void fast_island::eval_card() {
+    m_card->eval();
+    m_inputs_changed = false;
+    ++m_observer.stats().card_evals;
 }
 
 void fast_island::step_sensor(int c, bool oe) {
@@ -338,6 +375,10 @@ void fast_island::apply_sensor_word(int c, const pending_word& w) {
     Vcard& d = *m_card;
     const sensor::pin_word word{w.bits};
     const uint8_t data = m_config.wire.on_wire(c, word.data(), w.fall);
+    // No eval for a new word: the card registers its sensor inputs at its
+    // pixel clock before any logic reads them (rtl/sync_check.v, "input
+    // sampling"), so no signal settles on them between edges; the next
+    // rising eval samples the word.
     if (c == 0) {
         d.l_vsync = word.vsync();
         d.l_href = word.href();

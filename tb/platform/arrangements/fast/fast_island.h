@@ -26,8 +26,13 @@
 // Observers: the island's observer (tb/platform/island/island_observer.h),
 // fed at each edge in the order it documents.
 //
-// Cost per edge: one or two Verilator evals, the engine's switch, a sensor
-// step, a few compares; the loop's state lives in members between syncs.
+// Cost per edge: one Verilator eval at the rising edge; a second one at the
+// falling half only when the engine changed one of the card's EMIF inputs
+// (the only inputs with logic that settles between edges: a sensor word is
+// registered at the card's pixel clock before anything reads it), otherwise
+// the clocks' low level is recorded without an eval; then the engine's
+// switch, a sensor step, a few compares. The loop's state lives in members
+// between syncs. docs/performance.md has the figures.
 #pragma once
 
 #include <memory>
