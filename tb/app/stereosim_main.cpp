@@ -69,7 +69,7 @@ int sc_main(int argc, char* argv[]) {
     config->add_flag("--list", list, "every key: type, range, default, doc line");
     config->add_flag("--markdown", markdown, "the same as a Markdown table (docs/config.md)");
     // Further subcommands (e.g. `stereosim faults`) are added here.
-    faults::faults_command faults(app);
+    faults::faults_command faults(app, ::app::make_run_extensions);
 
     try {
         app.parse(argc, argv);

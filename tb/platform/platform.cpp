@@ -1,6 +1,8 @@
 #include "tb/platform/platform.h"
 
+#include <algorithm>
 #include <chrono>
+#include <stdexcept>
 
 #include "dsp/c6416_regs.h"
 #include "dsp/kernel_costs.h"
@@ -120,20 +122,44 @@ void platform_top::firmware(dsp::hal& hal) {
     m_program.run();
 }
 
+void platform_top::advance_to(simtime::ticks t) {
+    const sc_core::sc_time until =
+        simtime::sc_time_of(std::min(t, m_config.period * m_config.frames));
+    if (until > sc_core::sc_time_stamp()) sc_core::sc_start(until - sc_core::sc_time_stamp());
+}
+
+void platform_top::run_until(simtime::ticks t) {
+    const auto wall0 = std::chrono::steady_clock::now();
+    advance_to(t);
+    m_wall_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+}
+
+void platform_top::continue_with_faults(const platform_config& config) {
+    if (config.frames != m_config.frames || config.wire.enabled)
+        throw std::invalid_argument(
+            "a snapshot continues a run of the same length, without wire faults");
+    const std::vector<sensor::fault> sensor_faults[2] = {config.left_faults, config.right_faults};
+    m_island->add_late_faults(sensor_faults, config.ardy_faults);
+    if (config.cpu_slow_num != config.cpu_slow_den)
+        m_cpu->set_cycle_scale(config.cpu_slow_num, config.cpu_slow_den,
+                               simtime::sc_time_of(config.cpu_slow_from));
+    m_config = config;
+}
+
 void platform_top::run() {
     const auto wall0 = std::chrono::steady_clock::now();
     m_end_tick = m_config.period * m_config.frames;
     if (!m_progress) {
-        sc_core::sc_start(simtime::sc_time_of(m_end_tick));
+        sc_core::sc_start(simtime::sc_time_of(m_end_tick) - sc_core::sc_time_stamp());
     } else {
         for (int done = 1; done <= m_config.frames; ++done) {
-            sc_core::sc_start(simtime::sc_time_of(m_config.period * done) -
-                              sc_core::sc_time_stamp());
+            advance_to(m_config.period * done);
             m_progress(done);
         }
     }
     m_island->finish();
-    m_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    // Host time of the whole run, a snapshot's prefix (run_until) included.
+    m_wall_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
 }
 
 int64_t platform_top::frame_before(int camera, simtime::ticks tick) const {

@@ -25,10 +25,10 @@
 #include "model/scene/sequence.h"
 #include "model/sensor/scene_sources.h"
 #include "tb/platform/island/island.h"
+#include "tb/platform/island/timeline.h"
 #include "tb/platform/platform_config.h"
 #include "tb/platform/probe_hal.h"
 #include "tb/platform/recording_source.h"
-#include "tb/platform/island/timeline.h"
 
 namespace platform {
 
@@ -65,8 +65,18 @@ class platform_top {
     platform_top(const platform_top&) = delete;
     platform_top& operator=(const platform_top&) = delete;
 
-    // Simulates config.frames sync periods (sc_start); then the run is over.
+    // Simulates up to config.frames sync periods from where the simulation
+    // stands (sc_start); then the run is over.
     void run();
+    // Simulates up to tick t (no further than the run's end) and pauses: a
+    // fault campaign's snapshot point (tb/app/faults/snapshots.h).
+    void run_until(simtime::ticks t);
+    // Continues the paused run as the run of `config`, which must differ
+    // from this platform's only in faults that have not started yet: the
+    // sensors' and the bus's are added to the island, the CPU's cycle scale
+    // is set. Throws std::invalid_argument if config has a wire fault or a
+    // different number of frames.
+    void continue_with_faults(const platform_config& config);
     // Called after each simulated sync period with the periods done (the
     // stereosim command's progress line); set before run(). With a hook the
     // run is sc_start'ed period by period, which changes no result (the
@@ -101,6 +111,8 @@ class platform_top {
     int64_t frame_before(int camera, simtime::ticks tick) const;
 
   private:
+    // sc_start up to tick t (the run's end at most), if not there yet.
+    void advance_to(simtime::ticks t);
     void firmware(dsp::hal& hal);
     void on_firmware_event(const fw_event& e);
     void check_captured(captured_pair& pair);

@@ -1,6 +1,7 @@
 // The stereosim binary as a user runs it (docs/faults.md, docs/fault-contract.md):
-// a bad --fault is a one-line error, a good one lands in report.json, and a
-// slice of the smoke campaign keeps the contract with the real firmware.
+// a bad --fault is a one-line error, a good one lands in report.json, a
+// slice of the smoke campaign keeps the contract with the real firmware, and
+// runs forked from snapshots are the runs started from the beginning.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -8,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -116,6 +118,64 @@ TEST(FaultCampaign, SmokeSliceKeepsTheContract) {
     EXPECT_EQ(g["rows"][0]["unsynced_pairs_used"], 0);
     EXPECT_TRUE(fs::exists(good / "campaign.csv") && fs::exists(good / "campaign.txt"));
     fs::remove_all(good.parent_path());
+}
+
+// Everything of a report or campaign but what depends on the host's speed
+// (wall times, simulated / wall) and the snapshots switch itself.
+json without_host_figures(const json& j) {
+    if (j.is_object()) {
+        json out = json::object();
+        for (auto it = j.begin(); it != j.end(); ++it) {
+            const std::string& key = it.key();
+            if (key.find("wall") != std::string::npos || key == "ratio" || key == "snapshots")
+                continue;
+            out[key] = without_host_figures(it.value());
+        }
+        return out;
+    }
+    if (j.is_array()) {
+        json out = json::array();
+        for (const json& x : j) out.push_back(without_host_figures(x));
+        return out;
+    }
+    return j;
+}
+
+// Runs of one seed and length whose faults start later are forked from one
+// fault-free run at their snapshots (docs/fault-contract.md "Snapshots"):
+// the campaign and every run's report.json (pin hash, timeline, stage
+// cycles, verdicts) are the same as when each run starts from the beginning.
+TEST(FaultCampaign, SnapshotsGiveTheSameRunsAsRunsFromTheStart) {
+    const std::string slice =
+        "faults --campaign smoke --match 'pixels=1@frame=2|drop-frame|emif-wait' --jobs 2 "
+        "--keep-runs --out ";
+    const fs::path forked = scratch("forked"), spawned = scratch("spawned");
+    const command_result a = run(slice + forked.string());
+    const command_result b = run(slice + spawned.string() + " --no-snapshots");
+    ASSERT_EQ(a.exit_code, 0) << a.output;
+    ASSERT_EQ(b.exit_code, 0) << b.output;
+    const json ja = read_json(forked / "campaign.json"), jb = read_json(spawned / "campaign.json");
+    EXPECT_EQ(ja["snapshots"], true);
+    EXPECT_EQ(jb["snapshots"], false);
+    ASSERT_EQ(ja["rows"].size(), 3u);
+    EXPECT_EQ(without_host_figures(ja), without_host_figures(jb));
+    std::string leader_log;
+    for (const json& row : ja["rows"]) {
+        const std::string run_dir = "runs/" + std::to_string(row["index"].get<int>());
+        EXPECT_EQ(without_host_figures(read_json(forked / run_dir / "out/report.json")),
+                  without_host_figures(read_json(spawned / run_dir / "out/report.json")))
+            << run_dir;
+        std::ifstream leader(forked / run_dir / "leader.txt");
+        leader_log.append(std::istreambuf_iterator<char>(leader), {});
+    }
+    // All three were forked (none ran from the start after a missed snapshot).
+    size_t forks = 0;
+    for (size_t at = leader_log.find("snapshot at"); at != std::string::npos;
+         at = leader_log.find("snapshot at", at + 1))
+        ++forks;
+    EXPECT_EQ(forks, 3u) << leader_log;
+    EXPECT_EQ(leader_log.find("missed"), std::string::npos) << leader_log;
+    fs::remove_all(forked.parent_path());
 }
 
 }  // namespace

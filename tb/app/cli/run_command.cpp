@@ -154,10 +154,15 @@ bool run_command::write_outputs(const run_result& run, staged_files& files, std:
 
 int run_command::simulate(const run_setup& setup, const platform::platform_config& config,
                           staged_files& files) {
+    platform::platform_top top(config);
+    return run_and_report(top, setup, config, files);
+}
+
+int run_command::run_and_report(platform::platform_top& top, const run_setup& setup,
+                                const platform::platform_config& config, staged_files& files) {
     const run_options& o = m_options;
     const bool progress = !o.quiet && (o.force_progress || isatty(STDERR_FILENO));
     const bool summary = !o.quiet && (o.force_summary || isatty(STDOUT_FILENO));
-    platform::platform_top top(config);
     for (auto& e : m_extensions) e->attach(top);
     progress_line line(stderr, config.frames,
                        static_cast<double>(config.period) / (simtime::ticks_per_ns * 1e6));
@@ -188,28 +193,18 @@ int run_command::simulate(const run_setup& setup, const platform::platform_confi
     return budget.fits ? exit_within_budget : exit_over_budget;
 }
 
-int run_command::execute() {
-    std::string error;
-    run_setup setup;
-    if (!setup_from_options(&setup, &error)) {
-        print_error(error);
-        return exit_bad_input;
-    }
-    platform::platform_config config = platform_config_of(setup);
-    for (auto& e : m_extensions) {
-        if (!e->configure(setup, config, &error)) {
-            print_error(error);
-            return exit_bad_input;
-        }
-    }
-    // The output folder is checked before the (long) run.
-    staged_files files;
-    if (!open_out_dir(files, &error)) {
-        print_error(error);
-        return exit_bad_input;
-    }
+bool run_command::prepare(run_setup* setup, platform::platform_config* config, std::string* error) {
+    if (!setup_from_options(setup, error)) return false;
+    *config = platform_config_of(*setup);
+    for (auto& e : m_extensions)
+        if (!e->configure(*setup, *config, error)) return false;
+    return true;
+}
+
+template <typename Body>
+int run_command::guarded(Body body) {
     try {
-        return simulate(setup, config, files);
+        return body();
     } catch (const std::exception& e) {
         // sc_core::sc_report is a std::exception too; one line.
         std::string what = e.what();
@@ -218,6 +213,34 @@ int run_command::execute() {
         print_error("the simulation failed: " + what);
         return exit_run_failed;
     }
+}
+
+int run_command::execute() {
+    std::string error;
+    run_setup setup;
+    platform::platform_config config;
+    // The output folder is checked before the (long) run.
+    staged_files files;
+    if (!prepare(&setup, &config, &error) || !open_out_dir(files, &error)) {
+        print_error(error);
+        return exit_bad_input;
+    }
+    return guarded([&] { return simulate(setup, config, files); });
+}
+
+int run_command::execute_from_snapshot(platform::platform_top& top) {
+    std::string error;
+    run_setup setup;
+    platform::platform_config config;
+    staged_files files;
+    if (!prepare(&setup, &config, &error) || !open_out_dir(files, &error)) {
+        print_error(error);
+        return exit_bad_input;
+    }
+    return guarded([&] {
+        top.continue_with_faults(config);
+        return run_and_report(top, setup, config, files);
+    });
 }
 
 }  // namespace cli

@@ -44,6 +44,14 @@ class run_command {
     CLI::App* subcommand() const { return m_run; }
     // Runs it after parsing; returns the exit code.
     int execute();
+    // The run's setup and platform_config after parsing, the extensions
+    // configured (faults added); false + *error (one line) for bad input.
+    bool prepare(run_setup* setup, platform::platform_config* config, std::string* error);
+    // Runs it after parsing as the continuation of `top`, a platform paused
+    // at a fault campaign's snapshot that was built from the same options
+    // without their faults (tb/app/faults/snapshots.h): the faults are added
+    // to it, then the run goes on and reports exactly as execute() would.
+    int execute_from_snapshot(platform::platform_top& top);
 
   private:
     // The run_setup of the options: config file or scenario, named options,
@@ -51,10 +59,17 @@ class run_command {
     bool setup_from_options(run_setup* setup, std::string* error) const;
     // With --out: DIR and its staging folder, and the extensions' streams.
     bool open_out_dir(staged_files& files, std::string* error);
-    // Builds and runs the platform, writes the outputs, prints the summary;
-    // returns the exit code.
+    // Builds and runs the platform (run_and_report); returns the exit code.
     int simulate(const run_setup& setup, const platform::platform_config& config,
                  staged_files& files);
+    // Runs the built platform to its end, writes the outputs, prints the
+    // summary; returns the exit code.
+    int run_and_report(platform::platform_top& top, const run_setup& setup,
+                       const platform::platform_config& config, staged_files& files);
+    // Runs `body`; a std::exception (sc_report included) is "the simulation
+    // failed", one line, exit 3.
+    template <typename Body>
+    int guarded(Body body);
     // frames.csv, report.txt, the extensions' files, report.json; then commit.
     bool write_outputs(const run_result& run, staged_files& files, std::string* error);
 

@@ -12,8 +12,12 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
+#include <optional>
 #include <sstream>
+
+#include "tb/platform/platform_config.h"
 
 extern char** environ;
 
@@ -139,11 +143,9 @@ std::string this_program() {
 }
 
 // One child: `binary run ...`, output to the run's folder.
-pid_t spawn_run(const campaign_options& o, const campaign_run& r, const std::string& dir,
-                std::string* error) {
-    std::vector<std::string> args = {o.binary,
-                                     "run",
-                                     "--quiet",
+// The `stereosim run` options of a campaign run (after "run").
+std::vector<std::string> run_args(const campaign_run& r, const std::string& dir) {
+    std::vector<std::string> args = {"--quiet",
                                      "--frames",
                                      std::to_string(r.frames),
                                      "--seed",
@@ -160,6 +162,13 @@ pid_t spawn_run(const campaign_options& o, const campaign_run& r, const std::str
         args.push_back("--set");
         args.push_back(setting);
     }
+    return args;
+}
+
+pid_t spawn_run(const campaign_options& o, const campaign_run& r, const std::string& dir,
+                std::string* error) {
+    std::vector<std::string> args = {o.binary, "run"};
+    for (std::string& a : run_args(r, dir)) args.push_back(std::move(a));
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -371,30 +380,115 @@ void log_row(std::FILE* log, size_t done, size_t total, const campaign_row& row)
     std::fflush(log);
 }
 
-// Runs the plan, at most o.jobs children at a time, each in its own folder
-// under runs/; fills rows[i] as run i ends.
+std::vector<fault_spec> specs_of(const campaign_run& r) {
+    std::vector<fault_spec> specs;
+    std::string error;
+    for (const std::string& text : words(r.fault)) {
+        const std::optional<fault_spec> spec = parse_fault_spec(text, &error);
+        if (!spec) return {};
+        specs.push_back(*spec);
+    }
+    return specs;
+}
+
+// What the campaign starts as one child process: a run, or a group of runs
+// forked from one fault-free run at their snapshots (snapshots.h).
+struct unit {
+    std::vector<size_t> runs;  // plan indices
+    bool group = false;
+};
+
+// Runs of one seed, length, RETRY_LIMIT and settings whose faults all start
+// later form a group; the rest run alone.
+std::vector<unit> units_of(const campaign_options& o, const std::vector<campaign_run>& plan) {
+    const bool snapshots = o.snapshots && o.run_group && o.binary == this_program();
+    const simtime::ticks period = platform::platform_config{}.period;
+    std::vector<unit> units;
+    std::map<std::string, size_t> group_of;
+    for (size_t i = 0; i < plan.size(); ++i) {
+        const campaign_run& r = plan[i];
+        if (!snapshots || !snapshot_trigger_of(specs_of(r), period).usable) {
+            units.push_back({{i}, false});
+            continue;
+        }
+        std::string key = std::to_string(r.seed) + ' ' + std::to_string(r.frames) + ' ' +
+                          std::to_string(r.retry_limit);
+        for (const std::string& setting : r.settings) key += ' ' + setting;
+        const auto [it, added] = group_of.emplace(key, units.size());
+        if (added) units.push_back({{}, true});
+        units[it->second].runs.push_back(i);
+    }
+    for (unit& u : units) u.group = u.group && u.runs.size() > 1;
+    return units;
+}
+
+// Forks the leader of a snapshot group; -1 and *error if it cannot.
+pid_t start_group(const campaign_options& o, const std::vector<campaign_run>& plan, const unit& u,
+                  const std::function<std::string(size_t)>& run_dir, std::string* error) {
+    const simtime::ticks period = platform::platform_config{}.period;
+    std::vector<snapshot_member> members;
+    for (size_t i : u.runs)
+        members.push_back({run_args(plan[i], run_dir(i)), run_dir(i),
+                           snapshot_trigger_of(specs_of(plan[i]), period)});
+    std::fflush(nullptr);
+    const pid_t pid = fork();
+    if (pid == 0)
+        _exit(o.run_group(members, o.binary, run_dir(u.runs[0]) + "/leader.txt", o.jobs - 1));
+    if (pid < 0) *error = std::string("cannot fork a snapshot group: ") + std::strerror(errno);
+    return pid;
+}
+
+// A group member's wait status and wall time as its leader wrote them; the
+// leader's own status if it wrote none.
+int member_status(const std::string& dir, int leader_status, double* wall) {
+    std::ifstream in(dir + "/status");
+    int status = 0;
+    if (in >> status >> *wall) return status;
+    *wall = 0;
+    return leader_status != 0 ? leader_status : 3 << 8;  // as if the run had exited 3
+}
+
+// Runs the plan, at most o.jobs children at a time, each run in its own
+// folder under runs/; fills rows[i] as run i ends.
 void run_plan(const campaign_options& o, const std::vector<campaign_run>& plan,
               std::vector<campaign_row>& rows, std::FILE* log) {
     std::error_code ec;
-    std::map<pid_t, size_t> running;
-    std::vector<std::chrono::steady_clock::time_point> started(plan.size());
-    const auto run_dir = [&](size_t i) {
+    const std::vector<unit> units = units_of(o, plan);
+    std::map<pid_t, size_t> running;  // pid -> unit
+    int slots_used = 0;  // a run takes one, a group all o.jobs (its leader and children)
+    const auto slots_of = [&](const unit& u) { return u.group ? o.jobs : 1; };
+    std::vector<std::chrono::steady_clock::time_point> started(units.size());
+    const std::function<std::string(size_t)> run_dir = [&](size_t i) {
         return o.out_dir + "/runs/" + std::to_string(plan[i].index);
     };
     size_t next = 0, done = 0;
+    const auto finish = [&](size_t i, int status, double wall) {
+        campaign_row& row = rows[i];
+        row.wall_s = wall;
+        collect(row, run_dir(i), status);
+        if (!o.keep_runs && row.ran) fs::remove_all(run_dir(i), ec);
+        ++done;
+        if (log) log_row(log, done, plan.size(), row);
+    };
     while (done < plan.size()) {
-        while (next < plan.size() && static_cast<int>(running.size()) < o.jobs) {
-            rows[next].run = plan[next];
-            const std::string dir = run_dir(next);
-            fs::remove_all(dir, ec);
-            fs::create_directories(dir, ec);
+        while (next < units.size() &&
+               (running.empty() || slots_used + slots_of(units[next]) <= o.jobs)) {
+            const unit& u = units[next];
+            for (size_t i : u.runs) {
+                rows[i].run = plan[i];
+                fs::remove_all(run_dir(i), ec);
+                fs::create_directories(run_dir(i), ec);
+            }
             std::string spawn_error;
-            const pid_t pid = spawn_run(o, plan[next], dir, &spawn_error);
+            const pid_t pid = u.group
+                                  ? start_group(o, plan, u, run_dir, &spawn_error)
+                                  : spawn_run(o, plan[u.runs[0]], run_dir(u.runs[0]), &spawn_error);
             if (pid < 0) {
-                rows[next].error = spawn_error;
-                ++done;
+                for (size_t i : u.runs) rows[i].error = spawn_error;
+                done += u.runs.size();
             } else {
                 running[pid] = next;
+                slots_used += slots_of(u);
                 started[next] = std::chrono::steady_clock::now();
             }
             ++next;
@@ -405,15 +499,21 @@ void run_plan(const campaign_options& o, const std::vector<campaign_run>& plan,
         if (pid < 0) break;
         const auto it = running.find(pid);
         if (it == running.end()) continue;
-        const size_t i = it->second;
+        const unit& u = units[it->second];
+        const double wall =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - started[it->second])
+                .count();
         running.erase(it);
-        campaign_row& row = rows[i];
-        row.wall_s =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - started[i]).count();
-        collect(row, run_dir(i), status);
-        if (!o.keep_runs && row.ran) fs::remove_all(run_dir(i), ec);
-        ++done;
-        if (log) log_row(log, done, plan.size(), row);
+        slots_used -= slots_of(u);
+        if (!u.group) {
+            finish(u.runs[0], status, wall);
+            continue;
+        }
+        for (size_t i : u.runs) {
+            double member_wall = 0;
+            const int member = member_status(run_dir(i), status, &member_wall);
+            finish(i, member, member_wall);
+        }
     }
 }
 
@@ -431,6 +531,7 @@ json campaign_json(const campaign_options& o, const std::vector<campaign_row>& r
             {"shard", std::to_string(o.shard) + "/" + std::to_string(o.shards)},
             {"seeds", o.seeds},
             {"jobs", o.jobs},
+            {"snapshots", o.snapshots},
             {"runs", rows.size()},
             {"contract_broken", broken},
             {"clean_frames", clean_frames},

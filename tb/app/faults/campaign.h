@@ -1,7 +1,9 @@
 // The fault campaign (docs/fault-contract.md "The campaign"): every fault
 // kind over a range of parameters and seeds, plus clean runs, each an
 // independent `stereosim run ... --out <dir>` child process (posix_spawn,
-// `jobs` at a time), each checked against the contract from its report.json.
+// `jobs` at a time), or a group of runs forked from one fault-free run at
+// their snapshots (snapshots.h), each checked against the contract from its
+// report.json.
 // Writes campaign.json, campaign.csv and campaign.txt (the table also goes
 // to stdout); `shard K/M` runs the K-th of M deterministic slices.
 #pragma once
@@ -10,7 +12,10 @@
 #include <string>
 #include <vector>
 
+#include <functional>
 #include "tb/app/faults/fault_report.h"
+
+#include "tb/app/faults/snapshot_trigger.h"
 
 namespace faults {
 
@@ -39,6 +44,15 @@ struct campaign_options {
     std::string binary;      // the stereosim to spawn (default: this program)
     bool keep_runs = false;  // keep each run's folder (report.json, frames.csv)
     std::string match;       // only runs whose spec contains this ("clean": clean runs)
+    // Runs of one seed, length and card setting whose faults all start later
+    // share their fault-free prefix (snapshots.h): run_group runs such a
+    // group in the leader process (run_snapshot_group with this program's
+    // run extensions); without it, or with another binary, every run is
+    // spawned.
+    bool snapshots = true;
+    std::function<int(const std::vector<snapshot_member>& members, const std::string& binary,
+                      const std::string& leader_log, int max_children)>
+        run_group;
 };
 
 struct campaign_row {

@@ -18,7 +18,8 @@ int bad_input(const std::string& message) {
 
 }  // namespace
 
-faults_command::faults_command(CLI::App& app) {
+faults_command::faults_command(CLI::App& app, extensions_factory make_extensions)
+    : m_make_extensions(std::move(make_extensions)) {
     m_app = app.add_subcommand("faults", "fault kinds and the fault campaign (docs/faults.md)");
     m_app->add_flag("--list", m_list, "every fault kind with its parameters, defaults, ranges");
     m_app->add_option("--campaign", m_campaign, "run a campaign: smoke | full");
@@ -28,6 +29,9 @@ faults_command::faults_command(CLI::App& app) {
     m_app->add_option("--out", m_out, "folder for campaign.json/.csv/.txt (default campaign-NAME)");
     m_app->add_flag("--keep-runs", m_keep_runs, "keep each run's report.json under OUT/runs");
     m_app->add_option("--binary", m_binary, "the stereosim to run (default: this program)");
+    m_app->add_flag("--no-snapshots", m_no_snapshots,
+                    "run every run from the start (default: runs whose faults start later "
+                    "share their fault-free prefix, forked at a snapshot)");
     m_app->add_option(
         "--match", m_match,
         "only the runs whose spec contains TEXT (A|B: either; 'clean': the clean runs)");
@@ -57,6 +61,13 @@ int faults_command::execute() {
     o.keep_runs = m_keep_runs;
     o.binary = m_binary;
     o.match = m_match;
+    o.snapshots = !m_no_snapshots;
+    if (m_make_extensions) {
+        o.run_group = [this](const std::vector<snapshot_member>& members, const std::string& binary,
+                             const std::string& leader_log, int max_children) {
+            return run_snapshot_group(members, binary, m_make_extensions, leader_log, max_children);
+        };
+    }
     std::string error;
     const auto t0 = std::chrono::steady_clock::now();
     const std::vector<campaign_row> rows = run_campaign(o, stderr, &error);

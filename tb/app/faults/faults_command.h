@@ -1,12 +1,14 @@
 // `stereosim faults` (docs/faults.md, docs/fault-contract.md):
 //   stereosim faults --list
 //   stereosim faults --campaign smoke|full [--seeds N] [--jobs J] [--shard K/M] [--out DIR]
-//                    [--keep-runs] [--match TEXT]
+//                    [--keep-runs] [--match TEXT] [--no-snapshots]
 // Exit codes: 0 every run kept the contract, 1 a run broke it (or did not
 // run), 2 bad input.
 #pragma once
 
 #include <string>
+
+#include "tb/app/faults/snapshots.h"
 
 namespace CLI {
 class App;
@@ -16,7 +18,9 @@ namespace faults {
 
 class faults_command {
   public:
-    explicit faults_command(CLI::App& app);
+    // `make_extensions`: the run command's extensions, for the runs a
+    // campaign forks from snapshots (empty: every run is spawned).
+    faults_command(CLI::App& app, extensions_factory make_extensions);
     CLI::App* subcommand() const { return m_app; }
     int execute();
 
@@ -24,6 +28,8 @@ class faults_command {
     CLI::App* m_app = nullptr;
     bool m_list = false;
     bool m_keep_runs = false;
+    bool m_no_snapshots = false;
+    extensions_factory m_make_extensions;
     std::string m_campaign;
     int m_seeds = 0;
     int m_jobs = 2;

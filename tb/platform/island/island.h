@@ -67,6 +67,13 @@ class island : public sc_core::sc_module {
     const island_stats& stats() const { return m_observer.stats(); }
     // Closes the period in progress, the hash, the frames and the trace (end of run).
     virtual void finish() = 0;
+    // Adds faults to an island that is already running (a fault campaign's
+    // snapshot, docs/performance.md): each must start after every edge
+    // stepped so far, so the run goes on as if it had had them from the
+    // start. The fast arrangement takes them; the pin-level one throws
+    // std::logic_error.
+    virtual void add_late_faults(const std::vector<sensor::fault> (&sensor_faults)[2],
+                                 const std::vector<emif::ardy_fault>& ardy_faults) = 0;
 
   protected:
     island(sc_core::sc_module_name name, const island_config& config,

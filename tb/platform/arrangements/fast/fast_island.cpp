@@ -88,6 +88,8 @@ class fast_island final : public platform::island {
                 platform::timeline& events);
     ~fast_island() override { m_card->final(); }
     void finish() override { m_observer.finish(); }
+    void add_late_faults(const std::vector<sensor::fault> (&sensor_faults)[2],
+                         const std::vector<emif::ardy_fault>& ardy_faults) override;
 
   private:
     // The clocks that rise at the next tick.
@@ -163,6 +165,22 @@ fast_island::fast_island(sc_core::sc_module_name name, const platform::island_co
     m_tracer.begin(engine.pins());
     if (m_tracing) trace_card(-1);
     SC_THREAD(run);
+}
+
+void fast_island::add_late_faults(const std::vector<sensor::fault> (&sensor_faults)[2],
+                                  const std::vector<emif::ardy_fault>& ardy_faults) {
+    // Both the sensor core and the glue look their faults up lazily, at the
+    // frame, line, pixel clock or bus edge where each may start.
+    for (int c = 0; c < 2; ++c) {
+        for (const sensor::fault& f : sensor_faults[c]) {
+            m_sensor[c]->add_fault(f);
+            m_config.faults[c].push_back(f);
+        }
+    }
+    for (const emif::ardy_fault& f : ardy_faults) {
+        m_glue.add(f);
+        m_config.ardy_faults.push_back(f);
+    }
 }
 
 void fast_island::reset_card() {

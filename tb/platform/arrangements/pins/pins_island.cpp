@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 #include <string>
 
 #include "model/emif/ardy_glue.h"
@@ -90,6 +91,12 @@ class pins_island : public platform::island {
         if (m_card) m_card->final();
     }
 
+    // Snapshots are the fast arrangement's (faults are wired into the
+    // sensors' modules and the glue's process at elaboration here).
+    void add_late_faults(const std::vector<sensor::fault> (&)[2],
+                         const std::vector<emif::ardy_fault>&) override {
+        throw std::logic_error("faults added to a running island need the fast arrangement");
+    }
     void finish() override {
         if (m_pending_tick >= 0) observe(m_pending_tick);
         m_pending_tick = -1;

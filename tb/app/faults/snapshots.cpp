@@ -1,0 +1,248 @@
+#include "tb/app/faults/snapshots.h"
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <numeric>
+
+#include "tb/app/cli/run_command.h"
+#include "tb/platform/platform.h"
+
+namespace faults {
+
+namespace {
+
+constexpr simtime::ticks ticks_per_ms = 1000000 * simtime::ticks_per_ns;
+constexpr simtime::ticks pause_step = snapshot_pause_step;
+
+// One `stereosim run` parsed into its own run command and extensions.
+struct parsed_run {
+    CLI::App app;
+    std::unique_ptr<cli::run_command> run;
+};
+
+bool parse_run(const std::vector<std::string>& args, const extensions_factory& make,
+               parsed_run* out) {
+    out->run = std::make_unique<cli::run_command>(out->app, make());
+    std::vector<std::string> text = {"stereosim", "run"};
+    text.insert(text.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (std::string& a : text) argv.push_back(a.data());
+    try {
+        out->app.parse(static_cast<int>(argv.size()), argv.data());
+    } catch (const CLI::ParseError& e) {
+        cli::print_error(e.what());
+        return false;
+    }
+    return true;
+}
+
+std::vector<std::string> without_faults(const std::vector<std::string>& args) {
+    std::vector<std::string> out;
+    for (size_t i = 0; i < args.size(); ++i) {
+        if (args[i] == "--fault") {
+            ++i;  // and its spec
+            continue;
+        }
+        out.push_back(args[i]);
+    }
+    return out;
+}
+
+// This process's output into `path`, as a spawned run's log.txt.
+void redirect_output(const std::string& path) {
+    const int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd < 0) return;
+    dup2(fd, STDOUT_FILENO);
+    dup2(fd, STDERR_FILENO);
+    close(fd);
+}
+
+enum class due { not_yet, now, missed };
+
+// At a pause at `now`: whether the member's snapshot must be taken now
+// (the next pause could be too late) or was missed.
+due snapshot_due(const snapshot_trigger& t, const platform::platform_top& top, simtime::ticks now) {
+    bool take = false;
+    if (t.before_tick >= 0) {
+        if (now > t.before_tick) return due::missed;
+        take = now + pause_step > t.before_tick;
+    }
+    for (const snapshot_trigger::sensor_frame& f : t.frames) {
+        const auto& truth = top.cycle_island().sensor(f.camera).truth();
+        const int64_t current = truth.empty() ? -1 : static_cast<int64_t>(truth.back().index);
+        if (current >= static_cast<int64_t>(f.frame)) return due::missed;
+        take = take || current + 1 >= static_cast<int64_t>(f.frame);
+    }
+    return take ? due::now : due::not_yet;
+}
+
+// The member's run in a child: from the paused platform (its faults added),
+// or, where its snapshot was missed, from the start by exec of `binary`.
+// With token_fd >= 0 the child first takes a token (one byte) from it.
+pid_t fork_member(const snapshot_member& m, platform::platform_top* top, const std::string& binary,
+                  const extensions_factory& make, int token_fd) {
+    std::fflush(nullptr);
+    const pid_t pid = fork();
+    if (pid != 0) return pid;
+    char token = 0;
+    while (token_fd >= 0 && read(token_fd, &token, 1) < 0 && errno == EINTR) {
+    }
+    redirect_output(m.dir + "/log.txt");
+    if (top) {
+        parsed_run run;
+        const int rc = parse_run(m.args, make, &run) ? run.run->execute_from_snapshot(*top)
+                                                     : cli::exit_bad_input;
+        std::fflush(nullptr);
+        _exit(rc);
+    }
+    std::vector<std::string> text = {binary, "run"};
+    text.insert(text.end(), m.args.begin(), m.args.end());
+    std::vector<char*> argv;
+    for (std::string& a : text) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    execv(binary.c_str(), argv.data());
+    _exit(127);
+}
+
+// The members' children, each forked the moment its snapshot is due (the
+// leader never waits to take one); at most `limit` of them compute beside
+// the leader: a child takes a token from a pipe before it runs, the leader
+// puts one back as it reaps a child. limit 0: the leader waits for each.
+// Each child's DIR/status is written as it ends.
+class member_children {
+  public:
+    explicit member_children(size_t limit) : m_limit(limit) {
+        if (m_limit == 0 || pipe(m_tokens) != 0) {
+            m_limit = 0;
+            return;
+        }
+        for (size_t i = 0; i < m_limit; ++i) put_token();
+    }
+    ~member_children() {
+        for (int fd : m_tokens)
+            if (fd >= 0) close(fd);
+    }
+    member_children(const member_children&) = delete;
+    member_children& operator=(const member_children&) = delete;
+
+    void start(const snapshot_member& m, platform::platform_top* top, const std::string& binary,
+               const extensions_factory& make) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const pid_t pid = fork_member(m, top, binary, make, m_limit > 0 ? m_tokens[0] : -1);
+        if (pid < 0) {
+            write_status(m.dir, cli::exit_run_failed << 8, 0.0);  // as if it exited 3
+            return;
+        }
+        m_running.push_back({pid, m.dir, t0});
+        if (m_limit == 0) wait_all();
+    }
+    void wait_all() {
+        while (!m_running.empty()) reap_one();
+    }
+    // The leader stopped computing: its own slot goes to the children.
+    void leader_done() {
+        if (m_limit > 0) put_token();
+    }
+
+  private:
+    struct child {
+        pid_t pid;
+        std::string dir;
+        std::chrono::steady_clock::time_point started;
+    };
+    static void write_status(const std::string& dir, int status, double wall) {
+        std::ofstream(dir + "/status") << status << ' ' << wall << '\n';
+    }
+    void put_token() {
+        const char token = 't';
+        while (write(m_tokens[1], &token, 1) < 0 && errno == EINTR) {
+        }
+    }
+    void reap_one() {
+        int status = 0;
+        const pid_t pid = waitpid(-1, &status, 0);
+        if (pid < 0) {
+            for (const child& c : m_running) write_status(c.dir, cli::exit_run_failed << 8, 0.0);
+            m_running.clear();
+            return;
+        }
+        for (auto it = m_running.begin(); it != m_running.end(); ++it) {
+            if (it->pid != pid) continue;
+            const std::chrono::duration<double> wall =
+                std::chrono::steady_clock::now() - it->started;
+            write_status(it->dir, status, wall.count());
+            m_running.erase(it);
+            if (m_limit > 0) put_token();
+            return;
+        }
+    }
+    size_t m_limit;
+    int m_tokens[2] = {-1, -1};
+    std::vector<child> m_running;
+};
+
+}  // namespace
+
+int run_snapshot_group(const std::vector<snapshot_member>& members, const std::string& binary,
+                       const extensions_factory& make_extensions, const std::string& leader_log,
+                       int max_children) {
+    redirect_output(leader_log);
+    member_children children(static_cast<size_t>(std::max(0, max_children)));
+    if (members.empty()) return 0;
+    parsed_run base;
+    cli::run_setup setup;
+    platform::platform_config config;
+    std::string error;
+    if (!parse_run(without_faults(members[0].args), make_extensions, &base))
+        return cli::exit_bad_input;
+    if (!base.run->prepare(&setup, &config, &error)) {
+        cli::print_error(error);
+        return cli::exit_bad_input;
+    }
+    std::vector<size_t> pending(members.size());
+    std::iota(pending.begin(), pending.end(), size_t{0});
+    try {
+        platform::platform_top top(config);
+        const simtime::ticks end = config.period * config.frames;
+        for (simtime::ticks now = 0;;) {
+            for (auto it = pending.begin(); it != pending.end();) {
+                const due d =
+                    now >= end ? due::missed : snapshot_due(members[*it].trigger, top, now);
+                if (d == due::not_yet) {
+                    ++it;
+                    continue;
+                }
+                // The leader's log says which way each member ran.
+                if (d == due::now)
+                    std::printf("snapshot at %.3f ms: %s\n",
+                                static_cast<double>(now) / ticks_per_ms, members[*it].dir.c_str());
+                else
+                    std::printf("snapshot missed, from the start: %s\n", members[*it].dir.c_str());
+                children.start(members[*it], d == due::now ? &top : nullptr, binary,
+                               make_extensions);
+                it = pending.erase(it);
+            }
+            if (pending.empty()) break;
+            now = std::min(end, now + pause_step);
+            top.run_until(now);
+        }
+    } catch (const std::exception& e) {
+        cli::print_error(std::string("the snapshot's fault-free run failed: ") + e.what());
+        for (size_t i : pending) children.start(members[i], nullptr, binary, make_extensions);
+        children.leader_done();
+        children.wait_all();
+        return cli::exit_run_failed;
+    }
+    children.leader_done();
+    children.wait_all();
+    return 0;
+}
+
+}  // namespace faults
