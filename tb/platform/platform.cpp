@@ -135,9 +135,21 @@ void platform_top::run_until(simtime::ticks t) {
 }
 
 void platform_top::continue_with_faults(const platform_config& config) {
-    if (config.frames != m_config.frames || config.wire.enabled)
+    // What the snapshot's run was built with must be the continuation's (the
+    // campaign groups runs whose options differ only in --fault; these are
+    // the settings a fault run could plausibly differ in).
+    const platform_config& c = m_config;
+    const bool same_run =
+        config.frames == c.frames && config.seed == c.seed && config.arrangement == c.arrangement &&
+        config.dsk.cpu_hz == c.dsk.cpu_hz && config.mode == c.mode &&
+        config.card_retry_limit == c.card_retry_limit &&
+        config.hard_error_rearms == c.hard_error_rearms && config.watchdog_ms == c.watchdog_ms &&
+        config.card_start_timeout == c.card_start_timeout && config.hash_pins == c.hash_pins &&
+        config.trace == c.trace && !config.wire.enabled && c.left_faults.empty() &&
+        c.right_faults.empty() && c.ardy_faults.empty() && c.cpu_slow_num == c.cpu_slow_den;
+    if (!same_run)
         throw std::invalid_argument(
-            "a snapshot continues a run of the same length, without wire faults");
+            "a snapshot continues only the run it was taken from, with faults added");
     const std::vector<sensor::fault> sensor_faults[2] = {config.left_faults, config.right_faults};
     m_island->add_late_faults(sensor_faults, config.ardy_faults);
     if (config.cpu_slow_num != config.cpu_slow_den)

@@ -72,10 +72,11 @@ class platform_top {
     // fault campaign's snapshot point (tb/app/faults/snapshots.h).
     void run_until(simtime::ticks t);
     // Continues the paused run as the run of `config`, which must differ
-    // from this platform's only in faults that have not started yet: the
-    // sensors' and the bus's are added to the island, the CPU's cycle scale
-    // is set. Throws std::invalid_argument if config has a wire fault or a
-    // different number of frames.
+    // from this platform's (built without faults) only in faults that have
+    // not started yet: the sensors' and the bus's are added to the island,
+    // the CPU's cycle scale is set. Throws std::invalid_argument if config
+    // differs in its length, seed, arrangement, DSK clock, mode, card and
+    // firmware settings, pin hash or trace, or has a wire fault.
     void continue_with_faults(const platform_config& config);
     // Called after each simulated sync period with the periods done (the
     // stereosim command's progress line); set before run(). With a hook the

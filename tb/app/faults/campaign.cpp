@@ -28,100 +28,6 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-struct plan_entry {
-    const char* fault;  // nullptr: clean; several specs space-separated
-    int frames;
-    int retry_limit;
-    const char* settings = nullptr;  // space-separated KEY=VALUE for --set
-};
-
-std::vector<std::string> words(const std::string& text) {
-    std::vector<std::string> out;
-    std::istringstream in(text);
-    for (std::string w; in >> w;) out.push_back(w);
-    return out;
-}
-
-// Short runs (CI): one spec per kind and regime. Faults that must end in a
-// hard error run with RETRY_LIMIT 2 so the firmware's give-up bound,
-// (1 + 1) x (2 + 1) + 2 = 8 periods, fits in 10 frames.
-const plan_entry smoke_faults[] = {
-    {"skew:sensor=R,lines=3@frame=4", 8, 8},
-    {"skew:sensor=L,pixels=1@frame=2", 8, 8},
-    // RETRY_LIMIT 0: every failed check is a card hard error and a firmware
-    // re-arm; two of them with good pairs between must not add up to a
-    // give-up. Seed 3's starts after each re-arm are in step by the truth
-    // (two out-of-step starts in a row would make the give-up right).
-    {"skew:sensor=R,lines=3@frame=3 skew:sensor=L,lines=2@frame=7", 12, 0},
-    {"drop-line:sensor=L,line=100@frame=4", 8, 8},
-    {"drop-frame:sensor=R@frame=4", 8, 8},
-    {"extra-frame:sensor=L@frame=4", 8, 8},
-    {"drift:sensor=R,ppm=1", 8, 8},
-    {"drift:sensor=R,ppm=200", 10, 2},
-    {"glitch:sensor=L,signal=href@ms=130.2", 10, 8},
-    {"glitch:sensor=R,signal=vsync@ms=100", 8, 8},
-    // 48 - 6 sigma >= 32: flagged every frame; 48 + 6 sigma < 64: a
-    // threshold programmed one bit off would never see it.
-    {"dark-leak:sensor=R,level=48@frame=2", 10, 2},
-    {"dark-leak:sensor=L,level=8", 8, 8},
-    {"stuck-bit:sensor=L,bit=7", 10, 2},
-    {"stuck-bit:sensor=R,bit=0", 8, 8},
-    {"dead:sensor=R", 10, 2},
-    {"oe-stuck:sensor=L", 10, 2},
-    // Both sensors silent and a START_TIMEOUT longer than the run: the card
-    // never flags anything, only the firmware's own watchdog can give up.
-    {"dead:sensor=L dead:sensor=R", 10, 2,
-     "firmware.watchdog_ms=50 firmware.card_start_timeout=65535"},
-    {"emif-wait:cycles=40@frame=3", 8, 8},
-    {"cpu-slow:factor=20@frame=4", 14, 8},
-};
-
-const plan_entry full_faults[] = {
-    {"skew:sensor=R,lines=1@frame=4", 14, 8},
-    {"skew:sensor=L,lines=3@frame=5", 14, 8},
-    {"skew:sensor=R,lines=40@frame=3", 14, 8},
-    {"skew:sensor=L,pixels=1@frame=2", 14, 8},
-    {"skew:sensor=R,pixels=7@frame=6", 14, 8},
-    {"drop-line:sensor=L,line=0@frame=4", 14, 8},
-    {"drop-line:sensor=R,line=100@frame=7", 20, 8},
-    {"drop-line:sensor=L,line=500@frame=3", 14, 8},
-    {"drop-frame:sensor=R@frame=4", 14, 8},
-    {"drop-frame:sensor=L@frame=6", 14, 8},
-    {"extra-frame:sensor=L@frame=4", 14, 8},
-    {"drift:sensor=R,ppm=1", 20, 8},
-    {"drift:sensor=L,ppm=-1", 20, 8},
-    {"drift:sensor=R,ppm=200", 10, 2},
-    {"drift:sensor=L,ppm=-50", 10, 2},
-    {"glitch:sensor=L,signal=href@ms=130.2", 14, 8},
-    {"glitch:sensor=R,signal=href,width=50@ms=100", 14, 8},
-    {"glitch:sensor=R,signal=vsync@ms=100", 14, 8},
-    {"glitch:sensor=L,signal=vsync,width=50@ms=150.7", 14, 8},
-    {"dark-leak:sensor=L,level=8", 14, 8},
-    {"dark-leak:sensor=R,level=40@frame=2", 10, 2},
-    {"dark-leak:sensor=R,level=80@frame=2", 10, 2},
-    {"stuck-bit:sensor=L,bit=0", 14, 8},
-    {"stuck-bit:sensor=R,bit=3", 14, 8},
-    {"stuck-bit:sensor=L,bit=4", 14, 8},
-    {"stuck-bit:sensor=R,bit=5", 10, 2},
-    {"stuck-bit:sensor=L,bit=7", 10, 2},
-    {"stuck-bit:sensor=R,bit=7,value=0", 14, 8},
-    {"dead:sensor=L", 10, 2},
-    {"dead:sensor=R", 10, 2},
-    {"dead:sensor=L dead:sensor=R", 10, 2,
-     "firmware.watchdog_ms=50 firmware.card_start_timeout=65535"},
-    {"oe-stuck:sensor=L", 10, 2},
-    {"oe-stuck:sensor=R", 10, 2},
-    {"emif-wait:cycles=2@frame=3", 14, 8},
-    {"emif-wait:cycles=40@frame=3", 14, 8},
-    {"emif-wait:cycles=40,ce=2@frame=3", 14, 8},
-    {"cpu-slow:factor=1.5@frame=4", 14, 8},
-    {"cpu-slow:factor=3@frame=4", 14, 8},
-    {"cpu-slow:factor=20@frame=4", 20, 8},
-};
-
-// Full campaign: 84 clean runs of 12 frames = 1008 clean frames.
-constexpr int full_clean_runs = 84, full_clean_frames = 12;
-
 std::string csv_field(const std::string& s) {
     if (s.find_first_of(",\"\n") == std::string::npos) return s;
     std::string out = "\"";
@@ -154,7 +60,7 @@ std::vector<std::string> run_args(const campaign_run& r, const std::string& dir)
                                      std::to_string(r.retry_limit),
                                      "--out",
                                      dir + "/out"};
-    for (const std::string& spec : words(r.fault)) {
+    for (const std::string& spec : spec_words(r.fault)) {
         args.push_back("--fault");
         args.push_back(spec);
     }
@@ -222,6 +128,7 @@ json row_json(const campaign_row& r) {
               {"ran", r.ran},
               {"exit_code", r.exit_code},
               {"wall_s", r.wall_s},
+              {"snapshot_ms", r.snapshot_ms >= 0 ? json(r.snapshot_ms) : json(nullptr)},
               {"contract_ok", r.ok()}};
     if (!r.ran) {
         j["error"] = r.error;
@@ -316,45 +223,6 @@ std::string csv_value(const json& j, const char* key) {
     return v.dump();
 }
 
-}  // namespace
-
-std::vector<campaign_run> campaign_plan(const std::string& name, int seeds) {
-    std::vector<campaign_run> runs;
-    const bool smoke = name == "smoke";
-    if (!smoke && name != "full") return runs;
-    if (seeds <= 0) seeds = smoke ? 1 : 3;
-    const uint64_t first_seed = smoke ? 3 : 11;
-    const auto add = [&](const plan_entry& e, uint64_t seed) {
-        campaign_run r;
-        r.index = static_cast<int>(runs.size());
-        r.fault = e.fault ? e.fault : "";
-        r.seed = seed;
-        r.frames = e.frames;
-        r.retry_limit = e.retry_limit;
-        if (e.settings) r.settings = words(e.settings);
-        runs.push_back(r);
-    };
-    if (smoke) {
-        for (int s = 0; s < 2 * seeds; ++s) add({nullptr, 8, 8}, first_seed + s);
-        for (const plan_entry& e : smoke_faults)
-            for (int s = 0; s < seeds; ++s) add(e, first_seed + s);
-    } else {
-        for (int s = 0; s < full_clean_runs; ++s) add({nullptr, full_clean_frames, 8}, 100 + s);
-        for (const plan_entry& e : full_faults)
-            for (int s = 0; s < seeds; ++s) add(e, first_seed + s);
-    }
-    return runs;
-}
-
-std::vector<campaign_run> shard_of(const std::vector<campaign_run>& runs, int shard, int shards) {
-    std::vector<campaign_run> out;
-    for (const campaign_run& r : runs)
-        if (r.index % shards == shard - 1) out.push_back(r);
-    return out;
-}
-
-namespace {
-
 // The shard's runs whose spec matches --match A|B (contains A or B).
 std::vector<campaign_run> selected_runs(const campaign_options& o) {
     std::vector<campaign_run> plan;
@@ -383,7 +251,7 @@ void log_row(std::FILE* log, size_t done, size_t total, const campaign_row& row)
 std::vector<fault_spec> specs_of(const campaign_run& r) {
     std::vector<fault_spec> specs;
     std::string error;
-    for (const std::string& text : words(r.fault)) {
+    for (const std::string& text : spec_words(r.fault)) {
         const std::optional<fault_spec> spec = parse_fault_spec(text, &error);
         if (!spec) return {};
         specs.push_back(*spec);
@@ -422,9 +290,11 @@ std::vector<unit> units_of(const campaign_options& o, const std::vector<campaign
     return units;
 }
 
-// Forks the leader of a snapshot group; -1 and *error if it cannot.
+// Forks the leader of a snapshot group (it holds the job token the caller
+// took); -1 and *error if it cannot.
 pid_t start_group(const campaign_options& o, const std::vector<campaign_run>& plan, const unit& u,
-                  const std::function<std::string(size_t)>& run_dir, std::string* error) {
+                  const std::function<std::string(size_t)>& run_dir, const job_tokens& tokens,
+                  std::string* error) {
     const simtime::ticks period = platform::platform_config{}.period;
     std::vector<snapshot_member> members;
     for (size_t i : u.runs)
@@ -432,31 +302,32 @@ pid_t start_group(const campaign_options& o, const std::vector<campaign_run>& pl
                            snapshot_trigger_of(specs_of(plan[i]), period)});
     std::fflush(nullptr);
     const pid_t pid = fork();
-    if (pid == 0)
-        _exit(o.run_group(members, o.binary, run_dir(u.runs[0]) + "/leader.txt", o.jobs - 1));
+    if (pid == 0) _exit(o.run_group(members, o.binary, run_dir(u.runs[0]) + "/leader.txt", tokens));
     if (pid < 0) *error = std::string("cannot fork a snapshot group: ") + std::strerror(errno);
     return pid;
 }
 
 // A group member's wait status and wall time as its leader wrote them; the
 // leader's own status if it wrote none.
-int member_status(const std::string& dir, int leader_status, double* wall) {
+int member_status(const std::string& dir, int leader_status, double* wall, double* snapshot_ms) {
     std::ifstream in(dir + "/status");
     int status = 0;
-    if (in >> status >> *wall) return status;
+    if (in >> status >> *wall >> *snapshot_ms) return status;
     *wall = 0;
+    *snapshot_ms = -1;
     return leader_status != 0 ? leader_status : 3 << 8;  // as if the run had exited 3
 }
 
-// Runs the plan, at most o.jobs children at a time, each run in its own
-// folder under runs/; fills rows[i] as run i ends.
+// Runs the plan, each run in its own folder under runs/, at most o.jobs
+// processes computing at a time (job_tokens.h: a spawned run holds a token
+// until it is reaped, a snapshot group's leader until its fault-free run
+// ends, each of its forked runs while it runs); fills rows[i] as run i ends.
 void run_plan(const campaign_options& o, const std::vector<campaign_run>& plan,
               std::vector<campaign_row>& rows, std::FILE* log) {
     std::error_code ec;
     const std::vector<unit> units = units_of(o, plan);
+    job_tokens tokens = job_tokens::make(o.jobs);
     std::map<pid_t, size_t> running;  // pid -> unit
-    int slots_used = 0;  // a run takes one, a group all o.jobs (its leader and children)
-    const auto slots_of = [&](const unit& u) { return u.group ? o.jobs : 1; };
     std::vector<std::chrono::steady_clock::time_point> started(units.size());
     const std::function<std::string(size_t)> run_dir = [&](size_t i) {
         return o.out_dir + "/runs/" + std::to_string(plan[i].index);
@@ -470,9 +341,12 @@ void run_plan(const campaign_options& o, const std::vector<campaign_run>& plan,
         ++done;
         if (log) log_row(log, done, plan.size(), row);
     };
+    if (!tokens.valid()) {
+        for (size_t i = 0; i < plan.size(); ++i) rows[i].error = "cannot create the job pipe";
+        return;
+    }
     while (done < plan.size()) {
-        while (next < units.size() &&
-               (running.empty() || slots_used + slots_of(units[next]) <= o.jobs)) {
+        while (next < units.size() && tokens.try_take()) {
             const unit& u = units[next];
             for (size_t i : u.runs) {
                 rows[i].run = plan[i];
@@ -481,22 +355,32 @@ void run_plan(const campaign_options& o, const std::vector<campaign_run>& plan,
             }
             std::string spawn_error;
             const pid_t pid = u.group
-                                  ? start_group(o, plan, u, run_dir, &spawn_error)
+                                  ? start_group(o, plan, u, run_dir, tokens, &spawn_error)
                                   : spawn_run(o, plan[u.runs[0]], run_dir(u.runs[0]), &spawn_error);
             if (pid < 0) {
+                tokens.put();
                 for (size_t i : u.runs) rows[i].error = spawn_error;
                 done += u.runs.size();
             } else {
                 running[pid] = next;
-                slots_used += slots_of(u);
                 started[next] = std::chrono::steady_clock::now();
             }
             ++next;
         }
         if (running.empty()) continue;
+        // With runs still to start, look for a free token now and then (a
+        // group's leader or forked run frees one without the campaign
+        // reaping anything); else wait for a child.
         int status = 0;
-        const pid_t pid = waitpid(-1, &status, 0);
-        if (pid < 0) break;
+        const pid_t pid = waitpid(-1, &status, next < units.size() ? WNOHANG : 0);
+        if (pid == 0) {
+            tokens.wait_free(100);
+            continue;
+        }
+        if (pid < 0) {
+            if (errno == EINTR) continue;
+            break;
+        }
         const auto it = running.find(pid);
         if (it == running.end()) continue;
         const unit& u = units[it->second];
@@ -504,17 +388,20 @@ void run_plan(const campaign_options& o, const std::vector<campaign_run>& plan,
             std::chrono::duration<double>(std::chrono::steady_clock::now() - started[it->second])
                 .count();
         running.erase(it);
-        slots_used -= slots_of(u);
+        // A run's token comes back here; a leader gave its own back unless it was killed.
+        if (!u.group || WIFSIGNALED(status)) tokens.put();
         if (!u.group) {
             finish(u.runs[0], status, wall);
             continue;
         }
         for (size_t i : u.runs) {
             double member_wall = 0;
-            const int member = member_status(run_dir(i), status, &member_wall);
+            const int member =
+                member_status(run_dir(i), status, &member_wall, &rows[i].snapshot_ms);
             finish(i, member, member_wall);
         }
     }
+    tokens.close_fds();
 }
 
 json campaign_json(const campaign_options& o, const std::vector<campaign_row>& rows,
@@ -594,7 +481,7 @@ std::string campaign_table(const std::vector<campaign_row>& rows, const campaign
                   "run", "fault", "seed", "fr", "expected", "actual", "detected_by", "det", "rec",
                   "disc", "fwd", "proc", "drop", "unsy", "miss", "fals", "contract");
     out << line;
-    int broken = 0, clean_frames = 0, false_alarms = 0, unsynced = 0;
+    int broken = 0, clean_frames = 0, false_alarms = 0, unsynced = 0, forked = 0;
     for (const campaign_row& r : rows) {
         const std::string fault = r.run.fault.empty() ? "clean" : r.run.fault;
         if (!r.ran) {
@@ -626,6 +513,7 @@ std::string campaign_table(const std::vector<campaign_row>& rows, const campaign
             for (const std::string& why : x.violations) out << "       violation: " << why << "\n";
         broken += !r.ok();
         unsynced += run.unsynced_pairs_used;
+        forked += r.snapshot_ms >= 0;
         if (r.run.fault.empty()) {
             clean_frames += r.run.frames;
             false_alarms += run.false_alarms;
@@ -634,9 +522,9 @@ std::string campaign_table(const std::vector<campaign_row>& rows, const campaign
     std::snprintf(line, sizeof line,
                   "\ncampaign %s shard %d/%d: %zu runs, %d break the contract; clean "
                   "frames %d with %d false alarms; unsynced pairs used (all runs) %d; wall %.1f s "
-                  "with %d jobs\n",
+                  "with %d jobs, %d runs forked from snapshots\n",
                   o.name.c_str(), o.shard, o.shards, rows.size(), broken, clean_frames,
-                  false_alarms, unsynced, wall_s, o.jobs);
+                  false_alarms, unsynced, wall_s, o.jobs, forked);
     out << line;
     out << "columns: det = frames from onset to detection, rec = frames from detection to the "
            "first in-step pair forwarded, disc = pairs discarded (SYNC_ERROR + OVERFLOW) from the "

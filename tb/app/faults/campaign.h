@@ -15,6 +15,7 @@
 #include <functional>
 #include "tb/app/faults/fault_report.h"
 
+#include "tb/app/faults/job_tokens.h"
 #include "tb/app/faults/snapshot_trigger.h"
 
 namespace faults {
@@ -31,6 +32,9 @@ struct campaign_run {
 // The runs of a named campaign ("smoke" or "full"; else empty). `seeds`:
 // seeds per fault spec (0: the campaign's default).
 std::vector<campaign_run> campaign_plan(const std::string& name, int seeds);
+
+// The space-separated words of a run's fault (its specs) or settings.
+std::vector<std::string> spec_words(const std::string& text);
 
 // Runs index % shards == shard - 1 (shard 1-based).
 std::vector<campaign_run> shard_of(const std::vector<campaign_run>& runs, int shard, int shards);
@@ -51,7 +55,7 @@ struct campaign_options {
     // spawned.
     bool snapshots = true;
     std::function<int(const std::vector<snapshot_member>& members, const std::string& binary,
-                      const std::string& leader_log, int max_children)>
+                      const std::string& leader_log, const job_tokens& tokens)>
         run_group;
 };
 
@@ -60,7 +64,8 @@ struct campaign_row {
     bool ran = false;  // the child wrote a report.json we could read
     int exit_code = -1;
     double wall_s = 0;
-    std::string error;  // why it did not run
+    double snapshot_ms = -1;  // forked from a snapshot at this simulated time; -1: from the start
+    std::string error;        // why it did not run
     fault_run_result result;
     bool ok() const { return ran && result.contract_ok(); }
 };

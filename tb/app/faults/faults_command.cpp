@@ -64,8 +64,8 @@ int faults_command::execute() {
     o.snapshots = !m_no_snapshots;
     if (m_make_extensions) {
         o.run_group = [this](const std::vector<snapshot_member>& members, const std::string& binary,
-                             const std::string& leader_log, int max_children) {
-            return run_snapshot_group(members, binary, m_make_extensions, leader_log, max_children);
+                             const std::string& leader_log, const job_tokens& tokens) {
+            return run_snapshot_group(members, binary, m_make_extensions, leader_log, tokens);
         };
     }
     std::string error;

@@ -12,6 +12,7 @@
 #include <numeric>
 
 #include "tb/app/cli/run_command.h"
+#include "tb/app/faults/job_tokens.h"
 #include "tb/platform/platform.h"
 
 namespace faults {
@@ -85,15 +86,13 @@ due snapshot_due(const snapshot_trigger& t, const platform::platform_top& top, s
 
 // The member's run in a child: from the paused platform (its faults added),
 // or, where its snapshot was missed, from the start by exec of `binary`.
-// With token_fd >= 0 the child first takes a token (one byte) from it.
+// The child first takes a job token; its leader puts it back (reap_one).
 pid_t fork_member(const snapshot_member& m, platform::platform_top* top, const std::string& binary,
-                  const extensions_factory& make, int token_fd) {
+                  const extensions_factory& make, const job_tokens& tokens) {
     std::fflush(nullptr);
     const pid_t pid = fork();
     if (pid != 0) return pid;
-    char token = 0;
-    while (token_fd >= 0 && read(token_fd, &token, 1) < 0 && errno == EINTR) {
-    }
+    tokens.take();
     redirect_output(m.dir + "/log.txt");
     if (top) {
         parsed_run run;
@@ -112,43 +111,26 @@ pid_t fork_member(const snapshot_member& m, platform::platform_top* top, const s
 }
 
 // The members' children, each forked the moment its snapshot is due (the
-// leader never waits to take one); at most `limit` of them compute beside
-// the leader: a child takes a token from a pipe before it runs, the leader
-// puts one back as it reaps a child. limit 0: the leader waits for each.
-// Each child's DIR/status is written as it ends.
+// leader never waits to take one); a child computes once it holds a job
+// token, which the leader puts back as it reaps the child. Each child's
+// DIR/status is written as it ends.
 class member_children {
   public:
-    explicit member_children(size_t limit) : m_limit(limit) {
-        if (m_limit == 0 || pipe(m_tokens) != 0) {
-            m_limit = 0;
-            return;
-        }
-        for (size_t i = 0; i < m_limit; ++i) put_token();
-    }
-    ~member_children() {
-        for (int fd : m_tokens)
-            if (fd >= 0) close(fd);
-    }
-    member_children(const member_children&) = delete;
-    member_children& operator=(const member_children&) = delete;
+    explicit member_children(const job_tokens& tokens) : m_tokens(tokens) {}
 
-    void start(const snapshot_member& m, platform::platform_top* top, const std::string& binary,
-               const extensions_factory& make) {
+    // snapshot_ms: the simulated time of its snapshot, -1 when from the start.
+    void start(const snapshot_member& m, platform::platform_top* top, double snapshot_ms,
+               const std::string& binary, const extensions_factory& make) {
         const auto t0 = std::chrono::steady_clock::now();
-        const pid_t pid = fork_member(m, top, binary, make, m_limit > 0 ? m_tokens[0] : -1);
+        const pid_t pid = fork_member(m, top, binary, make, m_tokens);
         if (pid < 0) {
-            write_status(m.dir, cli::exit_run_failed << 8, 0.0);  // as if it exited 3
+            write_status(m.dir, cli::exit_run_failed << 8, 0.0, -1.0);  // as if it exited 3
             return;
         }
-        m_running.push_back({pid, m.dir, t0});
-        if (m_limit == 0) wait_all();
+        m_running.push_back({pid, m.dir, t0, snapshot_ms});
     }
     void wait_all() {
         while (!m_running.empty()) reap_one();
-    }
-    // The leader stopped computing: its own slot goes to the children.
-    void leader_done() {
-        if (m_limit > 0) put_token();
     }
 
   private:
@@ -156,20 +138,17 @@ class member_children {
         pid_t pid;
         std::string dir;
         std::chrono::steady_clock::time_point started;
+        double snapshot_ms;
     };
-    static void write_status(const std::string& dir, int status, double wall) {
-        std::ofstream(dir + "/status") << status << ' ' << wall << '\n';
-    }
-    void put_token() {
-        const char token = 't';
-        while (write(m_tokens[1], &token, 1) < 0 && errno == EINTR) {
-        }
+    static void write_status(const std::string& dir, int status, double wall, double snapshot_ms) {
+        std::ofstream(dir + "/status") << status << ' ' << wall << ' ' << snapshot_ms << '\n';
     }
     void reap_one() {
         int status = 0;
         const pid_t pid = waitpid(-1, &status, 0);
         if (pid < 0) {
-            for (const child& c : m_running) write_status(c.dir, cli::exit_run_failed << 8, 0.0);
+            for (const child& c : m_running)
+                write_status(c.dir, cli::exit_run_failed << 8, 0.0, c.snapshot_ms);
             m_running.clear();
             return;
         }
@@ -177,24 +156,24 @@ class member_children {
             if (it->pid != pid) continue;
             const std::chrono::duration<double> wall =
                 std::chrono::steady_clock::now() - it->started;
-            write_status(it->dir, status, wall.count());
+            write_status(it->dir, status, wall.count(), it->snapshot_ms);
             m_running.erase(it);
-            if (m_limit > 0) put_token();
+            m_tokens.put();
             return;
         }
     }
-    size_t m_limit;
-    int m_tokens[2] = {-1, -1};
+    job_tokens m_tokens;
     std::vector<child> m_running;
 };
 
 }  // namespace
 
-int run_snapshot_group(const std::vector<snapshot_member>& members, const std::string& binary,
-                       const extensions_factory& make_extensions, const std::string& leader_log,
-                       int max_children) {
-    redirect_output(leader_log);
-    member_children children(static_cast<size_t>(std::max(0, max_children)));
+namespace {
+
+// The leader's fault-free run: forks each member at its snapshot (or from
+// the start where it was missed); returns the leader's exit code.
+int fork_at_snapshots(const std::vector<snapshot_member>& members, const std::string& binary,
+                      const extensions_factory& make_extensions, member_children& children) {
     if (members.empty()) return 0;
     parsed_run base;
     cli::run_setup setup;
@@ -220,29 +199,38 @@ int run_snapshot_group(const std::vector<snapshot_member>& members, const std::s
                     continue;
                 }
                 // The leader's log says which way each member ran.
-                if (d == due::now)
-                    std::printf("snapshot at %.3f ms: %s\n",
-                                static_cast<double>(now) / ticks_per_ms, members[*it].dir.c_str());
+                const bool forked = d == due::now;
+                const double at_ms = static_cast<double>(now) / ticks_per_ms;
+                if (forked)
+                    std::printf("snapshot at %.3f ms: %s\n", at_ms, members[*it].dir.c_str());
                 else
                     std::printf("snapshot missed, from the start: %s\n", members[*it].dir.c_str());
-                children.start(members[*it], d == due::now ? &top : nullptr, binary,
+                children.start(members[*it], forked ? &top : nullptr, forked ? at_ms : -1.0, binary,
                                make_extensions);
                 it = pending.erase(it);
             }
-            if (pending.empty()) break;
+            if (pending.empty()) return 0;
             now = std::min(end, now + pause_step);
             top.run_until(now);
         }
     } catch (const std::exception& e) {
         cli::print_error(std::string("the snapshot's fault-free run failed: ") + e.what());
-        for (size_t i : pending) children.start(members[i], nullptr, binary, make_extensions);
-        children.leader_done();
-        children.wait_all();
+        for (size_t i : pending) children.start(members[i], nullptr, -1.0, binary, make_extensions);
         return cli::exit_run_failed;
     }
-    children.leader_done();
+}
+
+}  // namespace
+
+int run_snapshot_group(const std::vector<snapshot_member>& members, const std::string& binary,
+                       const extensions_factory& make_extensions, const std::string& leader_log,
+                       const job_tokens& tokens) {
+    redirect_output(leader_log);
+    member_children children(tokens);
+    const int rc = fork_at_snapshots(members, binary, make_extensions, children);
+    tokens.put();  // the leader's own token: it stops computing
     children.wait_all();
-    return 0;
+    return rc;
 }
 
 }  // namespace faults

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "tb/app/cli/run_outputs.h"
+#include "tb/app/faults/job_tokens.h"
 #include "tb/app/faults/snapshot_trigger.h"
 
 namespace faults {
@@ -22,15 +23,17 @@ namespace faults {
 // The run command's extensions, made anew for each run (app::make_run_extensions).
 using extensions_factory = std::function<std::vector<std::unique_ptr<cli::run_extension>>()>;
 
-// The leader, in a process of its own (its messages into `leader_log`):
-// runs members[0]'s options without faults, forks each member at its
-// snapshot (a member whose snapshot point was passed is run from the start,
-// by exec of `binary`), at most `max_children` of them running beside it
-// (0: it waits for each), and writes each one's DIR/status ("<wait status> <wall seconds>") as it
-// ends. Returns the leader's exit code (0; 2 or 3 if the fault-free run
-// could not be set up or failed).
+// The leader, in a process of its own (its messages into `leader_log`),
+// holding one of the campaign's job tokens: runs members[0]'s options
+// without faults and forks each member at its snapshot (a member whose
+// snapshot point was passed is run from the start, by exec of `binary`).
+// A child computes once it holds a token (the leader puts it back when it
+// reaps the child); the leader puts its own back when its fault-free run
+// ends. Writes each member's DIR/status ("<wait status> <wall seconds>
+// <snapshot ms, -1 from the start>") as it ends. Returns the leader's exit
+// code (0; 2 or 3 if the fault-free run could not be set up or failed).
 int run_snapshot_group(const std::vector<snapshot_member>& members, const std::string& binary,
                        const extensions_factory& make_extensions, const std::string& leader_log,
-                       int max_children);
+                       const job_tokens& tokens);
 
 }  // namespace faults

@@ -1,0 +1,142 @@
+// The runs of the smoke and full campaigns (docs/fault-contract.md "The
+// campaign"): which faults, seeds, lengths and card settings.
+#include <sstream>
+
+#include "tb/app/faults/campaign.h"
+
+namespace faults {
+
+namespace {
+
+struct plan_entry {
+    const char* fault;  // nullptr: clean; several specs space-separated
+    int frames;
+    int retry_limit;
+    const char* settings = nullptr;  // space-separated KEY=VALUE for --set
+};
+
+// Short runs (CI): one spec per kind and regime. Faults that must end in a
+// hard error run with RETRY_LIMIT 2 so the firmware's give-up bound,
+// (1 + 1) x (2 + 1) + 2 = 8 periods, fits in 10 frames.
+const plan_entry smoke_faults[] = {
+    {"skew:sensor=R,lines=3@frame=4", 8, 8},
+    {"skew:sensor=L,pixels=1@frame=2", 8, 8},
+    // RETRY_LIMIT 0: every failed check is a card hard error and a firmware
+    // re-arm; two of them with good pairs between must not add up to a
+    // give-up. Seed 3's starts after each re-arm are in step by the truth
+    // (two out-of-step starts in a row would make the give-up right).
+    {"skew:sensor=R,lines=3@frame=3 skew:sensor=L,lines=2@frame=7", 12, 0},
+    {"drop-line:sensor=L,line=100@frame=4", 8, 8},
+    {"drop-frame:sensor=R@frame=4", 8, 8},
+    {"extra-frame:sensor=L@frame=4", 8, 8},
+    {"drift:sensor=R,ppm=1", 8, 8},
+    {"drift:sensor=R,ppm=200", 10, 2},
+    {"glitch:sensor=L,signal=href@ms=130.2", 10, 8},
+    {"glitch:sensor=R,signal=vsync@ms=100", 8, 8},
+    // 48 - 6 sigma >= 32: flagged every frame; 48 + 6 sigma < 64: a
+    // threshold programmed one bit off would never see it.
+    {"dark-leak:sensor=R,level=48@frame=2", 10, 2},
+    {"dark-leak:sensor=L,level=8", 8, 8},
+    {"stuck-bit:sensor=L,bit=7", 10, 2},
+    {"stuck-bit:sensor=R,bit=0", 8, 8},
+    {"dead:sensor=R", 10, 2},
+    {"oe-stuck:sensor=L", 10, 2},
+    // Both sensors silent and a START_TIMEOUT longer than the run: the card
+    // never flags anything, only the firmware's own watchdog can give up.
+    {"dead:sensor=L dead:sensor=R", 10, 2,
+     "firmware.watchdog_ms=50 firmware.card_start_timeout=65535"},
+    {"emif-wait:cycles=40@frame=3", 8, 8},
+    {"cpu-slow:factor=20@frame=4", 14, 8},
+};
+
+const plan_entry full_faults[] = {
+    {"skew:sensor=R,lines=1@frame=4", 14, 8},
+    {"skew:sensor=L,lines=3@frame=5", 14, 8},
+    {"skew:sensor=R,lines=40@frame=3", 14, 8},
+    {"skew:sensor=L,pixels=1@frame=2", 14, 8},
+    {"skew:sensor=R,pixels=7@frame=6", 14, 8},
+    {"drop-line:sensor=L,line=0@frame=4", 14, 8},
+    {"drop-line:sensor=R,line=100@frame=7", 20, 8},
+    {"drop-line:sensor=L,line=500@frame=3", 14, 8},
+    {"drop-frame:sensor=R@frame=4", 14, 8},
+    {"drop-frame:sensor=L@frame=6", 14, 8},
+    {"extra-frame:sensor=L@frame=4", 14, 8},
+    {"drift:sensor=R,ppm=1", 20, 8},
+    {"drift:sensor=L,ppm=-1", 20, 8},
+    {"drift:sensor=R,ppm=200", 10, 2},
+    {"drift:sensor=L,ppm=-50", 10, 2},
+    {"glitch:sensor=L,signal=href@ms=130.2", 14, 8},
+    {"glitch:sensor=R,signal=href,width=50@ms=100", 14, 8},
+    {"glitch:sensor=R,signal=vsync@ms=100", 14, 8},
+    {"glitch:sensor=L,signal=vsync,width=50@ms=150.7", 14, 8},
+    {"dark-leak:sensor=L,level=8", 14, 8},
+    {"dark-leak:sensor=R,level=40@frame=2", 10, 2},
+    {"dark-leak:sensor=R,level=80@frame=2", 10, 2},
+    {"stuck-bit:sensor=L,bit=0", 14, 8},
+    {"stuck-bit:sensor=R,bit=3", 14, 8},
+    {"stuck-bit:sensor=L,bit=4", 14, 8},
+    {"stuck-bit:sensor=R,bit=5", 10, 2},
+    {"stuck-bit:sensor=L,bit=7", 10, 2},
+    {"stuck-bit:sensor=R,bit=7,value=0", 14, 8},
+    {"dead:sensor=L", 10, 2},
+    {"dead:sensor=R", 10, 2},
+    {"dead:sensor=L dead:sensor=R", 10, 2,
+     "firmware.watchdog_ms=50 firmware.card_start_timeout=65535"},
+    {"oe-stuck:sensor=L", 10, 2},
+    {"oe-stuck:sensor=R", 10, 2},
+    {"emif-wait:cycles=2@frame=3", 14, 8},
+    {"emif-wait:cycles=40@frame=3", 14, 8},
+    {"emif-wait:cycles=40,ce=2@frame=3", 14, 8},
+    {"cpu-slow:factor=1.5@frame=4", 14, 8},
+    {"cpu-slow:factor=3@frame=4", 14, 8},
+    {"cpu-slow:factor=20@frame=4", 20, 8},
+};
+
+// Full campaign: 84 clean runs of 12 frames = 1008 clean frames.
+constexpr int full_clean_runs = 84, full_clean_frames = 12;
+
+}  // namespace
+
+std::vector<std::string> spec_words(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string w; in >> w;) out.push_back(w);
+    return out;
+}
+
+std::vector<campaign_run> campaign_plan(const std::string& name, int seeds) {
+    std::vector<campaign_run> runs;
+    const bool smoke = name == "smoke";
+    if (!smoke && name != "full") return runs;
+    if (seeds <= 0) seeds = smoke ? 1 : 3;
+    const uint64_t first_seed = smoke ? 3 : 11;
+    const auto add = [&](const plan_entry& e, uint64_t seed) {
+        campaign_run r;
+        r.index = static_cast<int>(runs.size());
+        r.fault = e.fault ? e.fault : "";
+        r.seed = seed;
+        r.frames = e.frames;
+        r.retry_limit = e.retry_limit;
+        if (e.settings) r.settings = spec_words(e.settings);
+        runs.push_back(r);
+    };
+    if (smoke) {
+        for (int s = 0; s < 2 * seeds; ++s) add({nullptr, 8, 8}, first_seed + s);
+        for (const plan_entry& e : smoke_faults)
+            for (int s = 0; s < seeds; ++s) add(e, first_seed + s);
+    } else {
+        for (int s = 0; s < full_clean_runs; ++s) add({nullptr, full_clean_frames, 8}, 100 + s);
+        for (const plan_entry& e : full_faults)
+            for (int s = 0; s < seeds; ++s) add(e, first_seed + s);
+    }
+    return runs;
+}
+
+std::vector<campaign_run> shard_of(const std::vector<campaign_run>& runs, int shard, int shards) {
+    std::vector<campaign_run> out;
+    for (const campaign_run& r : runs)
+        if (r.index % shards == shard - 1) out.push_back(r);
+    return out;
+}
+
+}  // namespace faults
