@@ -47,8 +47,9 @@ module async_fifo #(
     endfunction
 
     // Bit i of the binary value is the XOR of Gray bits i..AW: a prefix XOR
-    // in log2(AW+1) shift steps (a bit-serial loop would cost a simulator
-    // one dependent step per bit on every read-side edge; same logic).
+    // in log2(AW+1) shift steps. The same function as a bit-serial chain,
+    // with a few more gates and fewer levels; a simulator evaluating it on
+    // every read-side edge no longer walks AW dependent steps.
     function automatic logic [AW:0] gray2bin(input logic [AW:0] g);
         logic [AW:0] b;
         b = g;
