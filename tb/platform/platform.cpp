@@ -162,7 +162,7 @@ void platform_top::run() {
     const auto wall0 = std::chrono::steady_clock::now();
     m_end_tick = m_config.period * m_config.frames;
     if (!m_progress) {
-        sc_core::sc_start(simtime::sc_time_of(m_end_tick) - sc_core::sc_time_stamp());
+        advance_to(m_end_tick);
     } else {
         for (int done = 1; done <= m_config.frames; ++done) {
             advance_to(m_config.period * done);

@@ -20,7 +20,6 @@ namespace faults {
 namespace {
 
 constexpr simtime::ticks ticks_per_ms = 1000000 * simtime::ticks_per_ns;
-constexpr simtime::ticks pause_step = snapshot_pause_step;
 
 // One `stereosim run` parsed into its own run command and extensions.
 struct parsed_run {
@@ -73,7 +72,7 @@ due snapshot_due(const snapshot_trigger& t, const platform::platform_top& top, s
     bool take = false;
     if (t.before_tick >= 0) {
         if (now > t.before_tick) return due::missed;
-        take = now + pause_step > t.before_tick;
+        take = now + snapshot_pause_step > t.before_tick;
     }
     for (const snapshot_trigger::sensor_frame& f : t.frames) {
         const auto& truth = top.cycle_island().sensor(f.camera).truth();
@@ -210,7 +209,7 @@ int fork_at_snapshots(const std::vector<snapshot_member>& members, const std::st
                 it = pending.erase(it);
             }
             if (pending.empty()) return 0;
-            now = std::min(end, now + pause_step);
+            now = std::min(end, now + snapshot_pause_step);
             top.run_until(now);
         }
     } catch (const std::exception& e) {
