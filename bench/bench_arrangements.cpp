@@ -38,7 +38,7 @@
 // verilated.h, seeing SystemC, expects sc_time_stamp in the global namespace.
 using sc_core::sc_time_stamp;
 #include "Vcard.h"
-#include "tb/app/output/vcd_writer.h"
+#include "tb/app/output/waves_writer.h"
 #include "tb/platform/platform.h"
 #include "tests/rtl/card_bench.h"
 #include "tests/rtl/icarus/card_stimulus.h"
@@ -76,8 +76,8 @@ run_time run_in_child(platform::arrangement_kind arrangement, int frames, bool v
         config.frames = frames;
         config.hash_pins = false;
         const platform::tick_window window{49 * ticks_per_ms, 50 * ticks_per_ms};
-        output::vcd_writer writer(window);
-        const std::string vcd = "/tmp/bench_arrangements_" + std::to_string(getpid()) + ".vcd";
+        output::waves_writer writer(output::waves_format::fst, window);
+        const std::string vcd = "/tmp/bench_arrangements_" + std::to_string(getpid()) + ".fst";
         if (vcd_window) {
             if (!writer.open(vcd)) _exit(4);
             config.trace = &writer;

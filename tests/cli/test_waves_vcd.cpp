@@ -391,7 +391,10 @@ TEST(waves_vcd, committed_template_matches_the_writer) {
     for (int i = 0; i < platform::trace_pin_count; ++i)
         vcd.declare(platform::trace_pin_signal(static_cast<platform::trace_pin>(i)));
     vcd.declare_fault_marker();  // as the VCD header does
-    const std::string text = output::gtkw_text("stereosim.vcd", vcd.signals(), 0, 10 * 18000);
+    std::vector<output::waves_writer::signal> signals;
+    for (const output::vcd_writer::signal& s : vcd.signals())
+        signals.push_back({s.info, s.included, 0, s.full_name});
+    const std::string text = output::gtkw_text("stereosim.vcd", signals, 0, 10 * 18000);
     EXPECT_EQ(read_text(std::string(STEREOSIM_SOURCE_DIR) + "/waves/stereosim.gtkw"), text);
 }
 

@@ -33,7 +33,7 @@
 #include <vector>
 
 #include "model/c6416/dsk_profile.h"
-#include "tb/app/output/vcd_writer.h"
+#include "tb/app/output/waves_writer.h"
 #include "tb/platform/budget.h"
 #include "tb/platform/platform.h"
 #include "tb/platform/report.h"
@@ -69,11 +69,12 @@ std::string normalise(const std::string& report) {
     return out;
 }
 
-// `vcd`: where the window's VCD goes (tb/app/output's writer, as --vcd writes it).
+// `vcd`: where the window's VCD goes (tb/app/output's writer, as --waves vcd writes it:
+// the traced card's whole hierarchy and the pin trace).
 digest simulate(platform::platform_config config, simtime::ticks window_from,
                 simtime::ticks window_to, const std::string& vcd) {
     const platform::tick_window window{window_from, window_to};
-    output::vcd_writer writer(window);
+    output::waves_writer writer(output::waves_format::vcd, window);
     if (!writer.open(vcd)) _exit(4);
     config.trace = &writer;
     config.trace_window = window;

@@ -79,6 +79,7 @@ std::vector<translate_filter> translate_filters() {
         std::string t = "# card register on CE2: word index EA[7:2] (docs/card-registers.md)\n";
         for (const named_value& r : card_registers)
             t += std::to_string(r.value / 4) + " " + r.name + "\n";
+        t += "63 (no access)\n";  // released_value(): CE2 is high
         filters.push_back({"card_register.txt", t});
     }
     {
@@ -160,14 +161,15 @@ std::string wave_group_of(const platform::trace_signal& s) {
     return "firmware stage and state";
 }
 
-std::string gtkw_text(const std::string& vcd_file, const std::vector<vcd_writer::signal>& signals,
-                      simtime::ticks from, simtime::ticks span) {
+std::string gtkw_text(const std::string& dump_file,
+                      const std::vector<waves_writer::signal>& signals, simtime::ticks from,
+                      simtime::ticks span) {
     std::string t;
     t += "[*]\n[*] stereosim: one run's waveforms (docs/waveforms.md); paths are relative\n[*]\n";
     // GTKWave resolves a relative [dumpfile] through [savefile] (both in the
     // same folder), whatever the current directory; filters likewise.
-    t += "[dumpfile] \"" + vcd_file + "\"\n";
-    t += "[savefile] \"" + vcd_file.substr(0, vcd_file.rfind('.')) + ".gtkw\"\n";
+    t += "[dumpfile] \"" + dump_file + "\"\n";
+    t += "[savefile] \"" + dump_file.substr(0, dump_file.rfind('.')) + ".gtkw\"\n";
     t += "[timestart] " + std::to_string(simtime::to_fs(from)) + "\n";
     t += "[size] 1400 860\n[pos] -1 -1\n";
     // Zoom: measured with GTKWave 3.3.118 on a 1 fs timescale, a zoom z shows
@@ -178,19 +180,20 @@ std::string gtkw_text(const std::string& vcd_file, const std::vector<vcd_writer:
                   static_cast<long long>(simtime::to_fs(from)));
     t += zoom;
     t += " -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1\n";
-    t += "[treeopen] platform.\n[sst_width] 200\n[signals_width] 300\n[sst_expanded] 1\n"
+    t += "[treeopen] platform.\n[treeopen] platform.card.\n[sst_width] 200\n[signals_width] "
+         "300\n[sst_expanded] 1\n"
          "[sst_vpaned_height] 200\n";
     int next_filter = 1;
     std::vector<std::pair<std::string, int>> filter_numbers;
     for (const char* group : group_order) {
         bool any = false;
-        for (const vcd_writer::signal& s : signals)
+        for (const waves_writer::signal& s : signals)
             any = any || (s.included && wave_group_of(s.info) == group);
         if (!any) continue;
         t += "@800200\n-";
         t += group;
         t += "\n";
-        for (const vcd_writer::signal& s : signals) {
+        for (const waves_writer::signal& s : signals) {
             if (!s.included || wave_group_of(s.info) != group) continue;
             const char* filter = filter_file_of(s.info);
             if (filter) {
@@ -221,12 +224,13 @@ std::string gtkw_text(const std::string& vcd_file, const std::vector<vcd_writer:
 }
 
 bool write_gtkw(const std::function<std::string(const std::string&)>& path_of,
-                const std::string& name, const vcd_writer& vcd, simtime::ticks view_from,
+                const std::string& name, const std::string& dump_file,
+                const std::vector<waves_writer::signal>& signals, simtime::ticks view_from,
                 simtime::ticks view_span, std::string* error) {
     for (const translate_filter& f : translate_filters())
         if (!write_file(path_of(f.file_name), f.text, error)) return false;
-    return write_file(path_of(name + ".gtkw"),
-                      gtkw_text(name + ".vcd", vcd.signals(), view_from, view_span), error);
+    return write_file(path_of(name + ".gtkw"), gtkw_text(dump_file, signals, view_from, view_span),
+                      error);
 }
 
 }  // namespace output

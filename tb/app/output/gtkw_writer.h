@@ -1,13 +1,13 @@
 // GTKWave save file and translate filters of a run's VCD (docs/waveforms.md).
 //
-// A run with --vcd writes into DIR/waves/: NAME.vcd, NAME.gtkw and the
+// A run with --waves writes into DIR/waves/: NAME.fst or NAME.vcd, NAME.gtkw and the
 // translate filter files (*.txt) the save file names. Every path in the save
-// file is RELATIVE (the VCD and the filters beside it), so the folder can be
+// file is RELATIVE (the waveform and the filters beside it), so the folder can be
 // moved or archived and still opens with `gtkwave DIR/waves/NAME.gtkw`.
 //
 // The save file shows the signals in named groups: sensor L, sensor R, sync
 // check, FIFOs, EMIF, interrupts, firmware stage and state, faults (the
-// fault marker, vcd_writer.h). Enumerated signals are shown in decimal
+// fault marker, waves_writer.h). Enumerated signals are shown in decimal
 // through a translate filter ("value name" lines, decimal so no leading-zero
 // ambiguity): the card's OE controller state, the sync check's causes and
 // verdict, the card register an access on CE2 names, the interrupt the CPU
@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "tb/app/output/vcd_writer.h"
+#include "tb/app/output/waves_writer.h"
 #include "tb/platform/island/pin_trace.h"
 
 namespace output {
@@ -41,16 +41,19 @@ const char* filter_file_of(const platform::trace_signal& s);
 // The save-file group a signal belongs to (one of the eight names above).
 std::string wave_group_of(const platform::trace_signal& s);
 
-// The save file's text for `vcd_file` (a name in the same folder) holding
+// The save file's text for `dump_file` (a name in the same folder) holding
 // `signals` (only the included ones are named); the view starts at `from`
-// and spans `span` ticks.
-std::string gtkw_text(const std::string& vcd_file, const std::vector<vcd_writer::signal>& signals,
-                      simtime::ticks from, simtime::ticks span);
+// and spans `span` ticks. The card's RTL hierarchy is in GTKWave's tree
+// (platform.card, opened), not in the groups.
+std::string gtkw_text(const std::string& dump_file,
+                      const std::vector<waves_writer::signal>& signals, simtime::ticks from,
+                      simtime::ticks span);
 
 // Writes NAME.gtkw and the filter files: each file F to path_of(F) (a .part
 // name first, then renamed). False with *error set on failure.
 bool write_gtkw(const std::function<std::string(const std::string&)>& path_of,
-                const std::string& name, const vcd_writer& vcd, simtime::ticks view_from,
+                const std::string& name, const std::string& dump_file,
+                const std::vector<waves_writer::signal>& signals, simtime::ticks view_from,
                 simtime::ticks view_span, std::string* error);
 
 }  // namespace output

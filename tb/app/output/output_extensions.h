@@ -1,8 +1,11 @@
 // The stereosim run extensions of tb/app/output (docs/waveforms.md), plugged
 // into `stereosim run` through tb/app/cli/run_outputs.h:
-//   waveforms  --vcd [--vcd-from MS --vcd-to MS] [--vcd-scope LIST]: a pin
-//              trace of the window into DIR/waves/<scenario>.vcd, its GTKWave
-//              save file and translate filters beside it;
+//   waveforms  --waves fst|vcd [--waves-from MS --waves-to MS] [--waves-scope
+//              LIST]: the card's whole RTL hierarchy and the pin trace of the
+//              window into DIR/waves/<scenario>.fst|vcd through Verilator's
+//              writers (waves_writer.h); --vcd [--vcd-from ...]: the pin trace
+//              alone through the hand-written VCD writer (vcd_writer.h); each
+//              with its GTKWave save file and translate filters beside it;
 //   run files  with --out DIR: trajectory.gp + trajectory.png (gnuplot) and
 //              timeline.json (Chrome trace events); with --timeline-csv also
 //              timeline.csv (every timeline event, one row each).
@@ -14,6 +17,7 @@
 
 namespace output {
 
+std::unique_ptr<cli::run_extension> make_vcd_output();
 std::unique_ptr<cli::run_extension> make_waveform_output();
 std::unique_ptr<cli::run_extension> make_plot_and_trace_output();
 

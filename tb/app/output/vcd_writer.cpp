@@ -10,42 +10,6 @@ namespace output {
 using platform::trace_group;
 using simtime::ticks;
 
-unsigned trace_group_of_scope(const std::string& scope) {
-    if (scope.rfind("sensor", 0) == 0) return static_cast<unsigned>(trace_group::sensors);
-    if (scope == "card" || scope.rfind("card.", 0) == 0)
-        return static_cast<unsigned>(trace_group::card);
-    if (scope == "emif" || scope.rfind("emif.", 0) == 0)
-        return static_cast<unsigned>(trace_group::emif);
-    return static_cast<unsigned>(trace_group::firmware);  // interrupts, firmware
-}
-
-bool parse_trace_groups(const std::string& list, unsigned* groups, std::string* bad) {
-    unsigned g = 0;
-    size_t begin = 0;
-    while (begin <= list.size()) {
-        size_t end = list.find(',', begin);
-        if (end == std::string::npos) end = list.size();
-        const std::string name = list.substr(begin, end - begin);
-        if (name == "sensors") {
-            g |= static_cast<unsigned>(trace_group::sensors);
-        } else if (name == "card") {
-            g |= static_cast<unsigned>(trace_group::card);
-        } else if (name == "emif") {
-            g |= static_cast<unsigned>(trace_group::emif);
-        } else if (name == "firmware") {
-            g |= static_cast<unsigned>(trace_group::firmware);
-        } else if (name == "all") {
-            g |= platform::trace_all_groups;
-        } else {
-            if (bad) *bad = name;
-            return false;
-        }
-        begin = end + 1;
-    }
-    *groups = g;
-    return g != 0;
-}
-
 namespace {
 
 // VCD identifier codes: printable ASCII 33..126, shortest first.
@@ -69,16 +33,6 @@ void append_u64(std::string& out, uint64_t v) {
 }
 
 }  // namespace
-
-const platform::trace_signal& fault_marker_signal() {
-    static const platform::trace_signal marker{"faults", "kind", 8, platform::trace_format::bits};
-    return marker;
-}
-
-bool is_fault_marker(const platform::trace_signal& s) {
-    const platform::trace_signal& m = fault_marker_signal();
-    return s.scope == m.scope && s.name == m.name;
-}
 
 vcd_writer::vcd_writer(platform::tick_window window, unsigned groups)
     : m_window(window), m_groups(groups) {

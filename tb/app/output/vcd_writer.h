@@ -32,24 +32,14 @@
 #include <string>
 #include <vector>
 
+#include "tb/app/output/fault_markers.h"
+#include "tb/app/output/waves_writer.h"
 #include "tb/platform/island/pin_trace.h"
 
 namespace output {
 
-// --vcd-scope groups (platform::trace_group bits) of a signal's scope.
-unsigned trace_group_of_scope(const std::string& scope);
-// "sensors,card" -> bits; false on an unknown name (*bad names it).
-bool parse_trace_groups(const std::string& list, unsigned* groups, std::string* bad);
-
-// The fault marker signal every VCD declares after the traced ones.
-const platform::trace_signal& fault_marker_signal();
-bool is_fault_marker(const platform::trace_signal& s);
-
-// A fault's onset and the marker's value from it (1 + faults::fault_type).
-struct fault_marker {
-    simtime::ticks tick;
-    uint8_t value;
-};
+// (The scope groups, the fault marker signal and fault_marker are shared
+// with --waves: waves_writer.h, fault_markers.h.)
 
 class vcd_writer final : public platform::pin_trace {
   public:

@@ -15,8 +15,9 @@
 //      at or after `window.to`.
 //   3. Report a value only when it changed (a repeat is harmless, a sink
 //      drops it). release() says nobody drives the signal (VCD 'z').
-//   4. finish() once, after the last change (the run ended or the window
-//      closed).
+//   4. seal_before(t) whenever the card may change at t (pin_tracer does it
+//      before each traced edge and at the window's end), then finish() once,
+//      after the last change (the window closed or the run ended).
 // Cost: a source with no sink attached does nothing per edge beyond a null
 // pointer test (measured in docs/waveforms.md). With a sink, only the edges
 // from a short warm-up before `window.from` (pin_tracer.h) to `window.to`
@@ -30,6 +31,8 @@
 #include "model/time/ticks.h"
 
 namespace platform {
+
+class card_waves;
 
 using trace_id = uint32_t;
 
@@ -66,7 +69,13 @@ class pin_trace {
     virtual trace_id declare(const trace_signal& signal) = 0;
     virtual void change(simtime::ticks t, trace_id id, uint64_t value) = 0;
     virtual void release(simtime::ticks t, trace_id id) = 0;
+    // Every change before tick t has been reported and the card has not
+    // moved past them: a sink that reads the card itself (card_file)
+    // writes those times now, before the card's next edge at t.
+    virtual void seal_before(simtime::ticks /*t*/) {}
     virtual void finish(simtime::ticks end) = 0;
+    // The file a traced build of the card writes into, or null (card_waves.h).
+    virtual card_waves* card_file() { return nullptr; }
 };
 
 // The firmware stage signal's value when no stage runs.

@@ -101,6 +101,18 @@ void pin_tracer::flush(ticks upto) {
     }
 }
 
+void pin_tracer::before_card_edge(ticks t) {
+    if (!m_sink || m_finished || t < m_edges_from) return;
+    if (t >= m_window.to) {
+        finish(m_window.to);
+        return;
+    }
+    // (A pin-level run may have placed firmware events before t since.)
+    firmware_up_to(t - 1);
+    flush(t);
+    m_sink->seal_before(t);
+}
+
 void pin_tracer::sensor_edge(int c, ticks rise, uint16_t bits, ticks fall) {
     const int base = sensor_base(c);
     const sensor::pin_word word{bits};

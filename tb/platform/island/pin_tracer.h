@@ -44,6 +44,11 @@ class pin_tracer {
     // A change at a later tick than the edge being stepped, held until flush.
     void defer(simtime::ticks t, trace_pin pin, uint64_t value);
     void flush(simtime::ticks upto);  // deferred changes at ticks <= upto, in tick order
+    // Before an edge at tick t that may change the card: every change before
+    // t reaches the sink and is sealed (pin_trace::seal_before), so a sink
+    // that reads the card (--waves) writes those times with the card's
+    // values there; at the window's end the sink finishes.
+    void before_card_edge(simtime::ticks t);
 
     // A sensor's rising edge at `rise` and the word it drives from `fall`.
     void sensor_edge(int camera, simtime::ticks rise, uint16_t bits, simtime::ticks fall);

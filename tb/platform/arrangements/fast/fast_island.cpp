@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <type_traits>
 
 #include "model/emif/ardy_glue.h"
 #include "model/sensor/sensor_core.h"
@@ -13,7 +14,14 @@
 using sc_core::sc_time_stamp;
 #include "Vcard.h"
 #include "Vcard___024root.h"
+#include "Vcard_fst.h"
+#include "Vcard_fst___024root.h"
+#include "Vcard_vcd.h"
+#include "Vcard_vcd___024root.h"
+#include "tb/platform/island/card_waves.h"
 #include "verilated.h"
+#include "verilated_fst_c.h"
+#include "verilated_vcd_c.h"
 
 namespace fast {
 
@@ -33,7 +41,8 @@ bool drive(Port& port, Value value) {
 
 // The card's EMIF inputs (CE2/CE3, strobes, EA, BE, ED) as the engine drives
 // them; true if any of them changed.
-bool drive_card_emif_inputs(Vcard& d, const emif::emif_pins& p) {
+template <class card_model>
+bool drive_card_emif_inputs(card_model& d, const emif::emif_pins& p) {
     bool changed = drive(d.ce2_n, p.ce_n[2]);
     changed |= drive(d.ce3_n, p.ce_n[3]);
     changed |= drive(d.aoe_n, p.aoe_n);
@@ -52,14 +61,28 @@ bool drive_card_emif_inputs(Vcard& d, const emif::emif_pins& p) {
 // its ico and nba regions alike), so record it without one. The names are
 // Verilator 5's trigger bookkeeping: a later Verilator that renames them
 // fails to compile here rather than running wrong.
-void lower_clocks_without_eval(Vcard& d) {
+template <class card_model>
+void lower_clocks_without_eval(card_model& d) {
     d.pclk = 0;
     d.eclk = 0;
     d.rootp->__Vtrigrprev__TOP__pclk = 0;
     d.rootp->__Vtrigrprev__TOP__eclk = 0;
 }
 
-card_signals card_signals_of(const Vcard& d) {
+// One clock's fall the same way, at its own tick (a traced card, below).
+template <class card_model>
+void lower_clock_without_eval(card_model& d, bool eclk) {
+    if (eclk) {
+        d.eclk = 0;
+        d.rootp->__Vtrigrprev__TOP__eclk = 0;
+    } else {
+        d.pclk = 0;
+        d.rootp->__Vtrigrprev__TOP__pclk = 0;
+    }
+}
+
+template <class card_model>
+card_signals card_signals_of(const card_model& d) {
     card_signals s;
     s.sensor_oe = d.sensor_oe != 0;
     s.ext_int[0] = d.ext_int4 != 0;
@@ -75,11 +98,35 @@ card_signals card_signals_of(const Vcard& d) {
 }
 
 // The card's outputs as the pin hash packs them (pin_hash.h).
-uint64_t card_outputs_of(const Vcard& d) {
+template <class card_model>
+uint64_t card_outputs_of(const card_model& d) {
     return platform::pack_card_outputs(d.sensor_oe, d.ardy, d.ed_oe, d.ext_int4, d.ext_int5,
                                        d.ext_int6, d.ed_out);
 }
 
+// A traced build of the card (--waves) registers with the file's writer;
+// the untraced one (every other run) has nothing to register.
+template <class card_model>
+void trace_card_into(card_model& card, platform::card_waves* waves) {
+    if constexpr (std::is_same_v<card_model, Vcard_fst>) {
+        card.trace(waves->fst_writer(), platform::card_trace_levels);
+    } else if constexpr (std::is_same_v<card_model, Vcard_vcd>) {
+        card.trace(waves->vcd_writer(), platform::card_trace_levels);
+    }
+}
+
+// card_model: Vcard, or Vcard_fst / Vcard_vcd (the same RTL traced) when the
+// run writes waves.
+//
+// A traced card sees its inputs at their own ticks, as the pin-level
+// arrangement's does, so that its waveform is the pins' (docs/waveforms.md):
+// each clock falls at its falling half-edge and a sensor's word reaches the
+// card at the sensor's falling edge (pass_falls_before), and the edge's
+// settling eval runs with the clocks still high; each such tick gets an eval
+// of its own (the tracer sees only what an eval touched). None changes the
+// card's state: it has no negedge logic, reads its clocks only in its
+// triggers and registers its sensor pins at the pixel clock.
+template <class card_model>
 class fast_island final : public platform::island {
   public:
     SC_HAS_PROCESS(fast_island);
@@ -119,6 +166,8 @@ class fast_island final : public platform::island {
     bool eclk_outputs(ticks t, const emif::emif_inputs& in, bool trace);
     void advance_pclk(bool trace);
     void deliver_sensor_words();
+    // A traced card: the clock falls and sensor words before tick `limit`.
+    void pass_falls_before(ticks limit);
     void settle_card(ticks t, bool trace);
     void eval_card();
     void step_sensor(int camera, bool oe);
@@ -127,7 +176,7 @@ class fast_island final : public platform::island {
 
     emif::ardy_glue m_glue;  // the board between the card's ARDY and the DSP's
     std::unique_ptr<VerilatedContext> m_context;
-    std::unique_ptr<Vcard> m_card;
+    std::unique_ptr<card_model> m_card;
     std::unique_ptr<sensor::sensor_core> m_sensor[2];
     platform::pin_tracer& m_tracer;
     bool m_tracing;
@@ -139,18 +188,25 @@ class fast_island final : public platform::island {
     uint8_t m_irq = 0;  // EXT_INT4..6 as bits 0..2, as last stepped
     uint8_t m_irq_written = 0;
     bool m_inputs_changed = false;  // since the card's last eval
+    static constexpr bool traced = !std::is_same_v<card_model, Vcard>;
+    ticks m_clock_fall[2] = {-1, -1};  // a traced card's pending pclk / eclk fall
 };
 
-fast_island::fast_island(sc_core::sc_module_name name, const platform::island_config& config,
-                         sensor::frame_source& source, emif::emif_async_master& engine,
-                         platform::timeline& events)
+template <class card_model>
+fast_island<card_model>::fast_island(sc_core::sc_module_name name,
+                                     const platform::island_config& config,
+                                     sensor::frame_source& source, emif::emif_async_master& engine,
+                                     platform::timeline& events)
     : platform::island(name, config, engine, events, platform::event_order::appended),
       m_context(std::make_unique<VerilatedContext>()),
       m_tracer(m_observer.tracer()),
       m_tracing(m_tracer.active()),
       m_pclk(config.pclk),
       m_eclk(engine.config().eclk) {
-    m_card = std::make_unique<Vcard>(m_context.get(), "card");
+    platform::card_waves* waves = config.trace ? config.trace->card_file() : nullptr;
+    if (waves) m_context->traceEverOn(true);
+    m_card = std::make_unique<card_model>(m_context.get(), "card");
+    if (waves) trace_card_into(*m_card, waves);
     for (const emif::ardy_fault& f : config.ardy_faults) m_glue.add(f);
     for (int c = 0; c < 2; ++c) {
         m_sensor[c] = std::make_unique<sensor::sensor_core>(
@@ -167,8 +223,9 @@ fast_island::fast_island(sc_core::sc_module_name name, const platform::island_co
     SC_THREAD(run);
 }
 
-void fast_island::add_late_faults(const std::vector<sensor::fault> (&sensor_faults)[2],
-                                  const std::vector<emif::ardy_fault>& ardy_faults) {
+template <class card_model>
+void fast_island<card_model>::add_late_faults(const std::vector<sensor::fault> (&sensor_faults)[2],
+                                              const std::vector<emif::ardy_fault>& ardy_faults) {
     // Both the sensor core and the glue look their faults up lazily, at the
     // frame, line, pixel clock or bus edge where each may start.
     for (int c = 0; c < 2; ++c) {
@@ -183,8 +240,9 @@ void fast_island::add_late_faults(const std::vector<sensor::fault> (&sensor_faul
     }
 }
 
-void fast_island::reset_card() {
-    Vcard& d = *m_card;
+template <class card_model>
+void fast_island<card_model>::reset_card() {
+    card_model& d = *m_card;
     d.pclk = 0;
     d.eclk = 0;
     d.rst_n = 1;
@@ -200,7 +258,8 @@ void fast_island::reset_card() {
 }
 
 // ---- the SystemC side ------------------------------------------------------------------------
-void fast_island::run() {
+template <class card_model>
+void fast_island<card_model>::run() {
     const sc_core::sc_time quantum = simtime::sc_time_of(m_config.quantum);
     for (;;) {
         // Everything else at this time acts first: its bus requests are then
@@ -233,7 +292,8 @@ void fast_island::run() {
 }
 
 // ---- the C++ island --------------------------------------------------------------------------
-ticks fast_island::advance(ticks limit, bool* stopped) {
+template <class card_model>
+ticks fast_island<card_model>::advance(ticks limit, bool* stopped) {
     // The firmware's events up to now come before any edge after now.
     if (m_tracing) m_tracer.firmware_up_to(INT64_MAX);
     for (;;) {
@@ -241,7 +301,8 @@ ticks fast_island::advance(ticks limit, bool* stopped) {
         if (e.t > limit) break;
         const bool trace = m_tracing && m_tracer.edges_at(e.t);
         m_observer.close_periods_through(e.t);
-        if (trace) m_tracer.flush(e.t);
+        if constexpr (traced) pass_falls_before(e.t);
+        if (m_tracing) m_tracer.before_card_edge(e.t);
 
         const emif::emif_inputs in = sample_bus(e);
         clock_rising(e, trace);
@@ -257,6 +318,7 @@ ticks fast_island::advance(ticks limit, bool* stopped) {
             break;
         }
     }
+    if constexpr (traced) pass_falls_before((*stopped ? m_last_tick : limit) + 1);
     // Every change still to come is at a later tick (a sensor's word at its
     // fall after a later rise, other pins at later edges).
     m_observer.flush_hash_before(m_last_tick + 1);
@@ -265,7 +327,8 @@ ticks fast_island::advance(ticks limit, bool* stopped) {
     return m_last_tick;
 }
 
-fast_island::edges fast_island::next_edges() const {
+template <class card_model>
+typename fast_island<card_model>::edges fast_island<card_model>::next_edges() const {
     const ticks tp = m_pclk.tick();
     const ticks te = m_eclk.tick();
     const ticks tl = m_sensor[0]->next_rise_tick();
@@ -281,10 +344,11 @@ fast_island::edges fast_island::next_edges() const {
 
 // The engine's ED and ARDY inputs before an ECLK edge: ARDY through the
 // board glue (emif-wait, model/emif/ardy_glue.h), ED from the card.
-emif::emif_inputs fast_island::sample_bus(const edges& e) {
+template <class card_model>
+emif::emif_inputs fast_island<card_model>::sample_bus(const edges& e) {
     emif::emif_inputs in;
     if (!e.eclk) return in;
-    const Vcard& d = *m_card;
+    const card_model& d = *m_card;
     const emif::emif_pins& before = m_engine.pins();
     in.ardy = m_glue.bus_ardy(before, d.ardy != 0, m_engine);
     in.ed_in = platform::bus_ed_from_card(before.active_ce(), d.ed_oe != 0, d.ed_out);
@@ -293,8 +357,9 @@ emif::emif_inputs fast_island::sample_bus(const edges& e) {
 }
 
 // The card's flops of both domains sample in one eval; the sensors sample OE.
-void fast_island::clock_rising(const edges& e, bool trace) {
-    Vcard& d = *m_card;
+template <class card_model>
+void fast_island<card_model>::clock_rising(const edges& e, bool trace) {
+    card_model& d = *m_card;
     const bool oe_before = d.sensor_oe != 0;
     if (e.pclk) d.pclk = 1;
     if (e.eclk) d.eclk = 1;
@@ -306,8 +371,9 @@ void fast_island::clock_rising(const edges& e, bool trace) {
     }
 }
 
-void fast_island::card_pclk_outputs(ticks t) {
-    const Vcard& d = *m_card;
+template <class card_model>
+void fast_island<card_model>::card_pclk_outputs(ticks t) {
+    const card_model& d = *m_card;
     const auto& root = *d.rootp;
     const uint32_t level[2] = {d.dbg_fifo_level_l, d.dbg_fifo_level_r};
     const bool overflow[2] = {root.card_top__DOT__l_overflow != 0,
@@ -317,8 +383,9 @@ void fast_island::card_pclk_outputs(ticks t) {
 
 // Interrupt pins, the engine's step, the card's new EMIF inputs; true to
 // stop after this edge.
-bool fast_island::eclk_outputs(ticks t, const emif::emif_inputs& in, bool trace) {
-    Vcard& d = *m_card;
+template <class card_model>
+bool fast_island<card_model>::eclk_outputs(ticks t, const emif::emif_inputs& in, bool trace) {
+    card_model& d = *m_card;
     m_irq =
         static_cast<uint8_t>((d.ext_int4 ? 1 : 0) | (d.ext_int5 ? 2 : 0) | (d.ext_int6 ? 4 : 0));
     bool stop = m_observer.eclk_rise(t, m_irq);
@@ -328,6 +395,7 @@ bool fast_island::eclk_outputs(ticks t, const emif::emif_inputs& in, bool trace)
     m_inputs_changed |= drive_card_emif_inputs(d, p);
     m_observer.dsp_pins(t, p);
     m_eclk.advance();
+    if constexpr (traced) m_clock_fall[1] = m_eclk.tick();
     if (trace) {
         m_tracer.set(t, platform::trace_pin::eclkout, 1);
         m_tracer.defer(m_eclk.tick(), platform::trace_pin::eclkout, 0);
@@ -337,9 +405,11 @@ bool fast_island::eclk_outputs(ticks t, const emif::emif_inputs& in, bool trace)
     return stop;
 }
 
-void fast_island::advance_pclk(bool trace) {
+template <class card_model>
+void fast_island<card_model>::advance_pclk(bool trace) {
     const ticks t = m_pclk.tick();
     m_pclk.advance();
+    if constexpr (traced) m_clock_fall[0] = m_pclk.tick();
     if (trace) {
         m_tracer.set(t, platform::trace_pin::card_pclk, 1);
         m_tracer.defer(m_pclk.tick(), platform::trace_pin::card_pclk, 0);
@@ -349,7 +419,9 @@ void fast_island::advance_pclk(bool trace) {
 
 // A sensor word reaches the card's inputs if its falling edge comes before
 // the card's next rising edge (always, on the master clock).
-void fast_island::deliver_sensor_words() {
+template <class card_model>
+void fast_island<card_model>::deliver_sensor_words() {
+    if constexpr (traced) return;  // at their own ticks: pass_falls_before
     for (int c = 0; c < 2; ++c) {
         pending_word& w = m_pending[c];
         if (!w.applied && w.fall < m_pclk.tick()) {
@@ -360,9 +432,12 @@ void fast_island::deliver_sensor_words() {
 }
 
 // The falling half of the card's clocks: its combinational outputs settle.
-void fast_island::settle_card(ticks t, bool trace) {
-    Vcard& d = *m_card;
-    if (m_inputs_changed) {
+template <class card_model>
+void fast_island<card_model>::settle_card(ticks t, bool trace) {
+    card_model& d = *m_card;
+    if constexpr (traced) {
+        if (m_inputs_changed) eval_card();  // the clocks fall at their own ticks
+    } else if (m_inputs_changed) {
         d.pclk = 0;
         d.eclk = 0;
         eval_card();
@@ -373,13 +448,43 @@ void fast_island::settle_card(ticks t, bool trace) {
     if (trace) trace_card(t);
 }
 
-void fast_island::eval_card() {
+template <class card_model>
+void fast_island<card_model>::pass_falls_before(ticks limit) {
+    for (;;) {
+        ticks f = limit;
+        for (int k = 0; k < 2; ++k)
+            if (m_clock_fall[k] >= 0 && m_clock_fall[k] < f) f = m_clock_fall[k];
+        for (int c = 0; c < 2; ++c)
+            if (!m_pending[c].applied && m_pending[c].fall < f) f = m_pending[c].fall;
+        if (f >= limit) return;
+        // The card's values before f are written before it moves.
+        if (m_tracing) m_tracer.before_card_edge(f);
+        for (int k = 0; k < 2; ++k) {
+            if (m_clock_fall[k] != f) continue;
+            lower_clock_without_eval(*m_card, k == 1);
+            m_clock_fall[k] = -1;
+        }
+        for (int c = 0; c < 2; ++c) {
+            pending_word& w = m_pending[c];
+            if (w.applied || w.fall != f) continue;
+            apply_sensor_word(c, w);
+            w.applied = true;
+        }
+        // Verilator's tracer compares only what an eval marked active: an
+        // eval with no clock rising, which changes no state (not counted).
+        m_card->eval();
+    }
+}
+
+template <class card_model>
+void fast_island<card_model>::eval_card() {
     m_card->eval();
     m_inputs_changed = false;
     ++m_observer.stats().card_evals;
 }
 
-void fast_island::step_sensor(int c, bool oe) {
+template <class card_model>
+void fast_island<card_model>::step_sensor(int c, bool oe) {
     sensor::sensor_core& s = *m_sensor[c];
     const uint16_t bits = s.step(oe).bits;
     pending_word& w = m_pending[c];
@@ -389,8 +494,9 @@ void fast_island::step_sensor(int c, bool oe) {
     m_observer.sensor_word(c, bits, w.fall);
 }
 
-void fast_island::apply_sensor_word(int c, const pending_word& w) {
-    Vcard& d = *m_card;
+template <class card_model>
+void fast_island<card_model>::apply_sensor_word(int c, const pending_word& w) {
+    card_model& d = *m_card;
     const sensor::pin_word word{w.bits};
     const uint8_t data = m_config.wire.on_wire(c, word.data(), w.fall);
     // No eval for a new word: the card registers its sensor inputs at its
@@ -410,8 +516,9 @@ void fast_island::apply_sensor_word(int c, const pending_word& w) {
     }
 }
 
-void fast_island::trace_card(ticks t) {
-    const Vcard& d = *m_card;
+template <class card_model>
+void fast_island<card_model>::trace_card(ticks t) {
+    const card_model& d = *m_card;
     const emif::emif_pins& p = m_engine.pins();
     m_tracer.card(t, card_signals_of(d), m_glue.bus_ardy(p, d.ardy != 0, m_engine), p);
 }
@@ -423,7 +530,12 @@ std::unique_ptr<platform::island> make_fast_island(const char* name,
                                                    sensor::frame_source& source,
                                                    emif::emif_async_master& engine,
                                                    platform::timeline& events) {
-    return std::make_unique<fast_island>(name, config, source, engine, events);
+    platform::card_waves* waves = config.trace ? config.trace->card_file() : nullptr;
+    if (waves && waves->fst_writer())
+        return std::make_unique<fast_island<Vcard_fst>>(name, config, source, engine, events);
+    if (waves && waves->vcd_writer())
+        return std::make_unique<fast_island<Vcard_vcd>>(name, config, source, engine, events);
+    return std::make_unique<fast_island<Vcard>>(name, config, source, engine, events);
 }
 
 }  // namespace fast

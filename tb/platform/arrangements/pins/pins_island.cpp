@@ -4,6 +4,7 @@
 #include <chrono>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "model/emif/ardy_glue.h"
 #include "model/emif/emif_pins_sc.h"
@@ -15,6 +16,13 @@
 using sc_core::sc_time_stamp;
 #include "Vcard_sc.h"
 #include "Vcard_sc___024root.h"
+#include "Vcard_sc_fst.h"
+#include "Vcard_sc_fst___024root.h"
+#include "Vcard_sc_vcd.h"
+#include "Vcard_sc_vcd___024root.h"
+#include "tb/platform/island/card_waves.h"
+#include "verilated_fst_c.h"
+#include "verilated_vcd_c.h"
 
 namespace pins {
 
@@ -47,12 +55,27 @@ struct sensor_wires {
     }
 };
 
+// A traced build of the card (--waves) registers with the file's writer.
+template <class card_model>
+void trace_card_into(card_model& card, platform::card_waves* waves) {
+    if constexpr (std::is_same_v<card_model, Vcard_sc_fst>) {
+        card.trace(waves->fst_writer(), platform::card_trace_levels);
+    } else if constexpr (std::is_same_v<card_model, Vcard_sc_vcd>) {
+        card.trace(waves->vcd_writer(), platform::card_trace_levels);
+    }
+}
+
+// card_model: Vcard_sc, or Vcard_sc_fst / Vcard_sc_vcd (the same RTL traced)
+// when the run writes waves. The card is a top-level module named "card"
+// (made before the island, make_pins_island): its waveform scope is then
+// platform.card, as the fast island's.
+template <class card_model>
 class pins_island : public platform::island {
   public:
     SC_HAS_PROCESS(pins_island);
-    pins_island(sc_core::sc_module_name name, const platform::island_config& config,
-                sensor::frame_source& source, emif::emif_async_master& engine,
-                platform::timeline& events)
+    pins_island(sc_core::sc_module_name name, std::unique_ptr<card_model> card,
+                const platform::island_config& config, sensor::frame_source& source,
+                emif::emif_async_master& engine, platform::timeline& events)
         : platform::island(name, config, engine, events, platform::event_order::placed),
           m_tracer(m_observer.tracer()),
           m_mclk("mclk"),
@@ -74,7 +97,8 @@ class pins_island : public platform::island {
           m_bus_ed("bus_ed"),
           m_bus_ardy("bus_ardy"),
           m_glue_edges("glue_edges"),
-          m_fifo_level{sig_u32("fifo_level_l"), sig_u32("fifo_level_r")} {
+          m_fifo_level{sig_u32("fifo_level_l"), sig_u32("fifo_level_r")},
+          m_card(std::move(card)) {
         m_rst_n.write(true);
         for (int c = 0; c < 2; ++c) {
             for (const sensor::fault& f : config.faults[c]) {
@@ -85,6 +109,12 @@ class pins_island : public platform::island {
         }
         build(source);
         m_tracer.begin(engine.pins());
+    }
+
+    // A --sc model registers with a trace file only after elaboration.
+    void start_of_simulation() override {
+        if (platform::card_waves* waves = m_config.trace ? m_config.trace->card_file() : nullptr)
+            trace_card_into(*m_card, waves);
     }
 
     ~pins_island() override {
@@ -98,7 +128,7 @@ class pins_island : public platform::island {
         throw std::logic_error("faults added to a running island need the fast arrangement");
     }
     void finish() override {
-        if (m_pending_tick >= 0) observe(m_pending_tick);
+        if (m_pending_tick >= 0) observe(m_pending_tick, m_config.end + 1);
         m_pending_tick = -1;
         // sc_start(T) stops before the processes of time T run, while the
         // fast island steps its edges up to and including T: account for
@@ -176,8 +206,7 @@ class pins_island : public platform::island {
     // The card's pins, the sensors' DATA through the wire fault where one is modelled.
     void build_card() {
         const platform::island_config& config = m_config;
-        m_card = std::make_unique<Vcard_sc>("card");
-        Vcard_sc& d = *m_card;
+        card_model& d = *m_card;
         d.rst_n.bind(m_rst_n);
         d.pclk.bind(m_mclk);
         d.sensor_oe.bind(m_oe);
@@ -296,8 +325,9 @@ class pins_island : public platform::island {
             const sc_core::sc_time at = simtime::sc_time_of(t);
             const sc_core::sc_time now = sc_core::sc_time_stamp();
             if (at > now) sc_core::wait(at - now);
-            // Every delta of the previous tick has run: observe it.
-            if (m_pending_tick >= 0) observe(m_pending_tick);
+            // Every delta of the previous tick has run: observe it (the
+            // card moves again at t).
+            if (m_pending_tick >= 0) observe(m_pending_tick, t);
             m_observer.close_periods_through(t);
 
             m_edges = 0;
@@ -349,13 +379,15 @@ class pins_island : public platform::island {
         return p;
     }
 
-    // The settled pins of tick t, fed to the observer in the fast island's order.
-    void observe(ticks t) {
+    // The settled pins of tick t, fed to the observer in the fast island's
+    // order; the card's next edge is at `next`.
+    void observe(ticks t, ticks next) {
         card_signals settled = card();
         const emif::emif_pins dsp = dsp_pins();
         const bool trace = m_tracer.active() && m_tracer.edges_at(t);
         if (trace || (m_edges & pclk_rise)) platform::read_card_internals(*m_card, &settled);
         if (trace) trace_tick(t, settled, dsp);
+        if (m_tracer.active()) m_tracer.before_card_edge(next);
         if (m_edges & pclk_fall) {
             for (int c = 0; c < 2; ++c) m_observer.sensor_word(c, m_wires[c].word(), t);
         }
@@ -404,7 +436,7 @@ class pins_island : public platform::island {
 
     std::unique_ptr<sensor::sensor_sc> m_sensor_sc[2];
     std::unique_ptr<emif::emif_pins_sc> m_emif;
-    std::unique_ptr<Vcard_sc> m_card;
+    std::unique_ptr<card_model> m_card;
     int m_wire_camera = 0;
 
     simtime::clock_cursor m_pclk_cursor, m_eclk_cursor;  // the next half-edge of each clock
@@ -413,6 +445,16 @@ class pins_island : public platform::island {
     uint8_t m_edges = 0;        // which edges that tick had
 };
 
+template <class card_model>
+std::unique_ptr<platform::island> make(const char* name, const platform::island_config& config,
+                                       sensor::frame_source& source,
+                                       emif::emif_async_master& engine,
+                                       platform::timeline& events) {
+    auto card = std::make_unique<card_model>("card");
+    return std::make_unique<pins_island<card_model>>(name, std::move(card), config, source, engine,
+                                                     events);
+}
+
 }  // namespace
 
 std::unique_ptr<platform::island> make_pins_island(const char* name,
@@ -420,7 +462,13 @@ std::unique_ptr<platform::island> make_pins_island(const char* name,
                                                    sensor::frame_source& source,
                                                    emif::emif_async_master& engine,
                                                    platform::timeline& events) {
-    return std::make_unique<pins_island>(name, config, source, engine, events);
+    platform::card_waves* waves = config.trace ? config.trace->card_file() : nullptr;
+    if (waves) Verilated::traceEverOn(true);  // before the model exists
+    if (waves && waves->fst_writer())
+        return make<Vcard_sc_fst>(name, config, source, engine, events);
+    if (waves && waves->vcd_writer())
+        return make<Vcard_sc_vcd>(name, config, source, engine, events);
+    return make<Vcard_sc>(name, config, source, engine, events);
 }
 
 }  // namespace pins
