@@ -9,7 +9,6 @@ namespace app {
 std::vector<std::unique_ptr<cli::run_extension>> make_run_extensions() {
     std::vector<std::unique_ptr<cli::run_extension>> list;
     list.push_back(faults::make_fault_extension());  // first: its faults shape the config
-    list.push_back(output::make_vcd_output());
     list.push_back(output::make_waveform_output());
     list.push_back(output::make_plot_and_trace_output());
     list.push_back(cli::make_arrangement_option());  // last: it sees the pin trace the others attached

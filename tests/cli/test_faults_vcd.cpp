@@ -1,6 +1,6 @@
 // Every injected fault as a marker in the waveform (issue 7, docs/faults.md,
 // docs/waveforms.md): `stereosim run --fault ... --vcd` as a user runs it.
-// The VCD declares platform.faults.kind[7:0] (0 in $dumpvars); at each fault's
+// The VCD declares platform.faults.kind[7:0] (0 at the window start); at each fault's
 // onset inside the window it becomes 1 + faults::fault_type. Checked against
 // report.json's faults[].onset_ms (the same onset, a different output) and
 // against the faulted sensor's own pins in the same VCD: the onset is the
@@ -23,7 +23,7 @@
 #include "model/sensor/profile.h"
 #include "model/time/ticks.h"
 #include "tb/app/faults/fault_spec.h"
-#include "tb/app/output/vcd_writer.h"
+#include "tests/support/vcd_reader.h"
 
 namespace {
 
@@ -56,93 +56,10 @@ std::string read_text(const std::string& path) {
     return s.str();
 }
 
-// ---- a plain VCD reader: declarations, the $dumpvars values, every change --------------------
-struct vcd_change {
-    int64_t fs;
-    std::string value;  // "0", "1", "x", "z" or a vector's bits
-};
+using testsupport::vcd_change;
+using testsupport::vcd_file;
 
-struct vcd_file {
-    std::map<std::string, std::string> code_of;  // full name -> code
-    std::map<std::string, int> width_of;
-    std::map<std::string, std::string> dumped;               // code -> $dumpvars value
-    std::map<std::string, std::vector<vcd_change>> changes;  // by code, after $dumpvars
-    std::set<std::string> codes;                             // every code, to spot a duplicate
-    int64_t dumpvars_fs = -1, last_fs = -1;
-    bool times_increase = true;
-    bool codes_unique = true;
-
-    const std::vector<vcd_change>& of(const std::string& name) const {
-        static const std::vector<vcd_change> none;
-        const auto c = code_of.find(name);
-        if (c == code_of.end()) return none;
-        const auto h = changes.find(c->second);
-        return h == changes.end() ? none : h->second;
-    }
-};
-
-vcd_file parse_vcd(const std::string& path) {
-    vcd_file v;
-    std::ifstream in(path);
-    std::string token;
-    std::vector<std::string> scope;
-    while (in >> token) {
-        if (token == "$scope") {
-            std::string kind, name, end;
-            in >> kind >> name >> end;
-            scope.push_back(name);
-        } else if (token == "$upscope") {
-            std::string end;
-            in >> end;
-            scope.pop_back();
-        } else if (token == "$var") {
-            std::string kind, width, code, name, rest, full;
-            in >> kind >> width >> code >> name;
-            for (const std::string& s : scope) full += s + ".";
-            full += name;
-            while (in >> rest && rest != "$end") full += rest;
-            v.code_of[full] = code;
-            v.width_of[full] = std::stoi(width);
-            v.codes_unique = v.codes_unique && v.codes.insert(code).second;
-        } else if (token == "$enddefinitions") {
-            in >> token;
-            break;
-        } else if (token[0] == '$') {
-            while (in >> token && token != "$end") {
-            }
-        }
-    }
-    int64_t now = 0;
-    bool dumping = false;
-    while (in >> token) {
-        if (token[0] == '#') {
-            now = std::stoll(token.substr(1));
-            if (now < v.last_fs) v.times_increase = false;
-            v.last_fs = now;
-        } else if (token == "$dumpvars") {
-            dumping = true;
-            v.dumpvars_fs = now;
-        } else if (token == "$end") {
-            dumping = false;
-        } else {
-            std::string code, value;
-            if (token[0] == 'b') {
-                in >> code;
-                value = token.substr(1);
-            } else {
-                code = token.substr(1);
-                value = token.substr(0, 1);
-            }
-            if (dumping)
-                v.dumped[code] = value;
-            else
-                v.changes[code].push_back({now, value});
-        }
-    }
-    return v;
-}
-
-// 1 tick = 1/18 ns; the VCD holds each tick rounded to fs once (vcd_writer.h).
+// 1 tick = 1/18 ns; the VCD holds each tick rounded to fs once (waves_writer.h).
 ticks tick_of_fs(int64_t fs) {
     return (fs * simtime::ticks_per_ns + simtime::fs_per_ns / 2) / simtime::fs_per_ns;
 }
@@ -168,7 +85,7 @@ fault_run run_with(const std::string& faults, const std::string& window) {
     r.output = run_stereosim(
         "run --frames 4 " + faults + " --vcd " + window + " --quiet --out " + r.dir, &r.exit_code);
     r.report = nlohmann::json::parse(read_text(r.dir + "/report.json"), nullptr, false);
-    r.vcd = parse_vcd(r.dir + "/waves/default.vcd");
+    r.vcd = testsupport::read_vcd(r.dir + "/waves/default.vcd");
     return r;
 }
 
@@ -177,9 +94,13 @@ fault_run run_with(const std::string& faults, const std::string& window) {
 void expect_declared(const vcd_file& v, const std::string& initial) {
     ASSERT_TRUE(v.code_of.count(marker)) << "no " << marker;
     EXPECT_EQ(v.width_of.at(marker), 8);
-    EXPECT_TRUE(v.codes_unique);
-    ASSERT_TRUE(v.dumped.count(v.code_of.at(marker))) << marker << " not in $dumpvars";
-    EXPECT_EQ(v.dumped.at(v.code_of.at(marker)), initial);
+    // Its code is its own (Verilator's writer shares one code among signals
+    // that always hold the same value).
+    size_t sharing = 0;
+    for (const auto& named : v.code_of) sharing += named.second == v.code_of.at(marker);
+    EXPECT_EQ(sharing, 1u);
+    ASSERT_TRUE(v.first.count(v.code_of.at(marker))) << marker << " not at the window start";
+    EXPECT_EQ(v.first.at(v.code_of.at(marker)), initial);
     EXPECT_TRUE(v.times_increase);
 }
 
@@ -260,7 +181,7 @@ TEST(faults_vcd, clean_run_marker_stays_zero) {
     EXPECT_TRUE(r.report["faults"].empty());
     expect_declared(r.vcd, "0");
     EXPECT_TRUE(r.vcd.of(marker).empty());
-    std::printf("clean run: %s declared, 0 in $dumpvars, %zu changes\n", marker,
+    std::printf("clean run: %s declared, 0 at the window start, %zu changes\n", marker,
                 r.vcd.of(marker).size());
 }
 
@@ -276,44 +197,7 @@ TEST(faults_vcd, onset_before_the_window_is_no_change) {
     ASSERT_LT(onset_ms, 30.0);
     expect_declared(r.vcd, skew_code);  // also with a --vcd-scope without firmware
     EXPECT_TRUE(r.vcd.of(marker).empty());
-    std::printf("onset %.6f ms before the window 30..30.2 ms: $dumpvars %s, %zu changes\n",
-                onset_ms, r.vcd.dumped.at(r.vcd.code_of.at(marker)).c_str(),
+    std::printf("onset %.6f ms before the window 30..30.2 ms: window start %s, %zu changes\n",
+                onset_ms, r.vcd.first.at(r.vcd.code_of.at(marker)).c_str(),
                 r.vcd.of(marker).size());
-}
-
-// The merge itself on a small trace, times worked out by hand: onsets before
-// the window (the $dumpvars value), at its start, between two written times,
-// on a written time, two on one tick, and after the window.
-TEST(faults_vcd, merge_places_each_onset_at_its_tick) {
-    const std::string dir = temp_dir();
-    const platform::tick_window window{1000, 5000};
-    output::vcd_writer vcd(window);
-    const platform::trace_id clk = vcd.declare({"sensor_L", "PCLK", 1});
-    ASSERT_TRUE(vcd.open(dir + "/t.vcd"));
-    vcd.change(1000, clk, 0);  // the snapshot
-    vcd.change(2000, clk, 1);
-    vcd.change(3000, clk, 0);
-    vcd.finish(5000);
-    ASSERT_TRUE(vcd.ok()) << vcd.error();
-    ASSERT_TRUE(vcd.add_fault_markers(
-        {{4000, 11}, {2500, 3}, {500, 2}, {1000, 4}, {3000, 5}, {3000, 6}, {4000, 12}, {6000, 9}}))
-        << vcd.error();
-    const vcd_file v = parse_vcd(dir + "/t.vcd");
-    expect_declared(v, "10");  // 2 drop-frame, before the window
-    const std::vector<vcd_change>& h = v.of(marker);
-    const std::vector<std::pair<ticks, std::string>> expected = {
-        {1000, "100"}, {2500, "11"}, {3000, "110"}, {4000, "1100"}};
-    ASSERT_EQ(h.size(), expected.size());
-    for (size_t i = 0; i < h.size(); ++i) {
-        EXPECT_EQ(h[i].fs, simtime::to_fs(expected[i].first)) << i;
-        EXPECT_EQ(h[i].value, expected[i].second) << i;
-    }
-    // The clock's own changes are untouched, and the file still ends at the window's end.
-    const std::vector<vcd_change>& c = v.of("platform.sensor_L.PCLK");
-    ASSERT_EQ(c.size(), 2u);
-    EXPECT_EQ(c[0].fs, simtime::to_fs(2000));
-    EXPECT_EQ(c[1].fs, simtime::to_fs(3000));
-    EXPECT_EQ(v.last_fs, simtime::to_fs(5000));
-    EXPECT_EQ(v.dumpvars_fs, simtime::to_fs(1000));
-    EXPECT_FALSE(access((dir + "/t.vcd.markers").c_str(), F_OK) == 0);
 }

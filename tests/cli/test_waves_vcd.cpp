@@ -20,8 +20,9 @@
 #include "dsp/card_regs.h"
 #include "model/sensor/profile.h"
 #include "tb/app/output/gtkw_writer.h"
-#include "tb/app/output/vcd_writer.h"
+#include "tb/app/output/waves_writer.h"
 #include "tb/platform/island/pin_trace.h"
+#include "tests/support/vcd_reader.h"
 
 namespace {
 
@@ -63,91 +64,11 @@ bool exists(const std::string& path) {
     return access(path.c_str(), F_OK) == 0;
 }
 
-// ---- a plain VCD reader --------------------------------------------------------------------
-struct vcd_change {
-    int64_t fs;
-    std::string value;  // "0", "1", "z", "x" or the bits of a vector ("z", "x" too)
-};
-
-struct vcd_file {
-    std::string timescale;
-    std::map<std::string, std::string> code_of;              // full name -> code
-    std::map<std::string, int> width_of;                     // full name -> width
-    std::map<std::string, std::vector<vcd_change>> changes;  // by code
-    int64_t dumpvars_fs = -1;
-    std::set<std::string> in_dumpvars;  // codes with a value in $dumpvars
-    bool times_increase = true;
-    int64_t last_fs = -1;
-
-    const std::vector<vcd_change>& of(const std::string& name) const {
-        static const std::vector<vcd_change> none;
-        const auto c = code_of.find(name);
-        if (c == code_of.end()) return none;
-        const auto h = changes.find(c->second);
-        return h == changes.end() ? none : h->second;
-    }
-};
+using testsupport::vcd_change;
+using testsupport::vcd_file;
 
 vcd_file parse_vcd(const std::string& path) {
-    vcd_file v;
-    std::ifstream in(path);
-    std::string token;
-    std::vector<std::string> scope;
-    // Header: whitespace-separated tokens up to $enddefinitions.
-    while (in >> token) {
-        if (token == "$timescale") {
-            std::string t;
-            while (in >> t && t != "$end") v.timescale += t;
-        } else if (token == "$scope") {
-            std::string kind, name, end;
-            in >> kind >> name >> end;
-            scope.push_back(name);
-        } else if (token == "$upscope") {
-            std::string end;
-            in >> end;
-            scope.pop_back();
-        } else if (token == "$var") {
-            std::string kind, width, code, name, rest, full;
-            in >> kind >> width >> code >> name;
-            for (const std::string& s : scope) full += s + ".";
-            full += name;
-            while (in >> rest && rest != "$end") full += rest;  // "[7:0]"
-            v.code_of[full] = code;
-            v.width_of[full] = std::stoi(width);
-        } else if (token == "$enddefinitions") {
-            std::string end;
-            in >> end;
-            break;
-        } else if (token[0] == '$') {
-            std::string t;
-            while (in >> t && t != "$end") {
-            }
-        }
-    }
-    int64_t now = 0;
-    bool dumping = false;
-    while (in >> token) {
-        if (token[0] == '#') {
-            now = std::stoll(token.substr(1));
-            if (now < v.last_fs) v.times_increase = false;
-            v.last_fs = now;
-        } else if (token == "$dumpvars") {
-            dumping = true;
-            v.dumpvars_fs = now;
-        } else if (token == "$end") {
-            dumping = false;
-        } else if (token[0] == 'b') {
-            std::string code;
-            in >> code;
-            v.changes[code].push_back({now, token.substr(1)});
-            if (dumping) v.in_dumpvars.insert(code);
-        } else {
-            const std::string code = token.substr(1);
-            v.changes[code].push_back({now, token.substr(0, 1)});
-            if (dumping) v.in_dumpvars.insert(code);
-        }
-    }
-    return v;
+    return testsupport::read_vcd(path);
 }
 
 // 1 tick = 1/18 ns; the VCD holds each tick rounded to fs once.
@@ -239,21 +160,21 @@ TEST(waves_vcd, window_around_first_frame_ready) {
     for (int i = 0; i < platform::trace_pin_count; ++i) {
         const std::string name = full_name(static_cast<platform::trace_pin>(i));
         ASSERT_TRUE(v.code_of.count(name)) << name;
-        EXPECT_TRUE(v.in_dumpvars.count(v.code_of.at(name))) << name << " not in $dumpvars";
+        EXPECT_TRUE(v.first.count(v.code_of.at(name))) << name << " not at the window start";
     }
     const ticks from = 47500000 * simtime::ticks_per_ns, to = 49500000 * simtime::ticks_per_ns;
-    EXPECT_EQ(v.dumpvars_fs, simtime::to_fs(from));
+    EXPECT_EQ(v.first_fs, simtime::to_fs(from));
     EXPECT_TRUE(v.times_increase);
     EXPECT_EQ(v.last_fs, simtime::to_fs(to));
     std::printf("VCD: %zu signals, %lld..%lld fs, %zu bytes\n", v.code_of.size(),
-                static_cast<long long>(v.dumpvars_fs), static_cast<long long>(v.last_fs),
+                static_cast<long long>(v.first_fs), static_cast<long long>(v.last_fs),
                 read_text(vcd_path).size());
 
     // ---- sensor L: PCLK period and HREF width against the profile (docs/sensor.md)
     const sensor::sensor_profile profile = sensor::default_profile();
     const ticks pclk = profile.pclk_period().num / profile.pclk_period().den;
     ASSERT_EQ(profile.pclk_period().den, 1);
-    const auto pclk_high = high_pulses(v.of("platform.sensor_L.PCLK"));
+    const auto pclk_high = high_pulses(v.history("platform.sensor_L.PCLK"));
     ASSERT_GT(pclk_high.size(), 30000u);  // 2 ms at 17.14 MHz: 34,285 clocks
     std::set<ticks> periods;
     for (size_t i = 1; i < pclk_high.size(); ++i)
@@ -261,7 +182,7 @@ TEST(waves_vcd, window_around_first_frame_ready) {
     EXPECT_EQ(periods, std::set<ticks>{pclk});
     // Whole pulses only: one that is high at the window start is cut.
     std::vector<std::pair<ticks, ticks>> href;
-    for (const auto& p : high_pulses(v.of("platform.sensor_L.HREF")))
+    for (const auto& p : high_pulses(v.history("platform.sensor_L.HREF")))
         if (p.first > from) href.push_back(p);
     ASSERT_GE(href.size(), 20u);
     std::set<ticks> href_widths, line_periods;
@@ -280,16 +201,16 @@ TEST(waves_vcd, window_around_first_frame_ready) {
         static_cast<long long>(*line_periods.begin()));
 
     // ---- EMIF: ECLKOUT, and the read strobes on the card's CE spaces = CECTL
-    const auto eclk_high = high_pulses(v.of("platform.emif.ECLKOUT"));
+    const auto eclk_high = high_pulses(v.history("platform.emif.ECLKOUT"));
     std::set<ticks> eclk_periods;
     for (size_t i = 1; i < eclk_high.size(); ++i)
         eclk_periods.insert(eclk_high[i].first - eclk_high[i - 1].first);
     EXPECT_EQ(eclk_periods, std::set<ticks>{eclk_v1});
     const cectl_fields f = decode(dsp::card_regs::cectl_v1);
     ASSERT_EQ(f.rst, 10);  // 0x22A28A22: RS 2 RST 10 RH 2 (docs/emif.md)
-    const auto& ce2 = v.of("platform.emif.CE2_n");
-    const auto& ce3 = v.of("platform.emif.CE3_n");
-    const auto are = low_pulses(v.of("platform.emif.ARE_n"));
+    const auto& ce2 = v.history("platform.emif.CE2_n");
+    const auto& ce3 = v.history("platform.emif.CE3_n");
+    const auto are = low_pulses(v.history("platform.emif.ARE_n"));
     int on_ce2 = 0, on_ce3 = 0;
     std::set<ticks> are_widths;
     for (const auto& p : are) {
@@ -315,7 +236,7 @@ TEST(waves_vcd, window_around_first_frame_ready) {
     EXPECT_EQ(first_are - ce3_low[0].first, f.rs * eclk_v1);
     // (Longer gaps: the bus served a higher-priority requester between words.)
     std::map<ticks, int> gaps;
-    const auto are_high = high_pulses(v.of("platform.emif.ARE_n"));
+    const auto are_high = high_pulses(v.history("platform.emif.ARE_n"));
     for (const auto& p : are_high)
         if (value_at(ce3, p.first) == "0" && value_at(ce3, p.first + p.second) == "0")
             ++gaps[p.second];
@@ -335,23 +256,35 @@ TEST(waves_vcd, window_around_first_frame_ready) {
         static_cast<long long>(gaps.begin()->first));
 
     // ---- the card and the firmware on the same timeline
-    const auto int4 = high_pulses(v.of("platform.card.EXT_INT4"));
+    const auto int4 = high_pulses(v.history("platform.card.EXT_INT4"));
     ASSERT_EQ(int4.size(), 1u);                  // FRAME_READY of pair 1 at 49.24 ms
     EXPECT_LT(int4[0].first, ce3_low[0].first);  // the EDMA reads after it
-    EXPECT_EQ(value_at(v.of("platform.card.sync_check.oe_state[2:0]"), int4[0].first),
+    EXPECT_EQ(value_at(v.history("platform.card.sync_check.oe_state[2:0]"), int4[0].first),
               "11");  // RUN
-    for (const vcd_change& c : v.of("platform.firmware.stage[2:0]"))
+    for (const vcd_change& c : v.history("platform.firmware.stage[2:0]"))
         EXPECT_LE(std::stoi(c.value, nullptr, 2), 7);
-    // ED on the bus is the card's while it drives a read, z otherwise.
-    const auto& ed = v.of("platform.emif.ED[31:0]");
-    EXPECT_EQ(value_at(ed, from), "z");
-    EXPECT_NE(value_at(ed, are[are.size() / 2].first + f.rst * eclk_v1 - 1), "z");
+    // ED on the bus is the card's while it drives a read (two-state: 0
+    // while nobody drives it, waves_writer.h).
+    const auto& ed = v.history("platform.emif.ED[31:0]");
+    const auto& card_ed = v.history("platform.card.emif_slave.ED[31:0]");
+    const auto& card_ed_oe = v.history("platform.card.emif_slave.ED_OE");
+    EXPECT_EQ(value_at(card_ed_oe, from), "0");
+    EXPECT_EQ(value_at(ed, from), "0");
+    int reads_seen = 0;
+    for (size_t i = are.size() / 2; i < are.size() / 2 + 20 && i < are.size(); ++i) {
+        const ticks end_of_strobe = are[i].first + f.rst * eclk_v1 - 1;
+        if (value_at(ce3, end_of_strobe) != "0") continue;
+        EXPECT_EQ(value_at(card_ed_oe, end_of_strobe), "1");
+        EXPECT_EQ(value_at(ed, end_of_strobe), value_at(card_ed, end_of_strobe));
+        ++reads_seen;
+    }
+    EXPECT_GT(reads_seen, 10);
 
     // ---- the GTKWave save file names only signals of the VCD, in the eight groups
     const std::string gtkw = read_text(dir + "/waves/default.gtkw");
     ASSERT_FALSE(gtkw.empty());
     const std::vector<std::string> named = gtkw_signals(gtkw);
-    // Every traced pin and the fault marker (vcd_writer.h), in eight groups.
+    // Every traced pin and the fault marker (waves_writer.h), in eight groups.
     EXPECT_EQ(named.size(), static_cast<size_t>(platform::trace_pin_count) + 1);
     for (const std::string& n : named) EXPECT_TRUE(v.code_of.count(n)) << n << " not in the VCD";
     for (const char* group : {"sensor L", "sensor R", "sync check", "FIFOs", "EMIF", "interrupts",
@@ -387,14 +320,11 @@ TEST(waves_vcd, window_around_first_frame_ready) {
 // The committed template waves/stereosim.gtkw is the save file of a full
 // run named "stereosim" (view from 0, 10 us), the fault marker included.
 TEST(waves_vcd, committed_template_matches_the_writer) {
-    output::vcd_writer vcd(platform::tick_window{0, 1});
+    output::waves_writer vcd(output::waves_format::vcd, platform::tick_window{0, 1});
     for (int i = 0; i < platform::trace_pin_count; ++i)
         vcd.declare(platform::trace_pin_signal(static_cast<platform::trace_pin>(i)));
-    vcd.declare_fault_marker();  // as the VCD header does
-    std::vector<output::waves_writer::signal> signals;
-    for (const output::vcd_writer::signal& s : vcd.signals())
-        signals.push_back({s.info, s.included, 0, s.full_name});
-    const std::string text = output::gtkw_text("stereosim.vcd", signals, 0, 10 * 18000);
+    vcd.declare(output::fault_marker_signal());  // as the file does, last
+    const std::string text = output::gtkw_text("stereosim.vcd", vcd.signals(), 0, 10 * 18000);
     EXPECT_EQ(read_text(std::string(STEREOSIM_SOURCE_DIR) + "/waves/stereosim.gtkw"), text);
 }
 
@@ -410,9 +340,9 @@ TEST(waves_vcd, boot_window_register_writes) {
     EXPECT_FALSE(v.code_of.count("platform.sensor_L.PCLK"));  // not in the scope
     EXPECT_FALSE(v.code_of.count("platform.firmware.stage[2:0]"));
     const cectl_fields f = decode(dsp::card_regs::cectl_v1);
-    const auto& ce2 = v.of("platform.emif.CE2_n");
-    const auto awe = low_pulses(v.of("platform.emif.AWE_n"));
-    const auto& reg = v.of("platform.card.emif_slave.register[5:0]");
+    const auto& ce2 = v.history("platform.emif.CE2_n");
+    const auto awe = low_pulses(v.history("platform.emif.AWE_n"));
+    const auto& reg = v.history("platform.card.emif_slave.register[5:0]");
     std::set<ticks> widths;
     std::set<int> registers;
     for (const auto& p : awe) {
@@ -446,7 +376,10 @@ TEST(waves_vcd, bad_window_is_a_one_line_error) {
         {"--vcd --vcd-from -1 --vcd-to 5", "negative"},
         {"--vcd --vcd-from 20 --vcd-to 30", "beyond the run"},
         {"--vcd --vcd-scope sensors,pins", "unknown scope"},
-        {"--vcd-from 1 --vcd-to 2", "need --vcd"},
+        {"--vcd-from 1 --vcd-to 2", "need --waves (or --vcd)"},
+        {"--waves gif", "unknown format 'gif'"},
+        {"--waves fst --vcd", "--vcd is --waves vcd"},
+        {"--waves fst --waves-from 20 --waves-to 30", "beyond the run"},
     };
     for (const auto& c : cases) {
         const std::string dir = temp_dir();

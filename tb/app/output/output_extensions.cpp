@@ -12,7 +12,6 @@
 #include "tb/app/output/gtkw_writer.h"
 #include "tb/app/output/trace_events.h"
 #include "tb/app/output/trajectory_plot.h"
-#include "tb/app/output/vcd_writer.h"
 #include "tb/app/output/waves_writer.h"
 
 namespace output {
@@ -49,128 +48,6 @@ std::string file_name_of(const std::string& name) {
     return s.empty() ? std::string("run") : s;
 }
 
-class vcd_output final : public cli::run_extension {
-  public:
-    void add_options(CLI::App& run) override {
-        m_run = &run;
-        run.add_flag("--vcd", m_enabled,
-                     "write a VCD of a window of the run into DIR/waves/ with a GTKWave save file");
-        run.add_option("--vcd-from", m_from_ms, "window start, simulated ms (default 49)");
-        run.add_option("--vcd-to", m_to_ms, "window end, simulated ms (default from + 1)");
-        run.add_option("--vcd-scope", m_scope,
-                       "signals to trace: sensors,card,emif,firmware (default all)");
-    }
-
-    bool configure(const cli::run_setup& setup, platform::platform_config& config,
-                   std::string* error) override {
-        const bool window_given = m_run->count("--vcd-from") + m_run->count("--vcd-to") > 0;
-        if (!m_enabled) {
-            if (window_given || m_run->count("--vcd-scope") > 0) {
-                *error = "--vcd-from, --vcd-to and --vcd-scope need --vcd";
-                return false;
-            }
-            return true;
-        }
-        if (m_run->count("--out") == 0) {
-            *error = "--vcd needs --out DIR (the VCD goes to DIR/waves/)";
-            return false;
-        }
-        const double run_ms = static_cast<double>(config.period * config.frames) /
-                              (static_cast<double>(simtime::ticks_per_ns) * 1e6);
-        // Default: 1 ms from 49 ms (the default scenario's first FRAME_READY is
-        // at 49.24 ms), or the run's first ms if it is shorter.
-        double from = m_run->count("--vcd-from") ? m_from_ms : (run_ms >= 50.0 ? 49.0 : 0.0);
-        double to = m_run->count("--vcd-to") ? m_to_ms : std::min(from + 1.0, run_ms);
-        if (!std::isfinite(from) || !std::isfinite(to) || from < 0 || to < 0) {
-            *error = "--vcd window " + format_ms(from) + ".." + format_ms(to) +
-                     " ms: times must not be negative";
-            return false;
-        }
-        if (from >= to) {
-            *error = "--vcd window " + format_ms(from) + ".." + format_ms(to) +
-                     " ms: --vcd-from must be before --vcd-to";
-            return false;
-        }
-        if (to > run_ms) {
-            *error = "--vcd window " + format_ms(from) + ".." + format_ms(to) +
-                     " ms is beyond the run (" + format_ms(run_ms) + " ms)";
-            return false;
-        }
-        unsigned groups = platform::trace_all_groups;
-        std::string bad;
-        if (!m_scope.empty() && !parse_trace_groups(m_scope, &groups, &bad)) {
-            *error = "--vcd-scope: unknown scope '" + bad + "' (sensors, card, emif, firmware)";
-            return false;
-        }
-        const auto tick_of = [](double ms) {
-            return static_cast<ticks>(std::llround(ms * simtime::ticks_per_ns * 1e6));
-        };
-        m_window = {tick_of(from), tick_of(to)};
-        m_name = file_name_of(setup.scenario.name);
-        m_vcd = std::make_unique<vcd_writer>(m_window, groups);
-        config.trace = m_vcd.get();
-        config.trace_window = m_window;
-        return true;
-    }
-
-    bool open_outputs(cli::staged_files& files, std::string* error) override {
-        if (!m_vcd) return true;
-        if (!m_vcd->open(files.staged_path("waves/" + m_name + ".vcd"))) {
-            *error = m_vcd->error();
-            return false;
-        }
-        return true;
-    }
-
-    bool write(const cli::run_result& run, cli::staged_files& files, std::string* error) override {
-        if (!m_vcd) return true;
-        if (!m_vcd->ok()) {
-            *error = m_vcd->error();
-            return false;
-        }
-        // Fault onsets are on the timeline only now (the fault extension marks
-        // them in add_to_report, after the run finished the VCD): merge them in.
-        std::vector<fault_marker> markers;
-        for (const platform::timeline_event& e : run.top.events().events())
-            if (e.kind == platform::event_kind::fault)
-                markers.push_back({e.tick, static_cast<uint8_t>(1 + e.b)});
-        if (!markers.empty() && m_vcd->finished() && !m_vcd->add_fault_markers(markers)) {
-            *error = m_vcd->error();
-            return false;
-        }
-        m_gtkw = run.out_dir + "/waves/" + m_name + ".gtkw";
-        // The view opens on the window's first 10 us (or the whole window).
-        const ticks span = std::min<ticks>(m_window.to - m_window.from, 10 * 18000);
-        std::vector<waves_writer::signal> signals;
-        for (const vcd_writer::signal& s : m_vcd->signals())
-            signals.push_back({s.info, s.included, 0, s.full_name});
-        return write_gtkw(
-            [&files](const std::string& f) { return files.staged_path("waves/" + f); }, m_name,
-            m_name + ".vcd", signals, m_window.from, span, error);
-    }
-
-    std::vector<std::string> summary_lines(const cli::run_result& run) override {
-        if (!m_vcd || run.out_dir.empty()) return {};
-        char line[160];
-        std::snprintf(line, sizeof line, "waveform: %.3f..%.3f ms, %llu changes, %.1f MB",
-                      static_cast<double>(m_window.from) / 18e6,
-                      static_cast<double>(m_window.to) / 18e6,
-                      static_cast<unsigned long long>(m_vcd->changes_written()),
-                      static_cast<double>(m_vcd->bytes_written()) / 1e6);
-        return {line, "open it with: gtkwave " + m_gtkw};
-    }
-
-  private:
-    CLI::App* m_run = nullptr;
-    bool m_enabled = false;
-    double m_from_ms = 0.0, m_to_ms = 0.0;
-    std::string m_scope;
-    platform::tick_window m_window;
-    std::string m_name;
-    std::string m_gtkw;
-    std::unique_ptr<vcd_writer> m_vcd;
-};
-
 class waveform_output final : public cli::run_extension {
   public:
     void add_options(CLI::App& run) override {
@@ -178,9 +55,12 @@ class waveform_output final : public cli::run_extension {
         run.add_option("--waves", m_format_name,
                        "write a waveform of a window of the run, fst or vcd, into DIR/waves/ with "
                        "a GTKWave save file: the card's whole RTL hierarchy and every pin");
-        run.add_option("--waves-from", m_from_ms, "window start, simulated ms (default 49)");
-        run.add_option("--waves-to", m_to_ms, "window end, simulated ms (default from + 1)");
-        run.add_option("--waves-scope", m_scope,
+        run.add_flag("--vcd", m_vcd_flag, "the same as --waves vcd");
+        run.add_option("--waves-from,--vcd-from", m_from_ms,
+                       "window start, simulated ms (default 49)");
+        run.add_option("--waves-to,--vcd-to", m_to_ms,
+                       "window end, simulated ms (default from + 1)");
+        run.add_option("--waves-scope,--vcd-scope", m_scope,
                        "pin-trace signals: sensors,card,emif,firmware (default all; the card's "
                        "RTL hierarchy is always written)");
     }
@@ -191,7 +71,7 @@ class waveform_output final : public cli::run_extension {
         const bool window_given = m_run->count("--waves-from") + m_run->count("--waves-to") > 0;
         if (!m_enabled) {
             if (window_given || m_run->count("--waves-scope") > 0) {
-                *error = "--waves-from, --waves-to and --waves-scope need --waves";
+                *error = "--waves-from, --waves-to and --waves-scope need --waves (or --vcd)";
                 return false;
             }
             return true;
@@ -271,7 +151,8 @@ class waveform_output final : public cli::run_extension {
     // --waves fst|vcd, or --vcd.
     bool parse_format(std::string* error) {
         if (m_run->count("--waves") == 0) {
-            m_enabled = false;
+            m_enabled = m_vcd_flag;
+            m_format = waves_format::vcd;
             return true;
         }
         if (m_format_name == "fst") {
@@ -282,8 +163,8 @@ class waveform_output final : public cli::run_extension {
             *error = "--waves: unknown format '" + m_format_name + "' (fst, vcd)";
             return false;
         }
-        if (m_run->count("--vcd") > 0) {
-            *error = "--vcd and --waves: one waveform per run";
+        if (m_vcd_flag && m_format != waves_format::vcd) {
+            *error = "--vcd is --waves vcd: it cannot go with --waves " + m_format_name;
             return false;
         }
         m_enabled = true;
@@ -321,6 +202,7 @@ class waveform_output final : public cli::run_extension {
 
     CLI::App* m_run = nullptr;
     std::string m_format_name;
+    bool m_vcd_flag = false;
     bool m_enabled = false;
     waves_format m_format = waves_format::vcd;
     double m_from_ms = 0.0, m_to_ms = 0.0;
@@ -389,10 +271,6 @@ class plot_and_trace_output final : public cli::run_extension {
 };
 
 }  // namespace
-
-std::unique_ptr<cli::run_extension> make_vcd_output() {
-    return std::make_unique<vcd_output>();
-}
 
 std::unique_ptr<cli::run_extension> make_waveform_output() {
     return std::make_unique<waveform_output>();
