@@ -280,15 +280,16 @@ TEST(waves_vcd, window_around_first_frame_ready) {
     }
     EXPECT_GT(reads_seen, 10);
 
-    // ---- the GTKWave save file names only signals of the VCD, in the eight groups
+    // ---- the GTKWave save file names only signals of the VCD, in the nine groups
     const std::string gtkw = read_text(dir + "/waves/default.gtkw");
     ASSERT_FALSE(gtkw.empty());
     const std::vector<std::string> named = gtkw_signals(gtkw);
-    // Every traced pin and the fault marker (waves_writer.h), in eight groups.
-    EXPECT_EQ(named.size(), static_cast<size_t>(platform::trace_pin_count) + 1);
+    // Every traced pin, the fault marker (waves_writer.h) and five of the
+    // card's RTL signals, in nine groups.
+    EXPECT_EQ(named.size(), static_cast<size_t>(platform::trace_pin_count) + 1 + 5);
     for (const std::string& n : named) EXPECT_TRUE(v.code_of.count(n)) << n << " not in the VCD";
-    for (const char* group : {"sensor L", "sensor R", "sync check", "FIFOs", "EMIF", "interrupts",
-                              "firmware stage and state", "faults"})
+    for (const char* group : {"sensor L", "sensor R", "sync check", "FIFOs", "card RTL", "EMIF",
+                              "interrupts", "firmware stage and state", "faults"})
         EXPECT_NE(gtkw.find(std::string("\n-") + group + "\n"), std::string::npos) << group;
     EXPECT_NE(gtkw.find("[dumpfile] \"default.vcd\""), std::string::npos);  // relative
     // Filters: relative names of files beside the VCD, "value name" lines.
@@ -303,7 +304,8 @@ TEST(waves_vcd, window_around_first_frame_ready) {
         EXPECT_FALSE(text.empty()) << file;
         ++filters;
     }
-    EXPECT_EQ(filters, 8);  // oe_state, causes, verdict, register, taken, stage, state, fault
+    // oe_state (pin trace and RTL), causes, verdict, register, taken, stage, state, fault
+    EXPECT_EQ(filters, 9);
     // The translate filters and the template in the repo's waves/ are what a run writes.
     for (const output::translate_filter& f : output::translate_filters()) {
         EXPECT_EQ(read_text(dir + "/waves/" + f.file_name), f.text) << f.file_name;

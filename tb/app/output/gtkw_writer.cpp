@@ -142,9 +142,21 @@ const char* filter_file_of(trace_format format) {
 
 namespace {
 
-const char* const group_order[] = {
-    "sensor L", "sensor R", "sync check", "FIFOs", "EMIF", "interrupts", "firmware stage and state",
-    "faults"};
+const char* const group_order[] = {"sensor L", "sensor R", "sync check", "FIFOs",
+                                   "card RTL", "EMIF",     "interrupts", "firmware stage and state",
+                                   "faults"};
+
+// A first view into the card's RTL hierarchy (the file holds all of it, in
+// GTKWave's tree): sync_check's position counters, the OE controller, the
+// left FIFO's pointers on both sides (rtl/sync_check.v, oe_control.v,
+// async_fifo.v).
+const platform::trace_signal card_rtl_view[] = {
+    {"card.card_top.u_capture.u_check", "col_q", 16, trace_format::decimal},
+    {"card.card_top.u_capture.u_check", "line_q", 16, trace_format::decimal},
+    {"card.card_top.u_capture.u_oe", "state_q", 3, trace_format::oe_state},
+    {"card.card_top.u_fifo_l", "wr_ptr", 18, trace_format::decimal},
+    {"card.card_top.u_fifo_l", "rd_ptr", 18, trace_format::decimal},
+};
 
 }  // namespace
 
@@ -154,6 +166,7 @@ std::string wave_group_of(const platform::trace_signal& s) {
     if (s.scope == "card.sync_check" || (s.scope == "card" && s.name == "MCLK"))
         return "sync check";
     if (s.scope == "card.fifo") return "FIFOs";
+    if (s.scope.rfind("card.card_top", 0) == 0) return "card RTL";
     if (s.scope == "emif" || s.scope == "card.emif_slave") return "EMIF";
     if (s.scope == "interrupts" || (s.scope == "card" && s.name.rfind("EXT_INT", 0) == 0))
         return "interrupts";
@@ -161,9 +174,11 @@ std::string wave_group_of(const platform::trace_signal& s) {
     return "firmware stage and state";
 }
 
-std::string gtkw_text(const std::string& dump_file,
-                      const std::vector<waves_writer::signal>& signals, simtime::ticks from,
-                      simtime::ticks span) {
+std::string gtkw_text(const std::string& dump_file, const std::vector<waves_writer::signal>& traced,
+                      simtime::ticks from, simtime::ticks span) {
+    std::vector<waves_writer::signal> signals = traced;
+    for (const platform::trace_signal& rtl : card_rtl_view)
+        signals.push_back({rtl, true, 0, waves_writer::full_name_of(rtl)});
     std::string t;
     t += "[*]\n[*] stereosim: one run's waveforms (docs/waveforms.md); paths are relative\n[*]\n";
     // GTKWave resolves a relative [dumpfile] through [savefile] (both in the

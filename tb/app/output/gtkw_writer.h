@@ -6,15 +6,14 @@
 // moved or archived and still opens with `gtkwave DIR/waves/NAME.gtkw`.
 //
 // The save file shows the signals in named groups: sensor L, sensor R, sync
-// check, FIFOs, EMIF, interrupts, firmware stage and state, faults (the
-// fault marker, waves_writer.h). Enumerated signals are shown in decimal
-// through a translate filter ("value name" lines, decimal so no leading-zero
-// ambiguity): the card's OE controller state, the sync check's causes and
-// verdict, the card register an access on CE2 names, the interrupt the CPU
-// took, the firmware stage, the tracker state and the kind of the latest
-// injected fault. The same files, for a full-scope run named `stereosim`,
-// are committed in waves/ (tests/cli/test_waves_vcd.cpp and
-// test_faults_vcd.cpp check they match).
+// check, FIFOs, card RTL (a few of the card's own RTL signals: sync_check's
+// counters, the OE controller, the left FIFO's pointers), EMIF, interrupts,
+// firmware stage and state, faults (the fault marker, waves_writer.h). Enumerated signals are shown
+// in decimal through a translate filter ("value name" lines, decimal so no leading-zero ambiguity):
+// the card's OE controller state, the sync check's causes and verdict, the card register an access
+// on CE2 names, the interrupt the CPU took, the firmware stage, the tracker state and the kind of
+// the latest injected fault. The same files, for a full-scope run named `stereosim`, are committed
+// in waves/ (tests/cli/test_waves_vcd.cpp and test_faults_vcd.cpp check they match).
 #pragma once
 
 #include <functional>
@@ -38,7 +37,7 @@ const char* filter_file_of(platform::trace_format format);
 // The same for a signal: its format's, or fault_kind.txt for the fault marker.
 const char* filter_file_of(const platform::trace_signal& s);
 
-// The save-file group a signal belongs to (one of the eight names above).
+// The save-file group a signal belongs to (one of the nine names above).
 std::string wave_group_of(const platform::trace_signal& s);
 
 // The save file's text for `dump_file` (a name in the same folder) holding

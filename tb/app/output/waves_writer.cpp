@@ -193,12 +193,17 @@ bool waves_writer::open(const std::string& path) {
     return true;
 }
 
+std::string waves_writer::full_name_of(const platform::trace_signal& s) {
+    std::string n = "platform." + s.scope + "." + s.name;
+    if (s.width > 1) n += "[" + std::to_string(s.width - 1) + ":0]";
+    return n;
+}
+
 platform::trace_id waves_writer::declare(const platform::trace_signal& s) {
     signal sig;
     sig.info = s;
     sig.included = (trace_group_of_scope(s.scope) & m_groups) != 0 || is_fault_marker(s);
-    sig.full_name = "platform." + s.scope + "." + s.name;
-    if (s.width > 1) sig.full_name += "[" + std::to_string(s.width - 1) + ":0]";
+    sig.full_name = full_name_of(s);
     m_signals.push_back(sig);
     m_value.push_back(0);
     return static_cast<platform::trace_id>(m_signals.size() - 1);

@@ -55,6 +55,9 @@ class waves_writer final : public platform::pin_trace, public platform::card_wav
         std::string full_name;  // as GTKWave names it: platform.sensor_L.DATA[7:0]
     };
 
+    // As GTKWave names a signal of the file: platform.sensor_L.DATA[7:0].
+    static std::string full_name_of(const platform::trace_signal& s);
+
     waves_writer(waves_format format, platform::tick_window window,
                  unsigned groups = platform::trace_all_groups);
     ~waves_writer() override;
