@@ -1,11 +1,12 @@
 // Speed of the two arrangements and of the card under Icarus (issue 8;
 // docs/arrangements.md "Speed"), all measured in the same run.
 //
-// arrangements_traces_off / arrangements_vcd_window: the default scenario
+// arrangements_traces_off / arrangements_waves_window: the default scenario
 // (VGA, DSK v1, overlapped mode, the platform's defaults, 12 sync periods)
 // in the fast arrangement (cores stepped in one SystemC thread) and in the
 // literal pin-level one (sc_signals, verilator --sc); traces off (no pin
-// hash), or with a 1 ms VCD window (tb/app/output's writer, 49-50 ms). SystemC
+// hash), or with a 1 ms FST window (--waves fst: tb/app/output's writer, the
+// traced card's whole hierarchy, 49-50 ms). SystemC
 // elaborates once per process, so each simulation runs in a forked child
 // that reports its wall time. The machine is shared: runs are interleaved
 // (fast, pins, pins, fast, ...) over STEREOSIM_BENCH_REPS repetitions
@@ -65,7 +66,7 @@ struct run_time {
 };
 
 // Wall and CPU seconds of one run in a child process (negative on failure).
-run_time run_in_child(platform::arrangement_kind arrangement, int frames, bool vcd_window) {
+run_time run_in_child(platform::arrangement_kind arrangement, int frames, bool waves_window) {
     int fd[2];
     if (pipe(fd) != 0) return {};
     const pid_t pid = fork();
@@ -77,9 +78,9 @@ run_time run_in_child(platform::arrangement_kind arrangement, int frames, bool v
         config.hash_pins = false;
         const platform::tick_window window{49 * ticks_per_ms, 50 * ticks_per_ms};
         output::waves_writer writer(output::waves_format::fst, window);
-        const std::string vcd = "/tmp/bench_arrangements_" + std::to_string(getpid()) + ".fst";
-        if (vcd_window) {
-            if (!writer.open(vcd)) _exit(4);
+        const std::string fst = "/tmp/bench_arrangements_" + std::to_string(getpid()) + ".fst";
+        if (waves_window) {
+            if (!writer.open(fst)) _exit(4);
             config.trace = &writer;
             config.trace_window = window;
         }
@@ -93,7 +94,7 @@ run_time run_in_child(platform::arrangement_kind arrangement, int frames, bool v
             r.wall =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
         }
-        std::filesystem::remove(vcd);
+        std::filesystem::remove(fst);
         const ssize_t written = write(fd[1], &r, sizeof r);
         _exit(written == sizeof r ? 0 : 3);
     }
@@ -112,7 +113,7 @@ double median(std::vector<double> v) {
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-void measure_arrangements(benchmark::State& state, bool vcd_window) {
+void measure_arrangements(benchmark::State& state, bool waves_window) {
     const int frames = env_int("STEREOSIM_BENCH_FRAMES", 12);
     const int reps = env_int("STEREOSIM_BENCH_REPS", 3);
     const double simulated_s = frames * 0.0245;
@@ -122,11 +123,11 @@ void measure_arrangements(benchmark::State& state, bool vcd_window) {
             // Alternate the order so a load change favours neither.
             run_time f, p;
             if (rep % 2 == 0) {
-                f = run_in_child(platform::arrangement_kind::fast, frames, vcd_window);
-                p = run_in_child(platform::arrangement_kind::pins, frames, vcd_window);
+                f = run_in_child(platform::arrangement_kind::fast, frames, waves_window);
+                p = run_in_child(platform::arrangement_kind::pins, frames, waves_window);
             } else {
-                p = run_in_child(platform::arrangement_kind::pins, frames, vcd_window);
-                f = run_in_child(platform::arrangement_kind::fast, frames, vcd_window);
+                p = run_in_child(platform::arrangement_kind::pins, frames, waves_window);
+                f = run_in_child(platform::arrangement_kind::fast, frames, waves_window);
             }
             if (f.wall <= 0.0 || p.wall <= 0.0) {
                 state.SkipWithError("a child simulation failed");
@@ -161,11 +162,11 @@ void measure_arrangements(benchmark::State& state, bool vcd_window) {
 void arrangements_traces_off(benchmark::State& state) {
     measure_arrangements(state, false);
 }
-void arrangements_vcd_window(benchmark::State& state) {
+void arrangements_waves_window(benchmark::State& state) {
     measure_arrangements(state, true);
 }
 BENCHMARK(arrangements_traces_off)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
-BENCHMARK(arrangements_vcd_window)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+BENCHMARK(arrangements_waves_window)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
 // ---- the card alone: verilated vs Icarus on one stimulus ------------------------------------
 void card_icarus_vs_verilator(benchmark::State& state) {

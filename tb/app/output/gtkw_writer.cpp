@@ -79,7 +79,7 @@ std::vector<translate_filter> translate_filters() {
         std::string t = "# card register on CE2: word index EA[7:2] (docs/card-registers.md)\n";
         for (const named_value& r : card_registers)
             t += std::to_string(r.value / 4) + " " + r.name + "\n";
-        t += "63 (no access)\n";  // released_value(): CE2 is high
+        t += std::to_string(platform::register_no_access) + " (no access)\n";  // CE2 is high
         filters.push_back({"card_register.txt", t});
     }
     {

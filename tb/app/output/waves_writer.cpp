@@ -60,12 +60,6 @@ bool is_fault_marker(const platform::trace_signal& s) {
     return s.scope == m.scope && s.name == m.name;
 }
 
-uint64_t released_value(const platform::trace_signal& s) {
-    // EA[7:2] names a register only while CE2 is low; 63 is no register
-    // (rtl/card_regs.csv ends at 38) and the filter calls it "no access".
-    return s.format == platform::trace_format::card_register ? 63u : 0u;
-}
-
 namespace {
 
 // The writer's name of a signal: scopes and name separated by spaces.
@@ -251,13 +245,12 @@ void waves_writer::change(ticks t, platform::trace_id id, uint64_t value) {
     } else {
         m_time = t;
     }
-    if (m_value[id] != value || !m_pending) ++m_changes;
     m_value[id] = value;
     m_pending = true;
 }
 
 void waves_writer::release(ticks t, platform::trace_id id) {
-    if (id < m_signals.size()) change(t, id, released_value(m_signals[id].info));
+    change(t, id, 0);  // two-state: nobody drives it, it reads 0
 }
 
 void waves_writer::seal_before(ticks t) {
@@ -294,11 +287,6 @@ void waves_writer::finish(ticks end) {
         m_error = "cannot rename " + part + " to " + m_path;
         std::remove(part.c_str());
         return;
-    }
-    if (std::FILE* f = std::fopen(m_path.c_str(), "rb")) {
-        std::fseek(f, 0, SEEK_END);
-        m_bytes = static_cast<uint64_t>(std::ftell(f));
-        std::fclose(f);
     }
 }
 

@@ -16,8 +16,7 @@
 // the card's values at a time are the ones the island's edges left there.
 //
 // Both formats are two-state (Verilator's writers): a bus nobody drives
-// (ED, the card's ED) reads 0, and the card register of an access
-// (card.emif_slave.register) reads 63, "no access", while CE2 is high.
+// (release(): ED, the card's ED) reads 0.
 //
 // Written to PATH.part and renamed to PATH by finish(), so a failed run
 // leaves no half-written file (a writer destroyed unfinished removes it).
@@ -42,9 +41,6 @@ bool parse_trace_groups(const std::string& list, unsigned* groups, std::string* 
 // The fault marker signal every file declares after the traced ones.
 const platform::trace_signal& fault_marker_signal();
 bool is_fault_marker(const platform::trace_signal& s);
-
-// The value a released signal shows in a two-state file.
-uint64_t released_value(const platform::trace_signal& s);
 
 class waves_writer final : public platform::pin_trace, public platform::card_waves {
   public:
@@ -86,9 +82,6 @@ class waves_writer final : public platform::pin_trace, public platform::card_wav
     const std::string& error() const { return m_error; }
     const std::string& path() const { return m_path; }
     const std::vector<signal>& signals() const { return m_signals; }
-    // Changes of the pin trace's signals written (the card's are Verilator's).
-    uint64_t changes_written() const { return m_changes; }
-    uint64_t bytes_written() const { return m_bytes; }
     // Changes that arrived out of tick order (a source bug): written at the
     // pending time instead.
     uint64_t out_of_order() const { return m_out_of_order; }
@@ -113,8 +106,6 @@ class waves_writer final : public platform::pin_trace, public platform::card_wav
     bool m_finished = false;
     bool m_pending = false;      // changes at m_time not yet dumped
     simtime::ticks m_time = -1;  // the time of the pending changes, or the last dumped
-    uint64_t m_changes = 0;
-    uint64_t m_bytes = 0;
     uint64_t m_out_of_order = 0;
 };
 

@@ -80,6 +80,9 @@ class pin_trace {
 
 // The firmware stage signal's value when no stage runs.
 inline constexpr uint64_t stage_idle = 7;
+// card.emif_slave.register while CE2 is high: no card register (the map
+// ends at word 38, rtl/card_regs.csv); its filter says "(no access)".
+inline constexpr uint64_t register_no_access = 63;
 
 // The signals of a run, in declaration order: one table for every
 // arrangement, so their VCDs are comparable signal by signal.

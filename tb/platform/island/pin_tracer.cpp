@@ -145,11 +145,7 @@ void pin_tracer::emif(ticks t, const emif::emif_pins& p) {
     set(t, trace_pin::are_n, p.are_n);
     set(t, trace_pin::awe_n, p.awe_n);
     // The card's register the access names: EA[7:2] while CE2 is selected.
-    if (!p.ce_n[2]) {
-        set(t, trace_pin::slave_register, p.ea & 0x3F);
-    } else {
-        release(t, trace_pin::slave_register);
-    }
+    set(t, trace_pin::slave_register, !p.ce_n[2] ? p.ea & 0x3F : register_no_access);
 }
 
 void pin_tracer::card(ticks t, const card_signals& d, bool bus_ardy, const emif::emif_pins& dsp) {

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <type_traits>
 
 #include "model/emif/ardy_glue.h"
 #include "model/sensor/sensor_core.h"
@@ -104,17 +103,6 @@ uint64_t card_outputs_of(const card_model& d) {
                                        d.ext_int6, d.ed_out);
 }
 
-// A traced build of the card (--waves) registers with the file's writer;
-// the untraced one (every other run) has nothing to register.
-template <class card_model>
-void trace_card_into(card_model& card, platform::card_waves* waves) {
-    if constexpr (std::is_same_v<card_model, Vcard_fst>) {
-        card.trace(waves->fst_writer(), platform::card_trace_levels);
-    } else if constexpr (std::is_same_v<card_model, Vcard_vcd>) {
-        card.trace(waves->vcd_writer(), platform::card_trace_levels);
-    }
-}
-
 // card_model: Vcard, or Vcard_fst / Vcard_vcd (the same RTL traced) when the
 // run writes waves.
 //
@@ -188,7 +176,7 @@ class fast_island final : public platform::island {
     uint8_t m_irq = 0;  // EXT_INT4..6 as bits 0..2, as last stepped
     uint8_t m_irq_written = 0;
     bool m_inputs_changed = false;  // since the card's last eval
-    static constexpr bool traced = !std::is_same_v<card_model, Vcard>;
+    static constexpr bool traced = platform::is_traced_card<card_model>;
     ticks m_clock_fall[2] = {-1, -1};  // a traced card's pending pclk / eclk fall
 };
 
@@ -206,7 +194,7 @@ fast_island<card_model>::fast_island(sc_core::sc_module_name name,
     platform::card_waves* waves = config.trace ? config.trace->card_file() : nullptr;
     if (waves) m_context->traceEverOn(true);
     m_card = std::make_unique<card_model>(m_context.get(), "card");
-    if (waves) trace_card_into(*m_card, waves);
+    if (waves) platform::trace_card_into(*m_card, *waves);
     for (const emif::ardy_fault& f : config.ardy_faults) m_glue.add(f);
     for (int c = 0; c < 2; ++c) {
         m_sensor[c] = std::make_unique<sensor::sensor_core>(

@@ -4,7 +4,6 @@
 #include <chrono>
 #include <stdexcept>
 #include <string>
-#include <type_traits>
 
 #include "model/emif/ardy_glue.h"
 #include "model/emif/emif_pins_sc.h"
@@ -55,16 +54,6 @@ struct sensor_wires {
     }
 };
 
-// A traced build of the card (--waves) registers with the file's writer.
-template <class card_model>
-void trace_card_into(card_model& card, platform::card_waves* waves) {
-    if constexpr (std::is_same_v<card_model, Vcard_sc_fst>) {
-        card.trace(waves->fst_writer(), platform::card_trace_levels);
-    } else if constexpr (std::is_same_v<card_model, Vcard_sc_vcd>) {
-        card.trace(waves->vcd_writer(), platform::card_trace_levels);
-    }
-}
-
 // card_model: Vcard_sc, or Vcard_sc_fst / Vcard_sc_vcd (the same RTL traced)
 // when the run writes waves. The card is a top-level module named "card"
 // (made before the island, make_pins_island): its waveform scope is then
@@ -114,7 +103,7 @@ class pins_island : public platform::island {
     // A --sc model registers with a trace file only after elaboration.
     void start_of_simulation() override {
         if (platform::card_waves* waves = m_config.trace ? m_config.trace->card_file() : nullptr)
-            trace_card_into(*m_card, waves);
+            platform::trace_card_into(*m_card, *waves);
     }
 
     ~pins_island() override {
