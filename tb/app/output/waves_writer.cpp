@@ -141,11 +141,18 @@ struct waves_writer::hooks {
     static void changes(void* self, buffer* b) {
         dump(*static_cast<waves_writer*>(self), b, false);
     }
+    // Only `scopes` (and what is below them) are written; time in fs.
     template <class writer>
-    static void add(writer& file, waves_writer* self) {
+    static bool open(writer& file, waves_writer* self, const std::vector<std::string>& scopes,
+                     const std::string& path) {
+        for (const std::string& scope : scopes) file.dumpvars(99, scope);
         file.spTrace()->addInitCb(&declare, self);
         file.spTrace()->addFullCb(&full, self);
         file.spTrace()->addChgCb(&changes, self);
+        file.set_time_unit("1fs");
+        file.set_time_resolution("1fs");
+        file.open(path.c_str());
+        return file.isOpen();
     }
 };
 
@@ -215,23 +222,8 @@ void waves_writer::open_file() {
     std::vector<std::string> scopes = {"platform.card.card_top"};
     for (const signal& s : m_signals)
         if (s.included) scopes.push_back("platform." + s.info.scope + "." + s.info.name);
-    for (const std::string& scope : scopes) {
-        if (m_fst) m_fst->dumpvars(99, scope);
-        if (m_vcd) m_vcd->dumpvars(99, scope);
-    }
-    if (m_fst) {
-        hooks<VerilatedFst>::add(*m_fst, this);
-        m_fst->set_time_unit("1fs");
-        m_fst->set_time_resolution("1fs");
-        m_fst->open(part.c_str());
-        m_file_open = m_fst->isOpen();
-    } else {
-        hooks<VerilatedVcd>::add(*m_vcd, this);
-        m_vcd->set_time_unit("1fs");
-        m_vcd->set_time_resolution("1fs");
-        m_vcd->open(part.c_str());
-        m_file_open = m_vcd->isOpen();
-    }
+    m_file_open = m_fst ? hooks<VerilatedFst>::open(*m_fst, this, scopes, part)
+                        : hooks<VerilatedVcd>::open(*m_vcd, this, scopes, part);
     if (!m_file_open) m_error = "cannot write " + part;
 }
 
