@@ -23,37 +23,24 @@
 #include "model/sensor/profile.h"
 #include "model/time/ticks.h"
 #include "tb/app/faults/fault_spec.h"
+#include "tests/support/shell.h"
 #include "tests/support/vcd_reader.h"
 
 namespace {
 
 using simtime::ticks;
 
+using testsupport::read_text;
+
 std::string run_stereosim(const std::string& args, int* exit_code) {
-    const std::string command =
-        "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 " STEREOSIM_BINARY " " + args + " 2>&1";
-    std::string output;
-    std::FILE* p = popen(command.c_str(), "r");
-    if (!p) return output;
-    char buffer[4096];
-    size_t n;
-    while ((n = std::fread(buffer, 1, sizeof buffer, p)) > 0) output.append(buffer, n);
-    const int status = pclose(p);
-    *exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return output;
+    const testsupport::command_result r = testsupport::run_command(
+        "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 " STEREOSIM_BINARY " " + args);
+    *exit_code = r.exit_code;
+    return r.output;
 }
 
 std::string temp_dir() {
-    char name[] = "/tmp/stereosim-test-faults-vcd-XXXXXX";
-    const char* dir = mkdtemp(name);
-    return dir ? dir : "";
-}
-
-std::string read_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+    return testsupport::temp_dir("stereosim-test-faults-vcd");
 }
 
 using testsupport::vcd_change;

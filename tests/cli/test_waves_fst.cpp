@@ -18,6 +18,7 @@
 
 #include "model/sensor/profile.h"
 #include "model/time/ticks.h"
+#include "tests/support/shell.h"
 #include "tests/support/vcd_reader.h"
 
 namespace {
@@ -25,32 +26,10 @@ namespace {
 using simtime::ticks;
 using testsupport::vcd_file;
 
-int run(const std::string& command, std::string* output = nullptr) {
-    std::FILE* p = popen((command + " 2>&1").c_str(), "r");
-    if (!p) return -1;
-    char buffer[4096];
-    size_t n;
-    while ((n = std::fread(buffer, 1, sizeof buffer, p)) > 0)
-        if (output) output->append(buffer, n);
-    const int status = pclose(p);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
+using testsupport::read_text;
 
-int run_stereosim(const std::string& args, std::string* output) {
-    return run("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 " STEREOSIM_BINARY " " + args, output);
-}
-
-std::string temp_dir() {
-    char name[] = "/tmp/stereosim-test-waves-fst-XXXXXX";
-    const char* dir = mkdtemp(name);
-    return dir ? dir : "";
-}
-
-std::string read_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+int run(const std::string& command) {
+    return testsupport::run_command(command).exit_code;
 }
 
 long file_size(const std::string& path) {
@@ -67,11 +46,11 @@ vcd_file read_fst(const std::string& fst) {
 
 // A window of the default scenario in `format` into a new folder.
 std::string waves_run(const std::string& format, const std::string& args) {
-    const std::string dir = temp_dir();
-    std::string output;
-    const int code =
-        run_stereosim("run " + args + " --waves " + format + " --quiet --out " + dir, &output);
-    EXPECT_LE(code, 1) << output;  // 0 within budget, 1 over: both finished runs
+    const std::string dir = testsupport::temp_dir("stereosim-test-waves-fst");
+    const testsupport::command_result r =
+        testsupport::run_command("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 " STEREOSIM_BINARY " run " +
+                                 args + " --waves " + format + " --quiet --out " + dir);
+    EXPECT_LE(r.exit_code, 1) << r.output;  // 0 within budget, 1 over: both finished runs
     return dir;
 }
 
@@ -84,9 +63,9 @@ const char* const fifo_l = "platform.card.card_top.u_fifo_l.";
 
 }  // namespace
 
-// The end of the first in-step frame and its FRAME_READY (48-50 ms of 3 periods): the same window as FST
-// and as VCD holds the same signals with the same changes; the card's
-// internals are there and move.
+// The end of the first in-step frame and its FRAME_READY (48-50 ms of 3 periods): the same window
+// as FST and as VCD holds the same signals with the same changes; the card's internals are there
+// and move.
 TEST(waves_fst, same_changes_as_the_vcd_and_the_card_internals_move) {
     const std::string window = "--frames 3 --waves-from 48 --waves-to 50";
     const std::string fst_dir = waves_run("fst", window);

@@ -22,46 +22,27 @@
 #include "tb/app/output/gtkw_writer.h"
 #include "tb/app/output/waves_writer.h"
 #include "tb/platform/island/pin_trace.h"
+#include "tests/support/shell.h"
 #include "tests/support/vcd_reader.h"
 
 namespace {
 
 using simtime::ticks;
 
-struct command_result {
-    int exit_code = -1;
-    std::string output;  // stdout + stderr
-};
+using testsupport::command_result;
+using testsupport::read_text;
 
 command_result run_stereosim(const std::string& args) {
-    const std::string command =
-        "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 " STEREOSIM_BINARY " " + args + " 2>&1";
-    command_result r;
-    std::FILE* p = popen(command.c_str(), "r");
-    if (!p) return r;
-    char buffer[4096];
-    size_t n;
-    while ((n = std::fread(buffer, 1, sizeof buffer, p)) > 0) r.output.append(buffer, n);
-    const int status = pclose(p);
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+    return testsupport::run_command("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 " STEREOSIM_BINARY " " +
+                                    args);
 }
 
 std::string temp_dir() {
-    char name[] = "/tmp/stereosim-test-waves-XXXXXX";
-    const char* dir = mkdtemp(name);
-    return dir ? dir : "";
-}
-
-std::string read_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+    return testsupport::temp_dir("stereosim-test-waves");
 }
 
 bool exists(const std::string& path) {
-    return access(path.c_str(), F_OK) == 0;
+    return testsupport::file_exists(path);
 }
 
 using testsupport::vcd_change;
