@@ -87,10 +87,26 @@ void control_program::report(firmware_event kind, uint32_t pair, uint32_t value,
     m_hal->report(e);
 }
 
+uint32_t card_cectl(const control_program_config& config) {
+    uint32_t v = config.dsk == dsk_version::v1 ? emifa::dsk_cectl_card_v1
+                                               : emifa::dsk_cectl_card_v2;
+    const auto put = [&v](uint32_t value, uint32_t mask, uint32_t shift) {
+        if (value != 0) v = (v & ~mask) | ((value << shift) & mask);
+    };
+    const card_bus_timing& t = config.card_timing;
+    put(t.setup, emifa::cectl_wrsetup_mask, emifa::cectl_wrsetup_shift);
+    put(t.setup, emifa::cectl_rdsetup_mask, emifa::cectl_rdsetup_shift);
+    put(t.strobe, emifa::cectl_wrstrb_mask, emifa::cectl_wrstrb_shift);
+    put(t.strobe, emifa::cectl_rdstrb_mask, emifa::cectl_rdstrb_shift);
+    put(t.hold, emifa::cectl_wrhld_mask, emifa::cectl_wrhld_shift);
+    put(t.hold, emifa::cectl_rdhld_mask, emifa::cectl_rdhld_shift);
+    return v;
+}
+
 // ---- boot --------------------------------------------------------------------------------
 void control_program::program_emif() {
     const bool v1 = m_config.dsk == dsk_version::v1;
-    const uint32_t card_cectl = v1 ? emifa::dsk_cectl_card_v1 : emifa::dsk_cectl_card_v2;
+    const uint32_t card_cectl = dsp::card_cectl(m_config);
     const uint32_t sdtim = v1 ? emifa::dsk_sdtim_v1 : emifa::dsk_sdtim_v2;
     m_hal->write32(emifa::gblctl, emifa::dsk_gblctl);
     m_hal->write32(emifa::cectl0, emifa::dsk_cectl0_sdram);

@@ -106,10 +106,20 @@ struct card_setup {
     uint32_t start_timeout = card_regs::start_timeout_reset;
 };
 
+// The card's async timing on CE2 / CE3 in ECLK cycles, read and write alike
+// (the DSK's own settings are symmetric, hardware-facts.md section 3); a
+// field of 0 keeps the DSK version's value (2/10/2 on v1, 2/12/2 on v2/v3).
+struct card_bus_timing {
+    uint32_t setup = 0;   // RDSETUP / WRSETUP, 1..15
+    uint32_t strobe = 0;  // RDSTRB / WRSTRB, 1..63
+    uint32_t hold = 0;    // RDHLD / WRHLD, 1..3 (WRHLD is 2 bits without WRHLDMSB)
+};
+
 struct control_program_config {
     controller_config pipeline;  // max_width / max_height >= the card's active size
     card_setup card;
     dsk_version dsk = dsk_version::v1;
+    card_bus_timing card_timing;
     uint32_t cpu_mhz = 0;  // for the watchdog timer; 0: the DSK's (600, 720, 1000)
     pipeline_mode mode = pipeline_mode::overlapped;
     uint32_t buffer_base = c6416::sdram_base;  // pair buffers (A, then B in overlapped mode)
@@ -128,6 +138,10 @@ struct control_program_config {
     // checks after the fault, or as many watchdog periods.
     uint32_t hard_error_rearms = 1;
 };
+
+// The CECTL2 / CECTL3 value the firmware programs: the DSK version's card
+// setting with card_timing's non-zero fields in place of its own.
+uint32_t card_cectl(const control_program_config& config);
 
 struct control_stats {
     uint32_t pairs_captured = 0;   // pairs the EDMA moved into a buffer

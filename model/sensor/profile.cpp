@@ -171,6 +171,29 @@ sensor_profile pas302_profile() {
     return p;
 }
 
+std::string window_error(const sensor_profile& p, int cols, int rows) {
+    const auto bad = [](int size, int active) {
+        return size < 16 || size % 4 != 0 || size > active || (active - size) % 4 != 0;
+    };
+    if (bad(cols, p.active_cols) || bad(rows, p.active_rows))
+        return "window " + std::to_string(cols) + " x " + std::to_string(rows) +
+               " does not fit the " + p.name + " profile's " + std::to_string(p.active_cols) +
+               " x " + std::to_string(p.active_rows) +
+               " (at least 16, multiples of 4, centred on whole CFA cells)";
+    return {};
+}
+
+sensor_profile windowed(const sensor_profile& p, int cols, int rows) {
+    const std::string error = window_error(p, cols, rows);
+    if (!error.empty()) throw std::invalid_argument(error);
+    sensor_profile w = p;
+    w.href_start += (p.active_cols - cols) / 2;
+    w.active_cols = cols;
+    w.first_row_line += (p.active_rows - rows) / 2;
+    w.active_rows = rows;
+    return w;
+}
+
 sensor_profile profile_by_name(const std::string& name) {
     if (name == "default") return default_profile();
     if (name == "ov7620") return ov7620_profile();

@@ -99,6 +99,17 @@ sensor_profile mt9v011_profile();
 sensor_profile mt9v012_profile();
 sensor_profile pas302_profile();
 
+// The profile read out through a centred window of cols x rows active
+// pixels (the windowing registers of the era's parts, e.g. the OV7620's
+// HSTART / HSTOP): the line and frame timing stay, HREF starts later and the
+// readout rows later, by half the columns / rows left out. The dark and
+// border pixels stay around the window. Empty string if the window fits;
+// otherwise what is wrong: cols and rows at least 16, multiples of 4, at
+// most the active size, and (active - window) a multiple of 4 so that both
+// halves left out are whole CFA cells (the Bayer order stays).
+std::string window_error(const sensor_profile& p, int cols, int rows);
+sensor_profile windowed(const sensor_profile& p, int cols, int rows);
+
 // By name ("default", "ov7620", "mt9v011", "mt9v012", "pas302"); throws
 // std::invalid_argument for an unknown name.
 sensor_profile profile_by_name(const std::string& name);

@@ -43,6 +43,7 @@ dsp::control_program_config program_config(const platform_config& config) {
     c.watchdog_ms = config.watchdog_ms;
     c.card.retry_limit = config.card_retry_limit;
     c.card.start_timeout = config.card_start_timeout;
+    c.card_timing = config.card_timing;
     c.hard_error_rearms = config.hard_error_rearms;
     return c;
 }

@@ -76,6 +76,8 @@ struct platform_config {
     // (dsp::control_program_config, docs/fault-contract.md).
     uint32_t card_retry_limit = dsp::card_regs::retry_limit_reset;
     uint32_t card_start_timeout = dsp::card_regs::start_timeout_reset;  // lines
+    // The card's CE2 / CE3 timing the firmware programs (0: the DSK's).
+    dsp::card_bus_timing card_timing;
     uint32_t hard_error_rearms = dsp::control_program_config{}.hard_error_rearms;
 
     // ---- faults beyond the sensors' (tb/app/faults, docs/faults.md) ------------------------------

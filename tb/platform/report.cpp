@@ -17,10 +17,10 @@ constexpr double paper_track_ms = 1.756;
 constexpr double paper_stereo_sad_ms = 4.71;
 constexpr double paper_edge_xyz_ms = 5.0;
 
-// The card's CECTL on this DSK (docs/budget.md): v2 and v3 share one setting.
+// The card's CECTL the firmware programs (docs/budget.md): the DSK's, or
+// the configured card timing.
 uint32_t card_cectl(const platform_config& config) {
-    return config.dsk.version >= 2 ? dsp::c6416::emifa::dsk_cectl_card_v2
-                                   : dsp::c6416::emifa::dsk_cectl_card_v1;
+    return dsp::card_cectl(program_config(config));
 }
 
 }  // namespace

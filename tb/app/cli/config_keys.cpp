@@ -125,12 +125,22 @@ std::vector<config_key> hardware_keys() {
                "sensor timing profile (docs/sensor.md)"),
         boolean("sensor.noise", setup_field(&run_setup::sensor_noise),
                 "shot and read noise on the sensors' pixels"),
+        integer("sensor.window_cols", setup_field(&run_setup::window_cols), 0, 4096,
+                "centred readout window width, px (0: the profile's; e.g. 320 for QVGA)"),
+        integer("sensor.window_rows", setup_field(&run_setup::window_rows), 0, 4096,
+                "centred readout window height, px (0: the profile's; e.g. 240 for QVGA)"),
         integer("dsk.version", setup_field(&run_setup::dsk_version), 1, 3,
                 "DSK version: 1 600/100 MHz, 2 720/120, 3 1000/125 (CPU/EMIF)"),
         number("dsk.cpu_mhz", clock_field(&run_setup::cpu_mhz, &run_setup::effective_cpu_mhz), 50.0,
                2000.0, "CPU clock, MHz (default: the DSK version's)"),
         number("dsk.eclk_mhz", clock_field(&run_setup::eclk_mhz, &run_setup::effective_eclk_mhz),
                10.0, 200.0, "EMIF clock ECLKOUT, MHz (default: the DSK version's)"),
+        integer("dsk.card_setup", setup_field(&run_setup::card_setup), 0, 15,
+                "the card's CE2/CE3 setup (RDSETUP, WRSETUP), ECLK (0: the DSK's, 2)"),
+        integer("dsk.card_strobe", setup_field(&run_setup::card_strobe), 0, 63,
+                "the card's CE2/CE3 strobe (RDSTRB, WRSTRB), ECLK (0: the DSK's, 10 v1 / 12 v2-3)"),
+        integer("dsk.card_hold", setup_field(&run_setup::card_hold), 0, 3,
+                "the card's CE2/CE3 hold (RDHLD, WRHLD), ECLK (0: the DSK's, 2)"),
     };
 }
 
@@ -473,6 +483,13 @@ bool validate_setup(const run_setup& setup, std::string* error) {
         profile = sensor::profile_by_name(setup.sensor_profile);
     } catch (const std::exception&) {
         *error = "unknown sensor profile '" + setup.sensor_profile + "'";
+        return false;
+    }
+    try {
+        profile = sensor_profile_of(setup);
+    } catch (const std::exception& e) {
+        *error = std::string("config keys 'sensor.window_cols' / 'sensor.window_rows': ") +
+                 e.what();
         return false;
     }
     const int window = 2 * setup.search_radius + 1;

@@ -16,9 +16,16 @@ double run_setup::effective_eclk_mhz() const {
     return eclk_mhz > 0.0 ? eclk_mhz : c6416::dsk_version(dsk_version).emif_hz / 1e6;
 }
 
+sensor::sensor_profile sensor_profile_of(const run_setup& s) {
+    const sensor::sensor_profile named = sensor::profile_by_name(s.sensor_profile);
+    if (s.window_cols == 0 && s.window_rows == 0) return named;
+    return sensor::windowed(named, s.window_cols > 0 ? s.window_cols : named.active_cols,
+                            s.window_rows > 0 ? s.window_rows : named.active_rows);
+}
+
 platform::platform_config platform_config_of(const run_setup& s) {
     platform::platform_config c;
-    c.profile = sensor::profile_by_name(s.sensor_profile);
+    c.profile = sensor_profile_of(s);
     c.sensor_noise = s.sensor_noise;
     c.seed = static_cast<uint64_t>(s.seed);
 
@@ -65,6 +72,9 @@ platform::platform_config platform_config_of(const run_setup& s) {
     c.sdram_traffic_on_bus = s.sdram_traffic_on_bus;
     c.watchdog_ms = static_cast<uint32_t>(s.watchdog_ms);
     c.card_start_timeout = static_cast<uint32_t>(s.card_start_timeout);
+    c.card_timing.setup = static_cast<uint32_t>(s.card_setup);
+    c.card_timing.strobe = static_cast<uint32_t>(s.card_strobe);
+    c.card_timing.hold = static_cast<uint32_t>(s.card_hold);
     c.frames = s.frames;
     if (s.quantum_ns > 0) c.quantum = s.quantum_ns * simtime::ticks_per_ns;
     c.hash_pins = s.hash_pins;

@@ -39,12 +39,20 @@ struct run_setup {
 
     std::string sensor_profile = "default";  // sensor::profile_by_name
     bool sensor_noise = true;
+    // A centred readout window (sensor::windowed); 0: the profile's active size.
+    int window_cols = 0;
+    int window_rows = 0;
 
     // DSK version 1..3 (hardware-facts.md section 2); a clock of 0 means the
     // version's own (v1 600/100, v2 720/120, v3 1000/125 MHz).
     int dsk_version = 1;
     double cpu_mhz = 0.0;
     double eclk_mhz = 0.0;
+    // The card's CE2 / CE3 async timing, ECLK cycles (dsp::card_bus_timing);
+    // 0: the DSK version's (2/10/2 on v1, 2/12/2 on v2 and v3).
+    int card_setup = 0;
+    int card_strobe = 0;
+    int card_hold = 0;
 
     // The firmware's parameters default to the firmware's own values, read
     // from its default configurations so that they are written down once.
@@ -71,5 +79,10 @@ struct run_setup {
 // scenario parameters, the rig, the profile, the DSK clocks, ...). The setup
 // must have passed validate_setup (tb/app/cli/config_keys.h).
 platform::platform_config platform_config_of(const run_setup& setup);
+
+// The sensor profile of a setup: the named profile through its window.
+// Throws std::invalid_argument for an unknown name or a window that does
+// not fit (validate_setup reports both as bad input first).
+sensor::sensor_profile sensor_profile_of(const run_setup& setup);
 
 }  // namespace cli

@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "dsp/card_regs.h"
+#include "model/emif/cectl.h"
 
 namespace faults {
 
@@ -50,9 +51,11 @@ contract_params params_for(const platform::platform_config& config) {
                            prof.href_start + prof.readout_cols();
     p.words_per_pair = 2.0 * config.profile.active_cols * config.profile.active_rows /
                        dsp::card_regs::pixels_per_word;
-    // The card's CE3 read with the DSK's CECTL: RS + RST + RH = 2 + 10 + 2 ECLK
-    // (docs/card.md "Access lengths"; v2/v3 0x23228C22: 16 ECLK).
-    p.eclk_per_word = config.dsk.version == 1 ? 14 : 16;
+    // The card's CE3 read with the CECTL the firmware programs: RS + RST + RH
+    // = 2 + 10 + 2 ECLK on DSK v1 (docs/card.md "Access lengths"; v2/v3
+    // 0x23228C22: 16 ECLK), or the configured card timing's.
+    p.eclk_per_word = emif::decode_cectl(dsp::card_cectl(platform::program_config(config)))
+                          .read_cycles();
     p.eclk_ns = 1e9 / static_cast<double>(config.dsk.emif_hz);
     p.period_ms = static_cast<double>(config.period) / (simtime::ticks_per_ns * 1e6);
     return p;
