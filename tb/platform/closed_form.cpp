@@ -104,4 +104,19 @@ mode_estimate estimate_overlapped(double capture_ms, double processing_ms, doubl
     return e;
 }
 
+budget_estimate estimate_budget(const platform_config& config, double processing_ms) {
+    const emif::emif_config emif = engine_config(config);
+    const uint32_t cectl = dsp::card_cectl(program_config(config));
+    const int cols = config.profile.active_cols, rows = config.profile.active_rows;
+    budget_estimate b;
+    b.capture_ms = capture(cols, rows, cectl, emif).total_ms();
+    b.traffic_ms = config.sdram_traffic_on_bus ? firmware_traffic(cols, rows, cectl, emif).ms() : 0;
+    b.processing_ms = processing_ms;
+    const double period_ms = static_cast<double>(config.period) / (simtime::ticks_per_ns * 1e6);
+    b.verdict = config.mode == dsp::pipeline_mode::sequential
+                    ? estimate_sequential(b.capture_ms, b.traffic_ms, processing_ms, period_ms)
+                    : estimate_overlapped(b.capture_ms, b.traffic_ms, processing_ms, period_ms);
+    return b;
+}
+
 }  // namespace platform

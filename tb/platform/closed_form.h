@@ -9,6 +9,7 @@
 
 #include "model/emif/emif_async_master.h"
 #include "model/sensor/profile.h"
+#include "tb/platform/platform_config.h"
 
 namespace platform {
 
@@ -84,5 +85,17 @@ mode_estimate estimate_overlapped(double capture_ms, double traffic_ms, double p
                                   double period_ms);
 mode_estimate estimate_sequential(double capture_ms, double traffic_ms, double processing_ms,
                                   double period_ms);
+
+// The closed-form budget of a whole configuration (docs/budget.md
+// "Sequential against overlapped"): C and T from its profile, the CECTL the
+// firmware programs and its EMIF clock, P_max given (e.g. the host runner's
+// largest pair, tb/platform/host), judged for the configuration's mode.
+struct budget_estimate {
+    double capture_ms = 0.0;     // C
+    double traffic_ms = 0.0;     // T (0 when the traffic is off the bus)
+    double processing_ms = 0.0;  // P_max
+    mode_estimate verdict;
+};
+budget_estimate estimate_budget(const platform_config& config, double processing_ms);
 
 }  // namespace platform

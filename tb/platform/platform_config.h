@@ -80,9 +80,9 @@ struct platform_config {
     dsp::card_bus_timing card_timing;
     uint32_t hard_error_rearms = dsp::control_program_config{}.hard_error_rearms;
 
-    // ---- faults beyond the sensors' (tb/app/faults, docs/faults.md) ------------------------------
-    // Extra ARDY wait states on the card's CE spaces from a time on, and a
-    // slower CPU: cycles charged after cpu_slow_from x num / den.
+    // ---- faults beyond the sensors' (tb/app/faults, docs/faults.md)
+    // ------------------------------ Extra ARDY wait states on the card's CE spaces from a time on,
+    // and a slower CPU: cycles charged after cpu_slow_from x num / den.
     std::vector<emif::ardy_fault> ardy_faults;
     uint32_t cpu_slow_num = 1, cpu_slow_den = 1;
     simtime::ticks cpu_slow_from = 0;
@@ -111,5 +111,7 @@ struct platform_config {
 dsp::controller_config pipeline_config(const platform_config& config);
 // The control program's configuration (card registers from the profile).
 dsp::control_program_config program_config(const platform_config& config);
+// The EMIF engine's configuration (ECLK, SDRAM refresh) for `config`.
+emif::emif_config engine_config(const platform_config& config);
 
 }  // namespace platform

@@ -15,7 +15,7 @@
 #include "dsp/controller.h"
 #include "tb/platform/scoring/error_metrics.h"
 #include "tests/support/host/scenarios.h"
-#include "tests/support/host/stereo_runner.h"
+#include "tb/platform/host/stereo_runner.h"
 
 namespace {
 

@@ -15,9 +15,9 @@
 
 #include "dsp/controller.h"
 #include "dsp/kernel_costs.h"
-#include "tests/support/host/counting_hal.h"
+#include "tb/platform/host/counting_hal.h"
 #include "tests/support/host/scenarios.h"
-#include "tests/support/host/stereo_runner.h"
+#include "tb/platform/host/stereo_runner.h"
 #include "tests/support/heap_counter.h"
 
 using test_support::heap_counter;

@@ -14,7 +14,7 @@
 #include "dsp/controller.h"
 #include "dsp/motion_detect.h"
 #include "tests/support/host/scenarios.h"
-#include "tests/support/host/stereo_runner.h"
+#include "tb/platform/host/stereo_runner.h"
 #include "tests/support/data_path.h"
 
 namespace {

@@ -13,7 +13,7 @@
 
 #include "dsp/c6416_regs.h"
 #include "dsp/kernel_costs.h"
-#include "tests/support/host/stereo_runner.h"
+#include "tb/platform/host/stereo_runner.h"
 #include "tb/platform/budget.h"
 #include "tb/platform/closed_form.h"
 #include "tb/platform/platform.h"
@@ -45,7 +45,7 @@ inline double ticks_to_ms(simtime::ticks t) {
 
 // The closed-form estimate's processing time, taken independently of the
 // platform: the same firmware on the same scenario in the host harness (no
-// hardware, tests/support/host), its largest pair's modelled cycles plus the capture
+// hardware, tb/platform/host), its largest pair's modelled cycles plus the capture
 // stage's, at the platform's CPU clock (the cost model is the platform's).
 inline double host_max_processing_ms(const platform::platform_config& config, int frames) {
     host::stereo_runner runner(config.scenario, platform::pipeline_config(config));

@@ -1,5 +1,5 @@
 // One processed stereo pair beside the scene's truth, and what the platform
-// and the host harness (tests/support/host) both need to score it: the
+// and the host runner (tb/platform/host) both need to score it: the
 // firmware's configuration for a scene rig and the first frame that moves.
 #pragma once
 

@@ -12,7 +12,7 @@
 #include "model/scene/images.h"
 #include "model/scene/sequence.h"
 #include "tb/platform/scoring/frame_record.h"
-#include "tests/support/host/counting_hal.h"
+#include "tb/platform/host/counting_hal.h"
 
 namespace host {
 
