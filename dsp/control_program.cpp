@@ -88,8 +88,8 @@ void control_program::report(firmware_event kind, uint32_t pair, uint32_t value,
 }
 
 uint32_t card_cectl(const control_program_config& config) {
-    uint32_t v = config.dsk == dsk_version::v1 ? emifa::dsk_cectl_card_v1
-                                               : emifa::dsk_cectl_card_v2;
+    uint32_t v =
+        config.dsk == dsk_version::v1 ? emifa::dsk_cectl_card_v1 : emifa::dsk_cectl_card_v2;
     const auto put = [&v](uint32_t value, uint32_t mask, uint32_t shift) {
         if (value != 0) v = (v & ~mask) | ((value << shift) & mask);
     };

@@ -488,8 +488,8 @@ bool validate_setup(const run_setup& setup, std::string* error) {
     try {
         profile = sensor_profile_of(setup);
     } catch (const std::exception& e) {
-        *error = std::string("config keys 'sensor.window_cols' / 'sensor.window_rows': ") +
-                 e.what();
+        *error =
+            std::string("config keys 'sensor.window_cols' / 'sensor.window_rows': ") + e.what();
         return false;
     }
     const int window = 2 * setup.search_radius + 1;
