@@ -2,6 +2,9 @@
 //   stereosim run [options]       one co-simulation, report.json, frames.csv
 //   stereosim scenarios           the built-in scenarios, one line each
 //   stereosim config --list       every config key: type, range, default, doc
+//   stereosim faults ...          fault kinds and the fault campaign
+//   stereosim sweep ...           a grid of config keys, every point co-simulated
+//   stereosim merge DIR...        the shards of a sweep or campaign as one
 // Exit codes: 0 within budget, 1 over budget, 2 bad input, 3 the run failed.
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -13,6 +16,8 @@
 #include "tb/app/cli/scenarios.h"
 #include "tb/app/faults/faults_command.h"
 #include "tb/app/run_extensions.h"
+#include "tb/app/sweep/merge_command.h"
+#include "tb/app/sweep/sweep_command.h"
 
 namespace {
 
@@ -70,6 +75,8 @@ int sc_main(int argc, char* argv[]) {
     config->add_flag("--markdown", markdown, "the same as a Markdown table (docs/config.md)");
     // Further subcommands (e.g. `stereosim faults`) are added here.
     faults::faults_command faults(app, ::app::make_run_extensions);
+    sweep::sweep_command sweep(app);
+    sweep::merge_command merge(app);
 
     try {
         app.parse(argc, argv);
@@ -89,6 +96,8 @@ int sc_main(int argc, char* argv[]) {
         return 0;
     }
     if (*faults.subcommand()) return faults.execute();
+    if (*sweep.subcommand()) return sweep.execute();
+    if (*merge.subcommand()) return merge.execute();
     if (*config) {
         print_config_keys(markdown);
         return 0;

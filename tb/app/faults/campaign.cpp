@@ -17,6 +17,7 @@
 #include <optional>
 #include <sstream>
 
+#include "tb/app/faults/campaign_files.h"
 #include "tb/platform/platform_config.h"
 
 extern char** environ;
@@ -27,20 +28,6 @@ namespace {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
-
-std::string csv_field(const std::string& s) {
-    if (s.find_first_of(",\"\n") == std::string::npos) return s;
-    std::string out = "\"";
-    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-}
-
-std::string fmt(double v, int decimals = 1) {
-    if (v < 0) return "-";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    return buf;
-}
 
 std::string this_program() {
     std::error_code ec;
@@ -173,54 +160,6 @@ json row_json(const campaign_row& r) {
         for (const std::string& s : x.violations) violations.push_back(s);
     j["violations"] = violations;
     return j;
-}
-
-const char* const csv_columns[] = {"index",
-                                   "fault",
-                                   "kind",
-                                   "seed",
-                                   "frames",
-                                   "retry_limit",
-                                   "expected",
-                                   "actual",
-                                   "detected_by",
-                                   "reported_by",
-                                   "verdict_causes",
-                                   "frames_to_detect",
-                                   "frames_to_recover",
-                                   "failed_starts",
-                                   "pairs_discarded",
-                                   "pairs_used_after_onset",
-                                   "unsynced_pairs_used",
-                                   "misses",
-                                   "false_alarms",
-                                   "sync_errors",
-                                   "pairs_forwarded",
-                                   "pairs_in_step",
-                                   "pairs_processed",
-                                   "pairs_dropped",
-                                   "pairs_unaccounted",
-                                   "unreported_sync_errors",
-                                   "unreported_overflows",
-                                   "identity_checked",
-                                   "identity_mismatches",
-                                   "hard_error_ms",
-                                   "contract_ok",
-                                   "wall_s",
-                                   "violations"};
-
-std::string csv_value(const json& j, const char* key) {
-    if (!j.contains(key) || j[key].is_null()) return "";
-    const json& v = j[key];
-    if (v.is_string()) return csv_field(v.get<std::string>());
-    if (v.is_array()) {
-        std::string all;
-        for (const json& s : v) all += (all.empty() ? "" : "; ") + s.get<std::string>();
-        return csv_field(all);
-    }
-    if (v.is_boolean()) return v.get<bool>() ? "1" : "0";
-    if (v.is_number_float()) return fmt(v.get<double>(), 3);
-    return v.dump();
 }
 
 // The shard's runs whose spec matches --match A|B (contains A or B).
@@ -404,54 +343,10 @@ void run_plan(const campaign_options& o, const std::vector<campaign_run>& plan,
     tokens.close_fds();
 }
 
-json campaign_json(const campaign_options& o, const std::vector<campaign_row>& rows,
-                   const json& all, double wall) {
-    int broken = 0, clean_frames = 0, false_alarms = 0;
-    for (const campaign_row& r : rows) {
-        broken += !r.ok();
-        if (r.ran && r.run.fault.empty()) {
-            clean_frames += r.run.frames;
-            false_alarms += r.result.run.false_alarms;
-        }
-    }
-    return {{"campaign", o.name},
-            {"shard", std::to_string(o.shard) + "/" + std::to_string(o.shards)},
-            {"seeds", o.seeds},
-            {"jobs", o.jobs},
-            {"snapshots", o.snapshots},
-            {"runs", rows.size()},
-            {"contract_broken", broken},
-            {"clean_frames", clean_frames},
-            {"clean_false_alarms", false_alarms},
-            {"wall_s", wall},
-            {"rows", all}};
-}
-
-void write_csv(const std::string& path, const json& all) {
-    std::ofstream csv(path);
-    for (size_t c = 0; c < std::size(csv_columns); ++c) csv << (c ? "," : "") << csv_columns[c];
-    csv << "\n";
-    for (const json& r : all) {
-        for (size_t c = 0; c < std::size(csv_columns); ++c)
-            csv << (c ? "," : "") << csv_value(r, csv_columns[c]);
-        csv << "\n";
-    }
-}
-
-// campaign.json, campaign.csv and campaign.txt in the output folder.
-void write_files(const campaign_options& o, const std::vector<campaign_row>& rows, double wall) {
-    json all = json::array();
-    for (const campaign_row& r : rows) all.push_back(row_json(r));
-    std::ofstream(o.out_dir + "/campaign.json")
-        << campaign_json(o, rows, all, wall).dump(2) << "\n";
-    write_csv(o.out_dir + "/campaign.csv", all);
-    std::ofstream(o.out_dir + "/campaign.txt") << campaign_table(rows, o, wall);
-}
-
 }  // namespace
 
 std::vector<campaign_row> run_campaign(const campaign_options& given, std::FILE* log,
-                                       std::string* error) {
+                                       std::string* error, json* document) {
     campaign_options o = given;
     if (o.binary.empty()) o.binary = this_program();
     if (o.out_dir.empty()) o.out_dir = "campaign-" + o.name;
@@ -467,72 +362,13 @@ std::vector<campaign_row> run_campaign(const campaign_options& given, std::FILE*
     run_plan(o, plan, rows, log);
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    write_files(o, rows, wall);
+    json all = json::array();
+    for (const campaign_row& r : rows) all.push_back(row_json(r));
+    json doc = campaign_document(o.name, std::to_string(o.shard) + "/" + std::to_string(o.shards),
+                                 o.seeds, o.jobs, o.snapshots, wall, std::move(all));
+    if (!write_campaign_files(o.out_dir, doc, error)) return {};
+    if (document) *document = std::move(doc);
     return rows;
-}
-
-std::string campaign_table(const std::vector<campaign_row>& rows, const campaign_options& o,
-                           double wall_s) {
-    std::ostringstream out;
-    char line[512];
-    std::snprintf(line, sizeof line,
-                  "%-4s %-46s %5s %3s  %-22s %-13s %-12s %4s %4s %4s %4s %4s %4s %4s %4s %4s "
-                  "%s\n",
-                  "run", "fault", "seed", "fr", "expected", "actual", "detected_by", "det", "rec",
-                  "disc", "fwd", "proc", "drop", "unsy", "miss", "fals", "contract");
-    out << line;
-    int broken = 0, clean_frames = 0, false_alarms = 0, unsynced = 0, forked = 0;
-    for (const campaign_row& r : rows) {
-        const std::string fault = r.run.fault.empty() ? "clean" : r.run.fault;
-        if (!r.ran) {
-            std::snprintf(line, sizeof line, "%-4d %-46s %5llu %3d  NOT RUN: %s\n", r.run.index,
-                          fault.c_str(), static_cast<unsigned long long>(r.run.seed), r.run.frames,
-                          r.error.c_str());
-            out << line;
-            ++broken;
-            continue;
-        }
-        const run_observation& run = r.result.run;
-        const verdict& v = r.result.verdicts.front();
-        const fault_observation* f = run.faults.empty() ? nullptr : &run.faults[0];
-        const auto opt = [](bool have, int v) {
-            return have ? std::to_string(v) : std::string("-");
-        };
-        std::snprintf(
-            line, sizeof line,
-            "%-4d %-46s %5llu %3d  %-22s %-13s %-12s %4s %4s %4d %4d %4d %4d %4d %4d %4d %s\n",
-            r.run.index, fault.c_str(), static_cast<unsigned long long>(r.run.seed), r.run.frames,
-            v.expected_text.c_str(), outcome_name(v.actual), f ? f->detected_by.c_str() : "-",
-            opt(f && f->detected, f ? f->frames_to_detect : 0).c_str(),
-            opt(f && f->recovered, f ? f->frames_to_recover : 0).c_str(),
-            f ? f->pairs_discarded : run.card_sync_errors + run.card_overflows, run.pairs_forwarded,
-            run.pairs_processed, run.pairs_dropped, run.unsynced_pairs_used, run.misses,
-            run.false_alarms, r.ok() ? "ok" : "BROKEN");
-        out << line;
-        for (const verdict& x : r.result.verdicts)
-            for (const std::string& why : x.violations) out << "       violation: " << why << "\n";
-        broken += !r.ok();
-        unsynced += run.unsynced_pairs_used;
-        forked += r.snapshot_ms >= 0;
-        if (r.run.fault.empty()) {
-            clean_frames += r.run.frames;
-            false_alarms += run.false_alarms;
-        }
-    }
-    std::snprintf(line, sizeof line,
-                  "\ncampaign %s shard %d/%d: %zu runs, %d break the contract; clean "
-                  "frames %d with %d false alarms; unsynced pairs used (all runs) %d; wall %.1f s "
-                  "with %d jobs, %d runs forked from snapshots\n",
-                  o.name.c_str(), o.shard, o.shards, rows.size(), broken, clean_frames,
-                  false_alarms, unsynced, wall_s, o.jobs, forked);
-    out << line;
-    out << "columns: det = frames from onset to detection, rec = frames from detection to the "
-           "first in-step pair forwarded, disc = pairs discarded (SYNC_ERROR + OVERFLOW) from the "
-           "onset, fwd / proc / drop = pairs forwarded by the card / processed / dropped by the "
-           "firmware's overrun policy, unsy = unsynced pairs used, miss = out-of-step pairs "
-           "forwarded, fals = false "
-           "alarms\n";
-    return out.str();
 }
 
 }  // namespace faults

@@ -70,13 +70,10 @@ struct campaign_row {
     bool ok() const { return ran && result.contract_ok(); }
 };
 
-// Runs the campaign; returns the rows (in plan order) and writes the files.
+// Runs the campaign; returns the rows (in plan order) and writes the files
+// (campaign_files.h), *document = campaign.json's content if given.
 // Progress lines go to `log` (may be null).
 std::vector<campaign_row> run_campaign(const campaign_options& options, std::FILE* log,
-                                       std::string* error);
-
-// The readable table (campaign.txt).
-std::string campaign_table(const std::vector<campaign_row>& rows, const campaign_options& options,
-                           double wall_s);
+                                       std::string* error, nlohmann::json* document = nullptr);
 
 }  // namespace faults

@@ -1,10 +1,11 @@
 #include "tb/app/faults/faults_command.h"
 
 #include <CLI/CLI.hpp>
-#include <chrono>
 #include <cstdio>
+#include <filesystem>
 
 #include "tb/app/faults/campaign.h"
+#include "tb/app/faults/campaign_files.h"
 #include "tb/app/faults/fault_spec.h"
 
 namespace faults {
@@ -35,6 +36,32 @@ faults_command::faults_command(CLI::App& app, extensions_factory make_extensions
     m_app->add_option(
         "--match", m_match,
         "only the runs whose spec contains TEXT (A|B: either; 'clean': the clean runs)");
+    cli::add_slurm_options(m_app, &m_slurm);
+}
+
+int faults_command::emit_slurm(const campaign_options& o) {
+    if (o.shards != 1) return bad_input("--emit-slurm: the array makes the shards; no --shard");
+    std::string error;
+    if (o.out_dir.empty())
+        return bad_input("--emit-slurm: give --out DIR (on a shared filesystem)");
+    std::error_code ec;
+    std::vector<std::string> command = {
+        std::filesystem::read_symlink("/proc/self/exe", ec).string(), "faults", "--campaign",
+        o.name};
+    if (o.seeds) command.insert(command.end(), {"--seeds", std::to_string(o.seeds)});
+    if (!o.binary.empty())
+        command.insert(command.end(), {"--binary", cli::absolute_path(o.binary)});
+    if (!o.match.empty()) command.insert(command.end(), {"--match", o.match});
+    if (o.keep_runs) command.push_back("--keep-runs");
+    if (!o.snapshots) command.push_back("--no-snapshots");
+    const std::string sbatch =
+        cli::write_slurm_array(m_slurm, "stereosim-faults", command, o.out_dir, &error);
+    if (sbatch.empty()) return bad_input(error);
+    const std::string dir = cli::absolute_path(o.out_dir);
+    std::printf(
+        "written: %s/job.sbatch (%d tasks)\nsubmit: %s\nthen:   %s merge %s/shard-* --out %s\n",
+        dir.c_str(), m_slurm.tasks, sbatch.c_str(), command[0].c_str(), dir.c_str(), dir.c_str());
+    return 0;
 }
 
 int faults_command::execute() {
@@ -69,13 +96,13 @@ int faults_command::execute() {
         };
     }
     std::string error;
-    const auto t0 = std::chrono::steady_clock::now();
-    const std::vector<campaign_row> rows = run_campaign(o, stderr, &error);
+    if (!cli::check_slurm_options(m_slurm, &error)) return bad_input(error);
+    if (m_slurm.emit) return emit_slurm(o);
+    nlohmann::json document;
+    const std::vector<campaign_row> rows = run_campaign(o, stderr, &error, &document);
     if (!error.empty()) return bad_input(error);
-    const double wall =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (o.out_dir.empty()) o.out_dir = "campaign-" + o.name;
-    std::fputs(campaign_table(rows, o, wall).c_str(), stdout);
+    std::fputs(campaign_table(document).c_str(), stdout);
     std::printf("written: %s/campaign.json, campaign.csv, campaign.txt\n", o.out_dir.c_str());
     for (const campaign_row& r : rows)
         if (!r.ok()) return 1;

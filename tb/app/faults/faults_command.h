@@ -2,12 +2,15 @@
 //   stereosim faults --list
 //   stereosim faults --campaign smoke|full [--seeds N] [--jobs J] [--shard K/M] [--out DIR]
 //                    [--keep-runs] [--match TEXT] [--no-snapshots]
+//                    [--emit-slurm [--slurm-tasks M ...]]  (docs/cluster.md)
 // Exit codes: 0 every run kept the contract, 1 a run broke it (or did not
 // run), 2 bad input.
 #pragma once
 
 #include <string>
 
+#include "tb/app/cli/slurm_job.h"
+#include "tb/app/faults/campaign.h"
 #include "tb/app/faults/snapshots.h"
 
 namespace CLI {
@@ -37,6 +40,10 @@ class faults_command {
     std::string m_out;
     std::string m_binary;
     std::string m_match;
+    cli::slurm_options m_slurm;
+
+    // The Slurm job array of this campaign's shards (--emit-slurm).
+    int emit_slurm(const campaign_options& o);
 };
 
 }  // namespace faults

@@ -106,7 +106,7 @@ bool trajectory_series_present(const std::string& csv_path, bool* truth, bool* e
     return true;
 }
 
-bool run_gnuplot(const std::string& dir, std::string* error) {
+bool run_gnuplot(const std::string& dir, std::string* error, const std::string& script) {
     // gnuplot runs in DIR (the script's relative paths); stdout and stderr
     // kept off the terminal (its warnings about series with no points, e.g.
     // a run with no 3D estimate, are not the user's concern: a run is quiet
@@ -123,7 +123,7 @@ bool run_gnuplot(const std::string& dir, std::string* error) {
             dup2(fileno(null), 1);
             dup2(fileno(null), 2);
         }
-        char* const argv[] = {const_cast<char*>("gnuplot"), const_cast<char*>("trajectory.gp"),
+        char* const argv[] = {const_cast<char*>("gnuplot"), const_cast<char*>(script.c_str()),
                               nullptr};
         execvp("gnuplot", argv);
         _exit(127);
@@ -137,7 +137,7 @@ bool run_gnuplot(const std::string& dir, std::string* error) {
         if (WIFEXITED(status) && WEXITSTATUS(status) == 127)
             *error = "gnuplot not found (scripts/install-deps installs gnuplot-nox)";
         else
-            *error = "gnuplot failed on " + dir + "/trajectory.gp";
+            *error = "gnuplot failed on " + dir + "/" + script;
     }
     return false;
 }

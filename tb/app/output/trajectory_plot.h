@@ -28,8 +28,10 @@ std::string trajectory_gnuplot_script(bool with_truth = true, bool with_estimate
 // estimated position. False if the file cannot be read.
 bool trajectory_series_present(const std::string& csv_path, bool* truth, bool* estimates);
 
-// Runs gnuplot on DIR/trajectory.gp in DIR (frames.csv must be there);
-// false and *error (one line) if gnuplot is missing or failed.
-bool run_gnuplot(const std::string& dir, std::string* error);
+// Runs gnuplot on DIR/SCRIPT in DIR (the script's data must be there:
+// frames.csv for trajectory.gp); false and *error (one line) if gnuplot is
+// missing or failed. The sweep's fit map uses it too.
+bool run_gnuplot(const std::string& dir, std::string* error,
+                 const std::string& script = "trajectory.gp");
 
 }  // namespace output
