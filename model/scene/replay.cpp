@@ -1,5 +1,6 @@
 #include "model/scene/replay.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -309,6 +310,24 @@ void add_truth_row(const std::vector<std::string>& fields, int frame_column, int
         fail("frame " + std::to_string(frame) + " listed twice");
 }
 
+// x/y/z and u/v come in groups: a group half given is a malformed file.
+void check_object_columns(const std::string& file, const replay_truth& truth) {
+    const auto count = [&](std::initializer_list<const char*> group) {
+        int n = 0;
+        for (const char* name : group)
+            for (const std::string& c : truth.columns) n += c == name;
+        return n;
+    };
+    const int xyz = count({"x_mm", "y_mm", "z_mm"});
+    const int uv = count({"u_right_px", "v_right_px"});
+    if (xyz != 0 && xyz != 3)
+        throw_at("replay truth", file, 1, "x_mm, y_mm and z_mm come together");
+    if (uv != 0 && uv != 2)
+        throw_at("replay truth", file, 1, "u_right_px and v_right_px come together");
+    if (count({"z_visible_mm"}) && xyz == 0)
+        throw_at("replay truth", file, 1, "z_visible_mm needs x_mm, y_mm and z_mm");
+}
+
 replay_truth read_truth_csv(const std::string& file, int frames) {
     std::ifstream csv(file);
     if (!csv) throw_at("replay truth", file, 0, "cannot open");
@@ -355,6 +374,39 @@ replay::replay(const std::string& manifest_path, int expected_width, int expecte
         });
     }
     if (!m.truth_path.empty()) m_truth = read_truth_csv(m.truth_path, m_frames);
+    check_object_columns(m.truth_path, m_truth);
+}
+
+bool replay::object_truth(int frame, replay_object_truth* out) const {
+    const auto has = [this](const char* column) {
+        for (const std::string& c : m_truth.columns)
+            if (c == column) return true;
+        return false;
+    };
+    if (!m_truth.rows.count(frame)) return false;
+    replay_object_truth t;
+    t.has_point = has("x_mm");  // x, y, z come together (checked at load)
+    t.has_pixel = has("u_right_px") || t.has_point;
+    if (!t.has_point && !t.has_pixel) return false;
+    ball_truth& b = t.ball;
+    if (t.has_point) {
+        b.centre_m = {m_truth.value(frame, "x_mm") / 1000.0, m_truth.value(frame, "y_mm") / 1000.0,
+                      m_truth.value(frame, "z_mm") / 1000.0};
+        b.visible_mean_depth_m =
+            has("z_visible_mm") ? m_truth.value(frame, "z_visible_mm") / 1000.0 : b.centre_m.z;
+        b.disparity_visible_px =
+            m_calibration.focal_px * m_calibration.baseline_m / b.visible_mean_depth_m;
+    }
+    const vec2 pixel = has("u_right_px") ? vec2{m_truth.value(frame, "u_right_px"),
+                                                m_truth.value(frame, "v_right_px")}
+                                         : camera(camera_id::right).project(b.centre_m);
+    b.right.valid = true;
+    b.right.ellipse_centre = b.right.point_centre = pixel;
+    // A one-pixel box at the point: the scoring's "object in the right view".
+    b.right.pixel_box = {static_cast<int>(std::lround(pixel.x)),
+                         static_cast<int>(std::lround(pixel.y)), 1, 1};
+    *out = t;
+    return true;
 }
 
 pinhole_camera replay::camera(camera_id id) const {

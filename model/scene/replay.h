@@ -20,6 +20,17 @@
 //
 // Ground-truth CSV: a header row of column names, one of them "frame" (the
 // frame index 0 .. frames-1), then one row of numbers per frame listed.
+// The moving object's truth, every column optional (docs/replay.md):
+//   x_mm,y_mm,z_mm        the object's reference point (e.g. a ball's centre)
+//                         in the RIGHT camera's frame, mm: X right, Y down, Z
+//                         forward (model/scene/camera.h); the three together
+//   u_right_px,v_right_px that point's pixel in the right image (pixel-index
+//                         coordinates); the two together; without them the
+//                         point is projected with the right camera
+//   z_visible_mm          depth of the visible surface, mm: scored instead of
+//                         z_mm where present (a stereo match sees the surface)
+// A frame is scored in 3D with x/y/z, by its box centre with u/v or x/y/z.
+// Unknown columns are kept and ignored. A frame with no row has no truth.
 //
 // Errors (std::runtime_error, naming the file and line): unreadable or
 // malformed manifest (unknown or repeated key, missing key, bad number, bad
@@ -36,6 +47,7 @@
 
 #include "model/scene/camera.h"
 #include "model/scene/images.h"
+#include "model/scene/sequence.h"
 
 namespace scene {
 
@@ -52,6 +64,16 @@ struct replay_truth {
 
     // Value of a column for a frame; throws std::out_of_range if either is absent.
     double value(int frame, const std::string& column) const;
+};
+
+// A frame's object truth from the CSV, as the scoring of a rendered ball
+// wants it (ball.centre_m, visible_mean_depth_m, right.ellipse_centre,
+// disparity_visible_px); has_point: x/y/z given (3D scored), has_pixel: the
+// right image point known (box centre scored).
+struct replay_object_truth {
+    bool has_point = false;
+    bool has_pixel = false;
+    ball_truth ball;
 };
 
 class replay {
@@ -72,6 +94,9 @@ class replay {
     pinhole_camera camera(camera_id id) const;
     bool has_truth() const { return !m_truth.columns.empty(); }
     const replay_truth& truth() const { return m_truth; }
+    // The object's truth at `frame`; false if the frame has no row or the
+    // CSV names neither x/y/z nor u/v.
+    bool object_truth(int frame, replay_object_truth* out) const;
 
     // File of a camera's frame (after the after_last policy).
     std::string path(camera_id id, uint64_t index) const;

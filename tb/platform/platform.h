@@ -85,6 +85,8 @@ class platform_top {
     void set_progress(std::function<void(int periods_done)> hook) { m_progress = std::move(hook); }
 
     const platform_config& config() const { return m_config; }
+    // The replay the sensors show (config.replay_manifest), or null.
+    const scene::replay* replay() const { return m_replay.get(); }
     const scene::sequence& sequence() const { return m_sequence; }
     const recording_source& source() const { return m_source; }
     island& cycle_island() { return *m_island; }

@@ -66,7 +66,12 @@ platform::frame_record record_of(const platform_top& top, uint64_t scene_frame,
     record.index = static_cast<int>(scene_frame);
     record.time_s = top.source().scene_time_s(1, scene_frame);
     record.out = out;
-    if (!scenario.scene.balls.empty() && record.time_s >= 0.0) {
+    scene::replay_object_truth replayed;
+    if (top.replay() && top.replay()->object_truth(static_cast<int>(scene_frame), &replayed)) {
+        record.has_truth = true;
+        record.truth_has_point = replayed.has_point;
+        record.truth = replayed.ball;
+    } else if (!scenario.scene.balls.empty() && record.time_s >= 0.0) {
         record.has_truth = true;
         record.truth =
             scene::ball_truth_at(scenario.scene.rig, scenario.scene.balls[0], record.time_s);
@@ -188,8 +193,23 @@ void check_integrity(const platform_top& top, scoreboard_report& r) {
     }
 }
 
-// The first scene frame whose ball centre moved (scene truth), or -1.
+// A replay's first frame whose object truth (point, else pixel) differs from
+// the frame before's, or -1.
+int first_moving_replay_frame(const scene::replay& replay) {
+    scene::replay_object_truth before, now;
+    for (int k = 1; k < replay.frame_count(); ++k) {
+        if (!replay.object_truth(k - 1, &before) || !replay.object_truth(k, &now)) continue;
+        const scene::vec3 a = before.ball.centre_m, b = now.ball.centre_m;
+        const scene::vec2 p = before.ball.right.ellipse_centre, q = now.ball.right.ellipse_centre;
+        if (a.x != b.x || a.y != b.y || a.z != b.z || p.x != q.x || p.y != q.y) return k;
+    }
+    return -1;
+}
+
+// The first scene frame whose ball centre moved (scene truth, or a replay's
+// truth CSV), or -1.
 int first_moving_scene_frame(const platform_top& top) {
+    if (top.replay()) return first_moving_replay_frame(*top.replay());
     const scene::scenario& scenario = top.config().scenario;
     if (scenario.scene.balls.empty()) return -1;
     const scene::ball_desc& ball = scenario.scene.balls[0];

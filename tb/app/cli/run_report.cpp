@@ -112,11 +112,20 @@ json pair_summary_json(const platform::pair_check& pair, const platform::pair_bu
             {"latency_ms", pair.processed ? json(round6(pair.latency_ms)) : json(nullptr)}};
 }
 
-json truth_json(const scene::ball_truth& t) {
-    return {{"x", round6(t.centre_m.x * 1000.0)},
-            {"y", round6(t.centre_m.y * 1000.0)},
-            {"z", round6(t.centre_m.z * 1000.0)},
-            {"z_visible", round6(t.visible_mean_depth_m * 1000.0)}};
+// The object's truth: its point (null where a replay's truth CSV gives only
+// the pixel) and its pixel in the right image (the ellipse centre of a
+// rendered ball).
+json truth_json(const platform::frame_record& record) {
+    const scene::ball_truth& t = record.truth;
+    const auto mm = [&](double m) {
+        return record.truth_has_point ? json(round6(m * 1000.0)) : json(nullptr);
+    };
+    return {{"x", mm(t.centre_m.x)},
+            {"y", mm(t.centre_m.y)},
+            {"z", mm(t.centre_m.z)},
+            {"z_visible", mm(t.visible_mean_depth_m)},
+            {"u_right_px", round6(t.right.ellipse_centre.x)},
+            {"v_right_px", round6(t.right.ellipse_centre.y)}};
 }
 
 json errors_json(const platform::frame_errors& e) {
@@ -149,7 +158,7 @@ void add_pair_fields(json& row, const platform::pair_check* pair, const platform
                            {"y", round6(out.point.y / 1000.0)},
                            {"z", round6(out.point.z / 1000.0)}};
     }
-    if (pair->record.has_truth) row["truth"] = truth_json(pair->record.truth);
+    if (pair->record.has_truth) row["truth"] = truth_json(pair->record);
     row["errors"] = errors_json(pair->errors);
 }
 

@@ -36,6 +36,7 @@ const char* const figure_columns[][2] = {
     {"ran", "/ran"},
     {"verdict", "/verdict"},
     {"min_slack_ms", "/min_slack_ms"},
+    {"overrun_ms_max", "/overrun_ms_max"},
     {"first_overrun_resource", "/first_overrun/resource"},
     {"first_overrun_stage", "/first_overrun/stage"},
     {"first_overrun_period", "/first_overrun/period"},
@@ -121,7 +122,11 @@ point_outcome outcome_of(const json& point) {
         o.known = true;
         o.fits = point["verdict"] == "within";
         const json& slack = point.value("min_slack_ms", json());
-        o.slack_ms = slack.is_number() ? slack.get<double>() : (o.fits ? 0.0 : -24.5);
+        const json& overrun = point.value("overrun_ms_max", json());
+        if (o.fits)
+            o.slack_ms = slack.is_number() ? slack.get<double>() : 0.0;
+        else  // over budget: minus the largest overrun (a drop or overflow counts 0)
+            o.slack_ms = overrun.is_number() ? -overrun.get<double>() : 0.0;
         o.source = "cosim";
         return o;
     }

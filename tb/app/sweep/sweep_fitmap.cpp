@@ -1,5 +1,7 @@
-// fitmap.png (docs/sweep.md): the minimum slack per period over the first two
-// keys of the grid as a heat map (red over budget, green margin), each cell
+// fitmap.png (docs/sweep.md): the margin over the first two keys of the grid
+// as a heat map (the minimum slack per period where the point fits, minus
+// its largest overrun where it does not: red over budget, green margin),
+// each cell
 // marked with its verdict ("fits" / "OVER"; in parentheses where only the
 // closed form judged it), one panel per combination of further keys. The
 // data (fitmap.dat) and script (fitmap.gp) stay beside it to restyle.
@@ -98,7 +100,7 @@ bool write_fitmap(const std::string& dir, const json& sweep, std::string* warnin
        << "set output 'fitmap.png'\n"
        << "set palette defined (-1 '#c0392b', 0 '#f7f7f7', 1 '#1e8449')\n"
        << "set cbrange [" << -extent << ":" << extent << "]\n"
-       << "set cblabel 'min slack per period, ms (negative: over budget)'\n"
+       << "set cblabel 'margin, ms: min slack per period, or minus the largest overrun'\n"
        << "set xlabel " << gp_quote(x_axis.at("key")) << "\nset ylabel "
        << gp_quote(y_axis.at("key")) << "\n"
        << "set xtics " << tics(x_axis) << " rotate by 45 right\nset ytics " << tics(y_axis) << "\n"
@@ -110,7 +112,7 @@ bool write_fitmap(const std::string& dir, const json& sweep, std::string* warnin
         gp << "set title " << gp_quote(order[i].empty() ? "stereosim sweep: fit map" : order[i])
            << "\nplot 'fitmap.dat' index " << i
            << " using 1:2:($1-0.5):($1+0.5):($2-0.5):($2+0.5):3 with boxxy fs solid 1.0 "
-              "noborder lc palette, '' index "
+              "lc palette, '' index "
            << i << " using 1:2:4 with labels font 'sans,8'\n";
     }
     if (n > 1) gp << "unset multiplot\n";

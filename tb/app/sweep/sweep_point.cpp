@@ -70,6 +70,11 @@ bool read_point_report(const json& report, json* point, std::string* error) {
             report.at("verdict").get<std::string>() == "within_budget" ? "within" : "over";
         const json& overruns = report.at("overruns");
         p["first_overrun"] = json(nullptr);
+        double worst = 0.0;  // the largest overrun: value over its limit
+        for (const json& o : overruns)
+            worst =
+                std::max(worst, o.at("value_ms").get<double>() - o.at("limit_ms").get<double>());
+        p["overrun_ms_max"] = overruns.empty() ? json(nullptr) : json(round6(worst));
         if (!overruns.empty()) {
             const json& o = overruns.front();
             p["first_overrun"] = {{"resource", o.at("resource")}, {"stage", o.at("stage")},

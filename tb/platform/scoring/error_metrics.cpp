@@ -24,7 +24,7 @@ frame_errors score_frame(const frame_record& record) {
         e.box_centre_dy_px = 0.5 * out.box_right.center_y2() - truth.right.ellipse_centre.y;
         e.box_centre_err_px = std::hypot(e.box_centre_dx_px, e.box_centre_dy_px);
     }
-    if (out.has_point) {
+    if (out.has_point && record.truth_has_point) {
         e.point_scored = true;
         e.est_mm[0] = out.point.x / 1000.0;
         e.est_mm[1] = out.point.y / 1000.0;

@@ -9,12 +9,15 @@
 namespace platform {
 
 // One processed pair: the firmware's output and the truth of the scene's
-// first ball (has_truth is false for a scene with no ball).
+// first ball (has_truth is false for a scene with no ball), or of a
+// replay's object (truth_has_point false when its truth CSV gives only the
+// pixel: then only the box centre is scored).
 struct frame_record {
     int index = 0;
     double time_s = 0.0;
     dsp::frame_output out;
     bool has_truth = false;
+    bool truth_has_point = true;
     scene::ball_truth truth;
 };
 
