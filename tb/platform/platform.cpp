@@ -57,11 +57,8 @@ platform_top::platform_top(const platform_config& config)
         m_source.use_replay(m_replay_source.get());
     }
     // Kernel cycle figures for this DSK's clocks (SDRAM stalls depend on the
-    // CPU / EMIF ratio, dsp/kernel_costs.h).
-    dsp::c64x::model_params params;
-    params.cpu_hz = static_cast<uint64_t>(config.dsk.cpu_hz);
-    params.emif_hz = static_cast<uint64_t>(config.dsk.emif_hz);
-    dsp::cost::set_model(dsp::c64x::cost_model(params));
+    // CPU / EMIF ratio, dsp/kernel_costs.h) and compiled-C factor.
+    dsp::cost::set_model(cost_model_of(config));
 
     m_cpu = std::make_unique<c6416::c6416_sc>("dsk", cpu_config(config));
     m_target = std::make_unique<emif::emif_tlm_target>("emifa", m_engine);

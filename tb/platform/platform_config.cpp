@@ -1,5 +1,7 @@
 #include "tb/platform/platform_config.h"
 
+#include <cmath>
+
 #include "tb/platform/scoring/frame_record.h"
 
 namespace platform {
@@ -21,6 +23,15 @@ emif::emif_config engine_config(const platform_config& config) {
     // 0x750 at 120 MHz, hardware-facts.md section 3).
     e.sdram.refresh_period = static_cast<uint32_t>(config.dsk.emif_hz * 156 / 10000000);
     return e;
+}
+
+dsp::c64x::cost_model cost_model_of(const platform_config& config) {
+    dsp::c64x::model_params params;
+    params.cpu_hz = static_cast<uint64_t>(config.dsk.cpu_hz);
+    params.emif_hz = static_cast<uint64_t>(config.dsk.emif_hz);
+    params.compiled_c_factor_q8 =
+        static_cast<uint32_t>(std::lround(config.compiled_c_factor * 256.0));
+    return dsp::c64x::cost_model(params);
 }
 
 dsp::control_program_config program_config(const platform_config& config) {

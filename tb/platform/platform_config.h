@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "dsp/c64x_cost_model.h"
 #include "dsp/control_program.h"
 #include "dsp/controller.h"
 #include "model/c6416/dsk_profile.h"
@@ -69,6 +70,10 @@ struct platform_config {
     // (docs/c6416.md): bus time that competes with the capture (issue 5).
     dsp::cost::memory frame_memory = dsp::cost::memory::l2;
     bool sdram_traffic_on_bus = true;
+    // The cost model's compiled-C factor (dsp/c64x_cost_model.h): 1 = the
+    // hand-scheduled kernels the profiles describe; the `paper` scenario
+    // models the paper's compiled C (docs/paper.md).
+    double compiled_c_factor = 1.0;
     // The firmware's card watchdog (timer 1): every period it reads the card's
     // event counters over the EMIF; 0: none.
     uint32_t watchdog_ms = dsp::control_program_config{}.watchdog_ms;
@@ -113,5 +118,8 @@ dsp::controller_config pipeline_config(const platform_config& config);
 dsp::control_program_config program_config(const platform_config& config);
 // The EMIF engine's configuration (ECLK, SDRAM refresh) for `config`.
 emif::emif_config engine_config(const platform_config& config);
+// The kernel cost model for `config`: its CPU / EMIF clocks (SDRAM stalls
+// depend on their ratio) and compiled-C factor (dsp/kernel_costs.h).
+dsp::c64x::cost_model cost_model_of(const platform_config& config);
 
 }  // namespace platform

@@ -159,6 +159,9 @@ std::vector<config_key> firmware_keys() {
                "docs/firmware.md)"),
         boolean("firmware.sdram_traffic_on_bus", setup_field(&run_setup::sdram_traffic_on_bus),
                 "the firmware's SDRAM traffic goes out on EMIFA (competes with capture)"),
+        number("firmware.compiled_c_factor", setup_field(&run_setup::compiled_c_factor), 1.0, 100.0,
+               "the cost model's compiled-C factor: 1 hand-scheduled kernels, more: compiled C "
+               "(docs/paper.md)"),
         integer("firmware.watchdog_ms", setup_field(&run_setup::watchdog_ms), 0, 10000,
                 "period of the firmware's card watchdog, ms (0: off)"),
         integer("firmware.card_start_timeout", setup_field(&run_setup::card_start_timeout), 1,

@@ -65,6 +65,7 @@ struct run_setup {
     int watchdog_ms = static_cast<int>(dsp::control_program_config{}.watchdog_ms);
     // The card's reset value, 2 frames (docs/card-registers.md).
     int card_start_timeout = static_cast<int>(dsp::card_regs::start_timeout_reset);
+    double compiled_c_factor = 1.0;  // the cost model's (docs/paper.md)
 
     int frames = 12;
     int64_t seed = 3;

@@ -92,6 +92,7 @@ bool write_fitmap(const std::string& dir, const json& sweep, std::string* warnin
         }
         dat << "\n\n";
     }
+    dat.close();  // complete on disk before gnuplot reads it
     const size_t n = order.size();
     const int cols = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
     const int rows = static_cast<int>((n + cols - 1) / cols);

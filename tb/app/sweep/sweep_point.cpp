@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "dsp/kernel_costs.h"
 #include "tb/platform/closed_form.h"
 #include "tb/platform/host/stereo_runner.h"
 #include "tb/platform/platform_config.h"
@@ -20,12 +21,13 @@ double round6(double v) {
 
 // The setup with every key that cannot change the firmware's charged cycles
 // per pair at its defaults: the host run of one such setup serves them all.
+// The clocks stay: the kernels' SDRAM stalls depend on the CPU / EMIF ratio.
 std::string processing_key(const cli::run_setup& s) {
     cli::run_setup p = s;
     const cli::run_setup defaults;
+    p.cpu_mhz = s.effective_cpu_mhz();
+    p.eclk_mhz = s.effective_eclk_mhz();
     p.dsk_version = defaults.dsk_version;
-    p.cpu_mhz = defaults.cpu_mhz;
-    p.eclk_mhz = defaults.eclk_mhz;
     p.card_setup = defaults.card_setup;
     p.card_strobe = defaults.card_strobe;
     p.card_hold = defaults.card_hold;
@@ -45,12 +47,17 @@ std::string processing_key(const cli::run_setup& s) {
 // still in capture and processing when the run ends); frame 0 goes first
 // here as the firmware's history.
 double host_max_pair_cycles(const platform::platform_config& config) {
+    // The platform's cost model for this configuration (clocks, compiled-C
+    // factor), as the co-simulation sets it; the default back afterwards.
+    const dsp::c64x::cost_model before = dsp::cost::model();
+    dsp::cost::set_model(platform::cost_model_of(config));
     host::stereo_runner runner(config.scenario, platform::pipeline_config(config));
     uint64_t largest = 0;
     for (int n = 0; n <= std::max(0, config.frames - 3); ++n) {
         runner.step(n);
         largest = std::max(largest, runner.hal().frame_cycles_all());
     }
+    dsp::cost::set_model(before);
     return static_cast<double>(largest + config.capture_cycles);
 }
 
