@@ -1,7 +1,5 @@
 #include "tb/app/faults/campaign.h"
 
-#include <fcntl.h>
-#include <spawn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -17,10 +15,9 @@
 #include <optional>
 #include <sstream>
 
+#include "tb/app/cli/child_run.h"
 #include "tb/app/faults/campaign_files.h"
 #include "tb/platform/platform_config.h"
-
-extern char** environ;
 
 namespace faults {
 
@@ -62,33 +59,14 @@ pid_t spawn_run(const campaign_options& o, const campaign_run& r, const std::str
                 std::string* error) {
     std::vector<std::string> args = {o.binary, "run"};
     for (std::string& a : run_args(r, dir)) args.push_back(std::move(a));
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    const std::string log = dir + "/log.txt";
-    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
-                                     O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-    pid_t pid = -1;
-    const int rc = posix_spawn(&pid, o.binary.c_str(), &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (rc != 0) {
-        *error = "cannot start " + o.binary + ": " + std::strerror(rc);
-        return -1;
-    }
-    return pid;
+    return cli::spawn_logged(args, dir + "/log.txt", error);
 }
 
 void collect(campaign_row& row, const std::string& dir, int status) {
     row.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     std::ifstream in(dir + "/out/report.json");
     if (!in) {
-        std::ifstream log(dir + "/log.txt");
-        std::string line, last;
-        while (std::getline(log, line))
-            if (!line.empty()) last = line;
+        const std::string last = cli::last_line_of(dir + "/log.txt");
         row.error = "exit " + std::to_string(row.exit_code) + ", no report.json" +
                     (last.empty() ? "" : ": " + last);
         return;

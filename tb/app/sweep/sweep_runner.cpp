@@ -1,7 +1,5 @@
 #include "tb/app/sweep/sweep_runner.h"
 
-#include <fcntl.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -11,10 +9,9 @@
 #include <fstream>
 #include <map>
 
+#include "tb/app/cli/child_run.h"
 #include "tb/app/sweep/sweep_grid.h"
 #include "tb/app/sweep/sweep_point.h"
-
-extern char** environ;
 
 namespace sweep {
 
@@ -38,28 +35,7 @@ pid_t spawn_point(const run_request& r, const json& point, const std::string& di
     for (const auto& [key, value] : point.at("keys").items())
         args.insert(args.end(), {"--set", key + "=" + value_text(value)});
     args.insert(args.end(), {"--out", dir + "/out"});
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    const std::string log = dir + "/log.txt";
-    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
-                                     O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-    pid_t pid = -1;
-    const int rc = posix_spawn(&pid, r.binary.c_str(), &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (rc != 0) *error = "cannot start " + r.binary + ": " + std::strerror(rc);
-    return rc == 0 ? pid : -1;
-}
-
-std::string last_line(const std::string& path) {
-    std::ifstream in(path);
-    std::string line, last;
-    while (std::getline(in, line))
-        if (!line.empty()) last = line;
-    return last;
+    return cli::spawn_logged(args, dir + "/log.txt", error);
 }
 
 // The finished child's point: its figures, or why it has none.
@@ -76,7 +52,7 @@ bool collect(const run_request& r, json& point, const std::string& dir, int stat
             error = std::string("unreadable report.json: ") + e.what();
         }
     } else {
-        const std::string last = last_line(dir + "/log.txt");
+        const std::string last = cli::last_line_of(dir + "/log.txt");
         error = "exit " + std::to_string(code) + (last.empty() ? "" : ": " + last);
     }
     if (!ok) point["error"] = error;
