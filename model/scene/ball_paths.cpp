@@ -29,6 +29,11 @@ trajectory line_path(double depth_m, double speed, double start_s) {
     return trajectory::line({-0.25, -0.05, depth_m}, {1.0 * speed, 0.1 * speed, 0.0}, start_s);
 }
 
+trajectory pass_path(double depth_m, double speed, double start_s) {
+    return trajectory::line({-0.08 * depth_m, -0.02 * depth_m, depth_m},
+                            {0.26 * depth_m * speed, 0.02 * depth_m * speed, 0.0}, start_s);
+}
+
 trajectory resting_path(double depth_m) {
     return trajectory::still({-0.30, 0.0, depth_m});
 }

@@ -31,6 +31,14 @@ trajectory circling_path(double depth_m, double speed, double start_s);
 // (7 px per frame at 2.6 m).
 trajectory line_path(double depth_m, double speed, double start_s);
 
+// A slow pass across the middle of the view, the same in the image at any
+// depth: from (-0.08, -0.02, 1) x depth m at (0.26, 0.02, 0) x depth x speed
+// m/s, i.e. from 63 px left of and 16 px above the image centre, 5 px per
+// frame right and 0.4 px down at speed 1 (f = 789.47 px, 24.5 ms frames).
+// Made for objects of any size: a ball up to half the image wide stays
+// wholly inside the view for 30 frames.
+trajectory pass_path(double depth_m, double speed, double start_s);
+
 // At rest at (-0.30, 0, depth) m, where the throw starts.
 trajectory resting_path(double depth_m);
 

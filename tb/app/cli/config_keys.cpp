@@ -89,8 +89,9 @@ std::vector<config_key> scenario_keys() {
         integer("scenario.still_frames", scenario_field(&scenario_params::still_frames), 0, 1000,
                 "frames the ball rests before it moves"),
         choice("scenario.path", scenario_field(&scenario_params::path),
-               {"bounce", "circle", "line", "still"},
-               "the ball's path: thrown and bouncing, circling, a straight line, at rest"),
+               {"bounce", "circle", "line", "pass", "still"},
+               "the ball's path: thrown and bouncing, circling, a straight line, a slow pass "
+               "across the middle of the view, at rest"),
         // At most 4.5 m: the background plane is at 5 m.
         number("scenario.depth_m", scenario_field(&scenario_params::depth_m), 0.5, 4.5,
                "the ball's starting depth, m (circle: the depth of its plane)"),

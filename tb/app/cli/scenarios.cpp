@@ -80,6 +80,8 @@ scene::scenario build_scenario(const scenario_params& p, const scene::stereo_rig
         ball.path = scene::circling_path(p.depth_m, p.speed, start);
     else if (p.path == "line")
         ball.path = scene::line_path(p.depth_m, p.speed, start);
+    else if (p.path == "pass")
+        ball.path = scene::pass_path(p.depth_m, p.speed, start);
     else if (p.path == "still")
         ball.path = scene::resting_path(p.depth_m);
     else

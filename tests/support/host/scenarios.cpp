@@ -9,12 +9,13 @@ namespace host {
 namespace {
 
 // The default scene with one ball on `path`.
-scene::scenario one_ball_scenario(const scene::trajectory& path, int frames) {
+scene::scenario one_ball_scenario(const scene::trajectory& path, int frames,
+                                  double radius_m = 0.05) {
     scene::scenario s;
     s.scene.background =
         scene::background_desc::procedural_plane(scene::procedural_texture_params{}, 5.0);
     scene::ball_desc ball;
-    ball.radius_m = 0.05;  // DESIGN.md default ball
+    ball.radius_m = radius_m;  // DESIGN.md default ball: 0.05
     ball.path = path;
     s.scene.balls.push_back(ball);
     s.frame_count = frames;
@@ -32,6 +33,14 @@ scene::scenario circling_scenario(double depth_m, int still_frames, int frames) 
     return one_ball_scenario(
         scene::circling_path(depth_m, /*speed=*/1.0, scene::motion_start_s(still_frames, period)),
         frames);
+}
+
+scene::scenario pass_scenario(double depth_m, double ball_radius_m, int still_frames,
+                              int frames) {
+    const double period = scene::scenario{}.frame_period_s;
+    return one_ball_scenario(
+        scene::pass_path(depth_m, /*speed=*/1.0, scene::motion_start_s(still_frames, period)),
+        frames, ball_radius_m);
 }
 
 scene::scenario exit_return_scenario(int still_frames) {

@@ -19,6 +19,12 @@ scene::scenario static_scenario(int frames = 40);
 // accuracy range.
 scene::scenario circling_scenario(double depth_m, int still_frames = 4, int frames = 40);
 
+// A ball of radius ball_radius_m still for still_frames frames, then on
+// scene::pass_path (model/scene/ball_paths.h, also `--set scenario.path=pass`):
+// a slow pass across the middle of the view at depth_m, 5 px per frame.
+scene::scenario pass_scenario(double depth_m, double ball_radius_m, int still_frames = 3,
+                              int frames = 30);
+
 // The ball circles in the plane Z = 2.5 m, centre (0.7, 0, 2.5) m, radius
 // 0.5 m, at 1.2 m/s (~9 px per frame), starting at its leftmost point after
 // still_frames frames and going up. Its image leaves the right edge of the
