@@ -35,8 +35,7 @@ scene::scenario circling_scenario(double depth_m, int still_frames, int frames) 
         frames);
 }
 
-scene::scenario pass_scenario(double depth_m, double ball_radius_m, int still_frames,
-                              int frames) {
+scene::scenario pass_scenario(double depth_m, double ball_radius_m, int still_frames, int frames) {
     const double period = scene::scenario{}.frame_period_s;
     return one_ball_scenario(
         scene::pass_path(depth_m, /*speed=*/1.0, scene::motion_start_s(still_frames, period)),
