@@ -1,7 +1,7 @@
 // Stereo scenarios for the firmware's end-to-end tests and benchmarks, beside
-// scene::default_scenario (a thrown, bouncing ball at 2.6 m -> 1.6 m). All use the default rig and
-// the procedural background at 5 m; one ball, 5 cm but in pass_scenario. Frame n is taken at n
-// * 24.5 ms.
+// scene::default_scenario (a thrown, bouncing ball at 2.6 m -> 1.6 m). All use
+// the default rig and the procedural background at 5 m; one ball, 5 cm except
+// in pass_scenario. Frame n is taken at n * 24.5 ms.
 #pragma once
 
 #include "model/scene/sequence.h"
