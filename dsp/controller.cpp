@@ -41,8 +41,10 @@ int band_capacity_rows(const controller_config& config) {
     return config.track.max_size < config.max_height ? config.track.max_size : config.max_height;
 }
 
+// The refit region is the last box grown by its own size each side, clipped
+// to the frame: its mask row needs the frame's width (or height).
 int size_rule_side(const controller_config& config) {
-    return 3 * (config.track.max_size > 2 ? config.track.max_size : 2);
+    return config.max_width > config.max_height ? config.max_width : config.max_height;
 }
 
 int max_int(int a, int b) {
@@ -159,19 +161,20 @@ struct controller::impl {
     hal* hardware = nullptr;
     memory_plan plan;
 
-    rgb8* line_scratch = nullptr;     // one demosaiced row
-    uint8_t* right_gray[2] = {};      // f(t) and f(t-1); roles swap every pair
-    uint8_t* left_gray = nullptr;     // the current left gray frame
-    uint8_t* motion_mask = nullptr;   // packed Dif(t-2,t-1), then Dif(t-1,t)
-    uint8_t* refit_row = nullptr;     // one row of object(t-1) around the last box
-    int32_t* size_columns = nullptr;  // its set pixels per column and per row
-    int32_t* size_rows = nullptr;
+    rgb8* line_scratch = nullptr;    // one demosaiced row
+    uint8_t* right_gray[2] = {};     // f(t) and f(t-1); roles swap every pair
+    uint8_t* left_gray = nullptr;    // the current left gray frame
+    uint8_t* motion_mask = nullptr;  // packed Dif(t-2,t-1), then Dif(t-1,t)
+    uint8_t* refit_rows = nullptr;  // one row of Dif(t-2,t-1) and of Dif(t-1,t) around the last box
+    motion_blocks later_blocks;     // block groups of Dif(t-1,t); Dif(t-2,t-1)'s: the detector's
     uint8_t* edge_band_storage = nullptr;  // own Sobel bands, or null: inside f(t-1)
     int band_rows = 0;
 
     motion_detector detector;
     sad_tracker tracker;
 
+    // Disparities (Q8) of the depth range's ends, without the search margin.
+    int64_t far_disparity_q8 = 0, near_disparity_q8 = 0;
     int width = 0, height = 0;  // size of the pairs in the history
     int newest = 1;             // right_gray[newest] = f(t)
     int frames_in_history = 0;  // right frames seen, at most 3
@@ -183,9 +186,7 @@ struct controller::impl {
         for (auto* frame : right_gray) delete[] frame;
         delete[] left_gray;
         delete[] motion_mask;
-        delete[] refit_row;
-        delete[] size_columns;
-        delete[] size_rows;
+        delete[] refit_rows;
         delete[] edge_band_storage;
     }
 
@@ -224,7 +225,9 @@ memory_plan plan_memory(const controller_config& config) {
     const size_t side = static_cast<size_t>(max_int(config.track.max_size, 1));
     plan.tracker = side * side;
     const size_t region = static_cast<size_t>(size_rule_side(config));
-    plan.refit = region + 2 * region * sizeof(int32_t);
+    // Two mask rows; the block groups of Dif(t-2,t-1) in the detector's
+    // workspace (not in DETECT), those of Dif(t-1,t) in their own.
+    plan.refit = 2 * region + motion_blocks::workspace_bytes(config.max_width, config.max_height);
     const size_t bands = 2 * w * static_cast<size_t>(band_capacity_rows(config) + 2);
     // By stereo_edge f(t-1) is dead (the next pair's Dif is made), so the
     // bands borrow its buffer when they fit in it.
@@ -256,9 +259,8 @@ void controller::init(const controller_config& config, hal& hardware) {
     s.left_gray = new uint8_t[frame_pixels];
     s.motion_mask = new uint8_t[s.plan.motion_mask]();
     const int region_side = size_rule_side(config);
-    s.refit_row = new uint8_t[region_side];
-    s.size_columns = new int32_t[region_side];
-    s.size_rows = new int32_t[region_side];
+    s.refit_rows = new uint8_t[2 * static_cast<size_t>(region_side)]();
+    s.later_blocks.init(config.max_width, config.max_height);
     s.band_rows = band_capacity_rows(config);
     if (s.plan.edge_bands != 0) s.edge_band_storage = new uint8_t[s.plan.edge_bands]();
 
@@ -274,6 +276,11 @@ void controller::init(const controller_config& config, hal& hardware) {
         s.config.stereo.max_disparity = max_d;
         s.config.edge.min_disparity = min_d;
         s.config.edge.max_disparity = max_d;
+        s.far_disparity_q8 = far_q8;
+        s.near_disparity_q8 = near_q8;
+    } else {
+        s.far_disparity_q8 = int64_t{256} * config.stereo.min_disparity;
+        s.near_disparity_q8 = int64_t{256} * config.stereo.max_disparity;
     }
 }
 
@@ -409,9 +416,13 @@ bool controller::impl::detect(frame_output& out) {
             cost::morphology_cycles(width, height, morphology_passes) +
             cost::connected_components_cycles(width, height, detector.last_foreground_pixels()),
         cost::three_frame_difference_packed_traffic(width, height, config.frame_memory));
-    if (!found.found) return false;
+    // The object's extent: the largest component joined with the raw mask's
+    // block group around it (dsp/motion_blocks.h), or that group alone when
+    // the opening left no component (an object much wider than its motion).
+    scope.charge(cost::motion_blocks_cycles(width, height));
+    if (!found.object_found) return false;
     out.motion_found = true;
-    out.motion_box = found.bbox;
+    out.motion_box = found.object_box;
     // An object cut by the image border is not started: its box would hold
     // mostly background (a 5 px sliver of the ball grew to an 8 px box that
     // then "tracked" the static background for good), and stereo needs the
@@ -419,14 +430,14 @@ bool controller::impl::detect(frame_output& out) {
     // clears the outermost close_passes rows and columns, so the border
     // band is one wider than that.
     const int border = config.detect.close_passes + 1;
-    const box& b = found.bbox;
+    const box& b = found.object_box;
     if (b.x <= border || b.y <= border || b.right() >= width - border ||
         b.bottom() >= height - border) {
         out.detection_at_border = true;
         return false;
     }
 
-    tracker.start(history(1), found.bbox);
+    tracker.start(history(1), found.object_box);
     const gray_cplane pattern = tracker.pattern();
     const int pattern_w = pattern.width, pattern_h = pattern.height;
     // The size came from object(t-1); update() only finds the position.
@@ -458,10 +469,12 @@ bool controller::impl::track(frame_output& out) {
 
 bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic) {
     const box last = tracker.position();
+    const box pattern = tracker.pattern_box();
     const track_status status = tracker.update(history(0));
-    *cycles += cost::sad_search_cycles(last.width, last.height, tracker.last_match().positions);
+    *cycles +=
+        cost::sad_search_cycles(pattern.width, pattern.height, tracker.last_match().positions);
     if (status != track_status::tracking) return false;
-    *cycles += cost::pattern_copy_cycles(last.width, last.height);
+    *cycles += cost::pattern_copy_cycles(tracker.pattern_box().width, tracker.pattern_box().height);
 
     uint64_t refit_cycles = 0;
     const box found = tracker.position();
@@ -472,69 +485,74 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic) {
     if (resized.x != found.x || resized.y != found.y || resized.width != found.width ||
         resized.height != found.height) {
         tracker.start(history(0), resized);
-        *cycles += cost::pattern_copy_cycles(resized.width, resized.height);
+        *cycles +=
+            cost::pattern_copy_cycles(tracker.pattern_box().width, tracker.pattern_box().height);
     }
     return true;
 }
 
-// object(t-1) = three-frame mask over the region around `last`; its extent
-// per axis comes from its row / column projections. If it covers at least
-// 1/8 of the last box, the box found by
-// SAD is refitted per axis (refit_axis): its size follows the object's, and
-// its centre is pulled towards the object's. The pull is what keeps the box
-// on the object: re-taking the pattern at an integer position every frame
-// makes the box drift by the rounding of the object's motion (0.3 px per
-// frame at 0.7 px/frame, measured 9 px after 30 frames without it). Too few
-// moving pixels (the object stopped): the SAD box is kept.
+// object(t-1)'s box is the box where both differences around it agree:
+// Dif(t-2,t-1) spans object(t-2) and object(t-1), Dif(t-1,t) spans
+// object(t-1) and object(t), so for a motion that does not reverse within
+// the three frames the intersection of their extents is object(t-1)'s (the
+// three-frame rule of eq. 4 applied to boxes). Each extent is the block group
+// of that difference that is one object with the last box
+// (dsp/motion_blocks.h: a large object's two crescents and its texture
+// joined). The pixel AND of eq. 4 does not do here: on a mainly horizontal
+// motion it holds almost nothing at the object's top and bottom (the lens
+// there is v^2 / 2R high, 0.08 px for a 320 px ball at 5 px per frame), and
+// measured the box's height jumped by up to 53 px from pair to pair.
+// If both have enough set pixels (at least min_area, or an eighth of the
+// last box's area if that is less), the box found by SAD is refitted per
+// axis (refit_axis): its size follows the object's, and its centre is pulled
+// towards the object's. The pull is what keeps the box on the object:
+// re-taking the pattern at an integer position every frame makes the box
+// drift by the rounding of the object's motion (0.3 px per frame at 0.7
+// px/frame, measured 9 px after 30 frames without it; 0.8 px per frame on a
+// ball 160 px wide). Too few moving pixels (the object stopped): the SAD
+// box is kept.
 box controller::impl::refit_box(box last, box found, uint64_t* cycles, sdram_traffic* traffic) {
     const box region = size_rule_region(last, width, height);
-    // object(t-1) = Dif(t-2,t-1) (the packed mask) AND Dif(t-1,t), row by row
-    // (eq. 4, as three_frame_difference_packed_row, without updating the mask).
-    // Projections instead of an opening: an opening (as the detector uses)
-    // erases the thin crescents the object's slowly moving sides leave in the
-    // mask, and measured boxes 30-40 % narrower than the ball; a column or
-    // row counts as the object's only with >= 2 set pixels, so a lone
-    // noise pixel does not stretch the box.
-    std::memset(size_columns, 0, sizeof(int32_t) * region.width);
     const uint8_t threshold = config.detect.threshold;
-    int count = 0;
+    motion_blocks& earlier = detector.blocks();
+    earlier.begin(region.width, region.height);
+    later_blocks.begin(region.width, region.height);
+    uint8_t* earlier_row = refit_rows;
+    uint8_t* later_row = refit_rows + region.width;
     for (int y = 0; y < region.height; ++y) {
         const int frame_y = region.y + y;
         const uint8_t* f_tm1 = history(1).row(frame_y) + region.x;
         const uint8_t* f_t = history(0).row(frame_y) + region.x;
-        int in_row = 0;
         for (int x = 0; x < region.width; ++x) {
             const int diff = f_tm1[x] > f_t[x] ? f_tm1[x] - f_t[x] : f_t[x] - f_tm1[x];
-            const int set =
-                (diff > threshold && packed_bit(motion_mask, width, region.x + x, frame_y)) ? 1 : 0;
-            refit_row[x] = static_cast<uint8_t>(set);
-            size_columns[x] += set;
-            in_row += set;
+            earlier_row[x] = packed_bit(motion_mask, width, region.x + x, frame_y) ? 1 : 0;
+            later_row[x] = diff > threshold ? 1 : 0;
         }
-        size_rows[y] = in_row;
-        count += in_row;
+        earlier.add_row(earlier_row, y);
+        later_blocks.add_row(later_row, y);
     }
-    int min_x = 0, max_x = region.width - 1, min_y = 0, max_y = region.height - 1;
-    while (min_x < max_x && size_columns[min_x] < 2) ++min_x;
-    while (max_x > min_x && size_columns[max_x] < 2) --max_x;
-    while (min_y < max_y && size_rows[min_y] < 2) ++min_y;
-    while (max_y > min_y && size_rows[max_y] < 2) --max_y;
-    // The projection pass (column and row sums, SIMD-able) is modelled as two
-    // copies of the region (~area / 8 cycles each): an estimate, no kernel
-    // formula of its own.
+    const box seed{last.x - region.x, last.y - region.y, last.width, last.height};
+    const block_group before = earlier.extent(seed, 0);
+    const block_group after = later_blocks.extent(seed, 0);
     *cycles = cost::three_frame_difference_packed_cycles(region.width, region.height,
                                                          config.frame_memory) +
-              2 * cost::pattern_copy_cycles(region.width, region.height);
+              2 * cost::motion_blocks_cycles(region.width, region.height);
     *traffic = cost::three_frame_difference_packed_traffic(region.width, region.height,
                                                            config.frame_memory);
-    if (count * 8 < last.width * last.height) return found;
+    const int enough = min_int(config.detect.min_area, last.width * last.height / 8);
+    if (!before.found || !after.found || before.pixels < enough || after.pixels < enough)
+        return found;
+    const int x0 = max_int(before.bbox.x, after.bbox.x), y0 = max_int(before.bbox.y, after.bbox.y);
+    const int x1 = min_int(before.bbox.right(), after.bbox.right());
+    const int y1 = min_int(before.bbox.bottom(), after.bbox.bottom());
+    if (x1 <= x0 || y1 <= y0) return found;  // the motion reversed: no common box
 
     const track_params& p = config.track;
-    box resized;
-    refit_axis(found.x, found.width, last.x, last.width, region.x + min_x, max_x - min_x + 1,
-               p.min_size, p.max_size, width, &resized.x, &resized.width);
-    refit_axis(found.y, found.height, last.y, last.height, region.y + min_y, max_y - min_y + 1,
-               p.min_size, p.max_size, height, &resized.y, &resized.height);
+    box resized;  // the object box: any size up to the frame's
+    refit_axis(found.x, found.width, last.x, last.width, region.x + x0, x1 - x0, p.min_size, width,
+               width, &resized.x, &resized.width);
+    refit_axis(found.y, found.height, last.y, last.height, region.y + y0, y1 - y0, p.min_size,
+               height, height, &resized.y, &resized.height);
     return resized;
 }
 
@@ -607,7 +625,12 @@ bool controller::impl::choose_disparity(frame_output& out) const {
             }
             break;
     }
-    if (!ok) return false;
+    // A disparity outside the depth range's (in the search margin) is no
+    // measurement of an object inside it: withheld. Measured: a ball that
+    // the left image's border still cut matched the background at 13.8 px
+    // (6.9 m, beyond the 6 m range) against its true 38 px.
+    if (!ok || out.disparity_q8 < far_disparity_q8 || out.disparity_q8 > near_disparity_q8)
+        return false;
     out.box_left = out.box_right;
     out.box_left.x += (out.disparity_q8 + 128) >> 8;
     if (config.method == stereo_method::sad) out.box_left.y += out.sad_match.dy;

@@ -63,15 +63,15 @@
 //   left gray                               W H                    307,200
 //   packed Dif(t-2,t-1)                     W H / 8                 38,400
 //   demosaic line (one RGB row)             3 W                      1,920
-//   detector: 8 pass rings + 1 row, 2 label motion_detector::       32,384
-//     rows, 256-label tables                  workspace_bytes
+//   detector: 8 pass rings + 1 row, 2 label motion_detector::       37,880
+//     rows, 256-label tables, block stats     workspace_bytes
 //   tracker pattern                         max_size^2               9,216
-//   refit row + projections                 3 max_size x 9           2,592
+//   refit: 2 mask rows, Dif(t-1,t) blocks   2 max(W, H) + 5,496      6,776
 //   Sobel bands 2 W (max_size + 2)          inside f(t-1)'s buffer       0
 //                                           (dead by stereo_edge)  (125,440)
-//   total                                                        1,006,112
-// of 1,048,576: 42,464 bytes (4.0 %) left for code, stack and the control
-// program's few words; 9,696 if 32 KB of the L2 is configured as cache for
+//   total                                                        1,015,792
+// of 1,048,576: 32,784 bytes (3.1 %) left for code, stack and the control
+// program's few words; 16 if 32 KB of the L2 is configured as cache for
 // the raw reads (plan_memory computes it; tests/dsp/test_memory_plan.cpp
 // checks it). SDRAM per pair: the raw pair, 2 W H = 614,400 bytes read =
 // 4,800 L2 lines of 128 bytes, nothing else frame-scale.

@@ -279,6 +279,28 @@ kernel_profile sad_search_profile(int pattern_w, int pattern_h, int positions) {
     return p;
 }
 
+kernel_profile motion_blocks_profile(int width, int height) {
+    // Per 16 mask bytes of a row (one block): 2 LDDW, the count as DOTPU4 of
+    // the 0/1 bytes with 0x01010101 (m 4) and ADD (lsd 3), first
+    // and last set byte by LMBD on the packed compare (l 2, s 2), LDBU/STB of
+    // count and spans, MIN/MAX (d 5, lsd 4): m 4, l 2, s 2, d 7, lsd 7 -> II 3.
+    // Grouping, per block: 9 loads of the neighbours' counts, compare, OR,
+    // store (d 10, lsd 9) -> II 5; then the labeller on the block rows
+    // (~blocks / 4 runs, bounded by connected_components' profile).
+    // ASSUMED, no TI kernel of this shape; an estimate.
+    const uint64_t w = non_negative(width), h = non_negative(height);
+    const uint64_t blocks_x = ceil_div(w, 16), blocks = blocks_x * ceil_div(h, 16);
+    kernel_profile p("motion_blocks");
+    p.add(loop("row of a block", op_mix{/*l*/ 2, /*s*/ 2, /*m*/ 4, /*d*/ 7, 0, /*lsd*/ 7},
+               blocks_x * h, latency_load + latency_alu + latency_store));
+    p.add(loop("dilated block", op_mix{0, 0, 0, /*d*/ 10, 0, /*lsd*/ 9}, blocks,
+               latency_load + latency_alu + latency_store));
+    p.add_call(connected_components_profile(static_cast<int>(blocks_x),
+                                            static_cast<int>(ceil_div(h, 16)),
+                                            static_cast<int>(blocks / 4)));
+    return p;
+}
+
 kernel_profile pattern_copy_profile(int pattern_w, int pattern_h) {
     // One collapsed loop over all doublewords of the pattern: LDNDW + STDW
     // (d 2), counter + conditional row step (lsd 2), B -> II 1, 8 px/cycle.
@@ -458,6 +480,10 @@ uint64_t connected_components_cycles(int width, int height, int foreground) {
 
 uint64_t sad_search_cycles(int pattern_w, int pattern_h, int positions) {
     return g_model.cycles(sad_search_profile(pattern_w, pattern_h, positions));
+}
+
+uint64_t motion_blocks_cycles(int width, int height) {
+    return g_model.cycles(motion_blocks_profile(width, height));
 }
 
 uint64_t pattern_copy_cycles(int pattern_w, int pattern_h) {

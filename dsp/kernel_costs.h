@@ -45,6 +45,9 @@ uint64_t difference_packed_cycles(int width, int height, memory where = memory::
 uint64_t morphology_cycles(int width, int height, int passes);
 // Connected components with `foreground` set pixels in width x height.
 uint64_t connected_components_cycles(int width, int height, int foreground);
+// Block statistics of the raw motion mask and their grouping, one frame
+// (dsp/motion_blocks.h).
+uint64_t motion_blocks_cycles(int width, int height);
 // Exhaustive SAD search: `positions` placements of a pattern_w x pattern_h
 // pattern.
 uint64_t sad_search_cycles(int pattern_w, int pattern_h, int positions);

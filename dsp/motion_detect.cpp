@@ -107,6 +107,11 @@ inline void merge(component& into, const component& from) {
     into.area += from.area;
 }
 
+box union_of(box a, box b) {
+    const int x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
+    return box{x0, y0, std::max(a.right(), b.right()) - x0, std::max(a.bottom(), b.bottom()) - y0};
+}
+
 bool larger_first(const component& a, const component& b) {
     if (a.area != b.area) return a.area > b.area;
     if (a.bbox.y != b.bbox.y) return a.bbox.y < b.bbox.y;
@@ -357,7 +362,8 @@ size_t motion_detector::workspace_bytes(int max_width, int max_height, int max_c
     const size_t w = static_cast<size_t>(max_width), comps = static_cast<size_t>(max_components);
     size_t bytes = (3 * max_passes + 1) * w   // rings, output row
                    + 2 * w * sizeof(int32_t)  // run labels
-                   + 2 * comps * sizeof(component) + comps * sizeof(int32_t);
+                   + 2 * comps * sizeof(component) + comps * sizeof(int32_t) +
+                   motion_blocks::workspace_bytes(max_width, max_height);
     if (keep_mask) bytes += w * static_cast<size_t>(max_height);
     return bytes;
 }
@@ -375,6 +381,7 @@ void motion_detector::init(int max_width, int max_height, int max_components, bo
     m_components = new component[static_cast<size_t>(max_components)];
     m_stats = new component[static_cast<size_t>(max_components)];
     m_parent = new int32_t[static_cast<size_t>(max_components)];
+    m_blocks.init(max_width, max_height);
     m_width = m_height = m_last_width = m_last_height = m_last_foreground = m_last_components = 0;
 }
 
@@ -440,8 +447,11 @@ detection motion_detector::run(int width, int height, const detect_params& param
     m_width = width;
     m_height = height;
     m_labeller.begin(width, m_labels, m_parent, m_stats, m_max_components);
+    m_blocks.begin(width, height);
     for (int y = 0; y < height; ++y) {
-        source(context, y, m_passes > 0 ? ring_row(0, y) : m_out_row);
+        uint8_t* raw = m_passes > 0 ? ring_row(0, y) : m_out_row;
+        source(context, y, raw);
+        m_blocks.add_row(raw, y);
         push_row(0, y);
     }
     flush(0);
@@ -463,6 +473,11 @@ detection motion_detector::run(int width, int height, const detect_params& param
         result.bbox = m_components[0].bbox;
         result.area = m_components[0].area;
     }
+    const block_group group =
+        m_blocks.extent(result.found ? result.bbox : box{}, params.min_group_pixels);
+    result.object_found = result.found || group.found;
+    result.object_box = result.found ? result.bbox : group.bbox;
+    if (result.found && group.found) result.object_box = union_of(result.bbox, group.bbox);
     return result;
 }
 

@@ -20,6 +20,7 @@
 #include <cstdint>
 
 #include "dsp/image.h"
+#include "dsp/motion_blocks.h"
 
 namespace dsp {
 
@@ -156,6 +157,10 @@ struct detect_params {
     int open_passes = 1;     // erosions then dilations (specks)
     int close_passes = 2;    // dilations then erosions (holes)
     int min_area = 30;       // pixels; smaller components are noise
+    // Raw (unopened) pixels a block group needs when the opening left no
+    // component (dsp/motion_blocks.h): a 10 px ball moving half its width per
+    // frame leaves ~15-25 raw pixels, fewer than min_area.
+    int min_group_pixels = 10;
 };
 
 struct detection {
@@ -164,6 +169,12 @@ struct detection {
     int area = 0;
     int components = 0;           // components at or above min_area
     bool label_overflow = false;  // the mask needed more labels than init's max_components
+    // The object's extent from the raw (unopened) mask, dsp/motion_blocks.h:
+    // the block group overlapping bbox, or without a component the largest
+    // group of at least min_area set pixels; object_box is its extent joined
+    // with bbox. object_found is set when either is.
+    bool object_found = false;
+    box object_box;
 };
 
 // Owns its work buffers, allocated once in init (never in detect).
@@ -224,6 +235,11 @@ class motion_detector {
     const component* last_components() const { return m_components; }
     int last_component_count() const { return m_last_components; }
 
+    // The block statistics' workspace (dsp/motion_blocks.h), free between
+    // detect() calls: the controller's track refit uses it in the pairs it
+    // does not detect in (one L2 buffer for both).
+    motion_blocks& blocks() { return m_blocks; }
+
     // Statistics of the last call, for the cost model.
     int last_foreground_pixels() const { return m_last_foreground; }
 
@@ -246,6 +262,7 @@ class motion_detector {
     int m_passes = 0;
     int m_width = 0, m_height = 0;
     component_labeller m_labeller;
+    motion_blocks m_blocks;
     int32_t* m_labels = nullptr;
     component* m_components = nullptr;
     component* m_stats = nullptr;

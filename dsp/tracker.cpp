@@ -32,14 +32,22 @@ void sad_tracker::init(const track_params& params) {
 }
 
 gray_cplane sad_tracker::pattern() const {
-    return gray_cplane{m_pattern, m_position.width, m_position.height, m_position.width};
+    return gray_cplane{m_pattern, m_pattern_box.width, m_pattern_box.height, m_pattern_box.width};
+}
+
+box sad_tracker::pattern_box_of(box object) const {
+    box p = object;
+    resize_keep_centre(p.x, p.width, std::min(object.width, m_params.max_size), object.right());
+    resize_keep_centre(p.y, p.height, std::min(object.height, m_params.max_size), object.bottom());
+    return p;
 }
 
 void sad_tracker::take_pattern(gray_cplane frame) {
-    for (int j = 0; j < m_position.height; ++j) {
-        std::memcpy(m_pattern + static_cast<size_t>(j) * static_cast<size_t>(m_position.width),
-                    frame.row(m_position.y + j) + m_position.x,
-                    static_cast<size_t>(m_position.width));
+    m_pattern_box = pattern_box_of(m_position);
+    const box& p = m_pattern_box;
+    for (int j = 0; j < p.height; ++j) {
+        std::memcpy(m_pattern + static_cast<size_t>(j) * static_cast<size_t>(p.width),
+                    frame.row(p.y + j) + p.x, static_cast<size_t>(p.width));
     }
 }
 
@@ -52,9 +60,8 @@ void sad_tracker::start(gray_cplane frame, box object) {
         return;
     }
     box b = object;
-    const int w = std::min(std::clamp(b.width, m_params.min_size, m_params.max_size), frame.width);
-    const int h =
-        std::min(std::clamp(b.height, m_params.min_size, m_params.max_size), frame.height);
+    const int w = std::clamp(b.width, m_params.min_size, frame.width);
+    const int h = std::clamp(b.height, m_params.min_size, frame.height);
     resize_keep_centre(b.x, b.width, w, frame.width);
     resize_keep_centre(b.y, b.height, h, frame.height);
     m_position = b;
@@ -87,7 +94,7 @@ box sad_tracker::refit_size(gray_cplane motion_mask, box matched) const {
     auto towards = [&](int size, int fitted, int limit) {
         const int step = std::max(1, size / 8);
         const int moved = std::clamp(fitted, size - step, size + step);
-        return std::min(std::clamp(moved, m_params.min_size, m_params.max_size), limit);
+        return std::clamp(moved, std::min(m_params.min_size, limit), limit);
     };
     box b = matched;
     resize_keep_centre(b.x, b.width, towards(b.width, max_x - min_x + 1, motion_mask.width),
@@ -101,16 +108,16 @@ track_status sad_tracker::update(gray_cplane frame, gray_cplane motion_mask) {
     if (m_status == track_status::lost) return m_status;
 
     const int r = m_params.search_radius;
-    const box wanted{m_position.x - r, m_position.y - r, 2 * r + 1, 2 * r + 1};
-    m_window =
-        clip_positions(wanted, frame.width, frame.height, m_position.width, m_position.height);
+    const box& p = m_pattern_box;
+    const box wanted{p.x - r, p.y - r, 2 * r + 1, 2 * r + 1};
+    m_window = clip_positions(wanted, frame.width, frame.height, p.width, p.height);
     m_last = sad_search(frame, pattern(), m_window);
     if (!m_last.valid) {
         m_status = track_status::lost;
         return m_status;
     }
 
-    const uint64_t area = static_cast<uint64_t>(m_position.width) * m_position.height;
+    const uint64_t area = static_cast<uint64_t>(p.width) * p.height;
     const bool too_different = m_last.sad > static_cast<uint64_t>(m_params.lost_mean_sad) * area;
     const bool at_clipped_edge =
         (m_last.x == m_window.x && wanted.x < m_window.x) ||
@@ -122,7 +129,10 @@ track_status sad_tracker::update(gray_cplane frame, gray_cplane motion_mask) {
         return m_status;
     }
 
-    box matched{m_last.x, m_last.y, m_position.width, m_position.height};
+    // The object box moves with its pattern, kept inside the frame.
+    box matched = m_position;
+    matched.x = std::clamp(matched.x + m_last.x - p.x, 0, frame.width - matched.width);
+    matched.y = std::clamp(matched.y + m_last.y - p.y, 0, frame.height - matched.height);
     if (!motion_mask.empty()) matched = refit_size(motion_mask, matched);
     m_position = matched;
     take_pattern(frame);

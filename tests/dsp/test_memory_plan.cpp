@@ -185,11 +185,11 @@ TEST(MemoryPlan, ControllerHistoryStaysConsecutiveOnARenderedSequence) {
             const size_t t = right.size() - 1;
             const dsp::detection d =
                 plain.detect(view(right[t - 2]), view(right[t - 1]), view(right[t]), config.detect);
-            ASSERT_TRUE(d.found) << n;
-            EXPECT_EQ(d.bbox.x, r.out.motion_box.x) << n;
-            EXPECT_EQ(d.bbox.y, r.out.motion_box.y) << n;
-            EXPECT_EQ(d.bbox.width, r.out.motion_box.width) << n;
-            EXPECT_EQ(d.bbox.height, r.out.motion_box.height) << n;
+            ASSERT_TRUE(d.object_found) << n;
+            EXPECT_EQ(d.object_box.x, r.out.motion_box.x) << n;
+            EXPECT_EQ(d.object_box.y, r.out.motion_box.y) << n;
+            EXPECT_EQ(d.object_box.width, r.out.motion_box.width) << n;
+            EXPECT_EQ(d.object_box.height, r.out.motion_box.height) << n;
             ++detections;
         }
         tracked += previous == dsp::tracker_state::track;

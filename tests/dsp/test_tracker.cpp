@@ -15,7 +15,6 @@
 #include "dsp/tracker.h"
 #include "tests/support/heap_counter.h"
 
-
 namespace {
 
 struct gray_image {
@@ -233,12 +232,24 @@ TEST(sad_tracker, start_clamps_the_box_to_the_limits_and_the_frame) {
     p.min_size = 8;
     p.max_size = 32;
     tracker.init(p);
-    // 60 x 4 around centre (49.5, 41.5) -> 32 x 8, centre kept.
+    // 60 x 4 around centre (49.5, 41.5): the object box keeps its width and
+    // grows to min_size in height (60 x 8, centre kept); the pattern is its
+    // centred crop of at most max_size: 32 x 8 at (34, 38).
     tracker.start(frame.view(), dsp::box{20, 40, 60, 4});
-    EXPECT_EQ(tracker.position().width, 32);
-    EXPECT_EQ(tracker.position().height, 8);
-    EXPECT_EQ(tracker.position().x, 34);
+    EXPECT_EQ(tracker.position().x, 20);
     EXPECT_EQ(tracker.position().y, 38);
+    EXPECT_EQ(tracker.position().width, 60);
+    EXPECT_EQ(tracker.position().height, 8);
+    EXPECT_EQ(tracker.pattern_box().x, 34);
+    EXPECT_EQ(tracker.pattern_box().y, 38);
+    EXPECT_EQ(tracker.pattern_box().width, 32);
+    EXPECT_EQ(tracker.pattern_box().height, 8);
+    EXPECT_EQ(tracker.pattern().at(0, 0), frame.view().at(34, 38));
+    // Wider than the frame: the frame's width.
+    tracker.start(frame.view(), dsp::box{-10, 10, 130, 20});
+    EXPECT_EQ(tracker.position().x, 0);
+    EXPECT_EQ(tracker.position().width, 100);
+    EXPECT_EQ(tracker.pattern_box().x, 34);
     // Partly outside -> moved inside.
     tracker.start(frame.view(), dsp::box{90, -5, 20, 20});
     EXPECT_EQ(tracker.position().x, 80);
@@ -246,6 +257,34 @@ TEST(sad_tracker, start_clamps_the_box_to_the_limits_and_the_frame) {
     const dsp::gray_cplane pattern = tracker.pattern();
     EXPECT_EQ(pattern.at(0, 0), frame.view().at(80, 0));
     EXPECT_EQ(pattern.at(19, 19), frame.view().at(99, 19));
+}
+
+// An object wider than max_size is tracked by its centred pattern and the
+// box moves with it: a 60 x 40 box on a texture shifted by (+5, -3).
+TEST(sad_tracker, large_box_moves_with_its_centred_pattern) {
+    std::mt19937 rng(43);
+    const gray_image first = random_texture(160, 120, 0, 255, rng);
+    gray_image second = first;
+    for (int y = 0; y < 120; ++y)
+        for (int x = 0; x < 160; ++x) {
+            const int sx = x - 5, sy = y + 3;
+            second.at(x, y) =
+                (sx >= 0 && sy < 120) ? first.view().at(sx, sy) : static_cast<uint8_t>(0);
+        }
+    dsp::sad_tracker tracker;
+    dsp::track_params p;
+    p.max_size = 24;
+    p.search_radius = 8;
+    tracker.init(p);
+    tracker.start(first.view(), dsp::box{50, 40, 60, 40});
+    ASSERT_EQ(tracker.pattern_box().width, 24);
+    ASSERT_EQ(tracker.update(second.view()), dsp::track_status::tracking);
+    EXPECT_EQ(tracker.position().x, 55);
+    EXPECT_EQ(tracker.position().y, 37);
+    EXPECT_EQ(tracker.position().width, 60);
+    EXPECT_EQ(tracker.position().height, 40);
+    EXPECT_EQ(tracker.pattern_box().x, 55 + 18);
+    EXPECT_EQ(tracker.pattern_box().y, 37 + 8);
 }
 
 }  // namespace

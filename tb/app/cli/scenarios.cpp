@@ -42,6 +42,18 @@ const std::vector<builtin_scenario>& builtin_scenarios() {
         {"sequential",
          "default throw in sequential mode: over budget (22.5 ms capture + processing)",
          {{"firmware.mode", "sequential"}}},
+        // Objects of any size (docs/firmware.md): the same pass across the
+        // view, the ball 2 f r / sqrt(Z^2 - r^2) wide (f = 789.47 px).
+        {"small",
+         "a ball 10 px wide (16.5 mm at 2.6 m) on a slow pass across the view",
+         {{"scenario.path", "pass"},
+          {"scenario.depth_m", "2.6"},
+          {"scenario.ball_radius_mm", "16.5"}}},
+        {"large",
+         "a ball half the image wide (320 px: 278 mm at 1.4 m) on a slow pass across the view",
+         {{"scenario.path", "pass"},
+          {"scenario.depth_m", "1.4"},
+          {"scenario.ball_radius_mm", "278"}}},
         {"slow-cpu",
          "300 MHz CPU and a 96 px tracking search radius: over budget in track",
          {{"dsk.cpu_mhz", "300"}, {"firmware.search_radius", "96"}}},
