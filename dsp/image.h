@@ -47,4 +47,12 @@ struct box {
     int center_y2() const { return 2 * y + height - 1; }
 };
 
+// The smallest box holding both.
+inline box bounding_union(box a, box b) {
+    const int x0 = a.x < b.x ? a.x : b.x, y0 = a.y < b.y ? a.y : b.y;
+    const int x1 = a.right() > b.right() ? a.right() : b.right();
+    const int y1 = a.bottom() > b.bottom() ? a.bottom() : b.bottom();
+    return box{x0, y0, x1 - x0, y1 - y0};
+}
+
 }  // namespace dsp

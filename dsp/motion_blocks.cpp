@@ -154,9 +154,7 @@ bool one_object(box a, box b) {
 
 block_group joined(const block_group& a, const block_group& b) {
     block_group j = a;
-    const int x0 = std::min(a.bbox.x, b.bbox.x), y0 = std::min(a.bbox.y, b.bbox.y);
-    j.bbox = box{x0, y0, std::max(a.bbox.right(), b.bbox.right()) - x0,
-                 std::max(a.bbox.bottom(), b.bbox.bottom()) - y0};
+    j.bbox = bounding_union(a.bbox, b.bbox);
     j.pixels += b.pixels;
     j.blocks += b.blocks;
     return j;

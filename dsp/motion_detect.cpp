@@ -107,11 +107,6 @@ inline void merge(component& into, const component& from) {
     into.area += from.area;
 }
 
-box union_of(box a, box b) {
-    const int x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
-    return box{x0, y0, std::max(a.right(), b.right()) - x0, std::max(a.bottom(), b.bottom()) - y0};
-}
-
 bool larger_first(const component& a, const component& b) {
     if (a.area != b.area) return a.area > b.area;
     if (a.bbox.y != b.bbox.y) return a.bbox.y < b.bbox.y;
@@ -477,7 +472,7 @@ detection motion_detector::run(int width, int height, const detect_params& param
         m_blocks.extent(result.found ? result.bbox : box{}, params.min_group_pixels);
     result.object_found = result.found || group.found;
     result.object_box = result.found ? result.bbox : group.bbox;
-    if (result.found && group.found) result.object_box = union_of(result.bbox, group.bbox);
+    if (result.found && group.found) result.object_box = bounding_union(result.bbox, group.bbox);
     return result;
 }
 
