@@ -158,8 +158,10 @@ struct detect_params {
     int close_passes = 2;    // dilations then erosions (holes)
     int min_area = 30;       // pixels; smaller components are noise
     // Raw (unopened) pixels a block group needs when the opening left no
-    // component (dsp/motion_blocks.h): a 10 px ball moving half its width per
-    // frame leaves ~15-25 raw pixels, fewer than min_area.
+    // component (dsp/motion_blocks.h). A 10 px ball moving half its width per
+    // frame leaves fewer than min_area: with min_area here `--scenario small`
+    // was not detected in 12 co-simulated frames; with 10, one frame after
+    // its first motion.
     int min_group_pixels = 10;
 };
 
@@ -170,9 +172,9 @@ struct detection {
     int components = 0;           // components at or above min_area
     bool label_overflow = false;  // the mask needed more labels than init's max_components
     // The object's extent from the raw (unopened) mask, dsp/motion_blocks.h:
-    // the block group overlapping bbox, or without a component the largest
-    // group of at least min_area set pixels; object_box is its extent joined
-    // with bbox. object_found is set when either is.
+    // the block group that is one object with bbox, or without a component
+    // the largest group of at least min_group_pixels set pixels; object_box
+    // is its extent joined with bbox. object_found is set when either is.
     bool object_found = false;
     box object_box;
 };
