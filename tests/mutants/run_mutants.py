@@ -5,8 +5,11 @@ Every mutant (a firmware patch from tests/mutants/firmware/*.patch, or an RTL
 module file made by tests/mutants/rtl/generate) gets its own source tree,
 build-mutants/trees/<id>/src (the working tree's files as they are now,
 tracked and untracked-not-ignored, deleted ones skipped, then the mutation),
-and its own build tree build-mutants/trees/<id>/build (Ninja, RelWithDebInfo,
-ccache with the tree as CCACHE_BASEDIR, so only the mutated file recompiles).
+and its own build tree build-mutants/trees/<id>/src/build (Ninja,
+RelWithDebInfo, ccache with the source copy as CCACHE_BASEDIR). The build
+tree sits where the main build sits (the Makefile's build/, built with the
+repository as CCACHE_BASEDIR), so every compile line is the main build's
+and only the mutated file recompiles, even in the first tree of a run.
 Only `stereosim` and the test executables of the mutant's label are built; a
 mutant that does not compile is `stillborn`.
 
@@ -55,7 +58,9 @@ FIRMWARE_DIR = MUTANTS_DIR / "firmware"
 EQUIVALENT_FILE = MUTANTS_DIR / "equivalent.txt"
 RTL_GENERATOR = MUTANTS_DIR / "rtl" / "generate"
 WORK_DIR = REPO / "build-mutants"
-SHARED_DATA = (REPO.parent / "shared" / "data").resolve()  # tests/support/data_path.h
+# The main build's spelling of the path (CMakeLists.txt's default for a
+# checkout): a compile definition, so the same text keeps ccache's hits.
+SHARED_DATA = f"{REPO}/../shared/data"  # tests/support/data_path.h
 
 CAMPAIGN_TIMEOUT_S = 15 * 60
 CTEST_TIMEOUT_S = 10 * 60
@@ -224,7 +229,8 @@ def mutated_contents(mutant, snapshot):
 def sync_tree(src_dir, snapshot, overrides):
     """Makes src_dir hold exactly the snapshot's files, `overrides` replacing
     their content; rewrites only files whose content differs, so that an
-    unchanged file keeps its time stamp and Ninja does not rebuild it."""
+    unchanged file keeps its time stamp and Ninja does not rebuild it. The
+    build tree inside it (build/) is left alone."""
     for name, (content, executable) in sorted(snapshot.items()):
         content = overrides.get(name, content)
         dest = src_dir / name
@@ -235,6 +241,8 @@ def sync_tree(src_dir, snapshot, overrides):
         dest.chmod(0o755 if executable else 0o644)
     for path in sorted(src_dir.rglob("*"), reverse=True):
         name = path.relative_to(src_dir).as_posix()
+        if name == "build" or name.startswith("build/"):
+            continue
         if path.is_file() and name not in snapshot:
             path.unlink()
         elif path.is_dir() and not any(path.iterdir()):
@@ -301,9 +309,16 @@ def lock_work_dir(work_dir=WORK_DIR):
     return handle
 
 
+def tree_build_dir(tree_dir):
+    """build-mutants/trees/<id>/src/build: the main build's place in its tree."""
+    return tree_dir / "src" / "build"
+
+
 def build_env(tree_dir):
     env = dict(os.environ)
-    env["CCACHE_BASEDIR"] = str(tree_dir)  # src and build: both relative in the hashes
+    # Paths relative to the source copy, as the main build's are to the
+    # repository (Makefile), so both trees' compile lines hash alike.
+    env["CCACHE_BASEDIR"] = str(tree_dir / "src")
     env["CCACHE_NOHASHDIR"] = "1"
     return env
 
@@ -316,7 +331,7 @@ def label_targets(src_dir, label):
 
 def build_tree(tree_dir, labels, jobs, log_path):
     """Configures (once) and builds stereosim + the labels' tests. Returns (ok, seconds)."""
-    src, build = tree_dir / "src", tree_dir / "build"
+    src, build = tree_dir / "src", tree_build_dir(tree_dir)
     env = build_env(tree_dir)
     seconds = 0.0
     # The real test data sits beside the repository, not beside the copy.
@@ -330,7 +345,6 @@ def build_tree(tree_dir, labels, jobs, log_path):
         if code != 0:
             shutil.copyfile(configure_log, log_path)
             return False, seconds
-    link_source_beside_tests(build)
     targets = ["stereosim"] + [t for label in labels for t in label_targets(src, label)]
     command = ["cmake", "--build", build, "-j", str(jobs), "--target", *targets]
     code, build_s = run_step(command, tree_dir, log_path, BUILD_TIMEOUT_S, env)
@@ -341,16 +355,6 @@ def build_tree(tree_dir, labels, jobs, log_path):
         code, retry_s = run_step(command, tree_dir, log_path, BUILD_TIMEOUT_S, env)
         build_s += retry_s
     return code == 0, seconds + build_s
-
-
-def link_source_beside_tests(build):
-    """With CCACHE_BASEDIR the compiler gets relative paths, so __FILE__ is
-    '../src/...' (relative to the build tree's root); a test that finds the
-    repository from __FILE__ (tests/rtl/test_icarus_reference.cpp) runs in
-    build/tests, where build/src -> ../src makes that path resolve too."""
-    link = build / "src"
-    if not link.is_symlink() and not link.exists():
-        link.symlink_to("../src")
 
 
 def build_interrupted(code, log_path):
@@ -513,7 +517,7 @@ def run_baseline(settings, labels):
         raise RuntimeError(f"the unmutated tree does not build (see {out_dir / 'build.log'})")
     baseline = Baseline()
     log("[baseline] smoke campaign")
-    code, campaign_s, broken = run_campaign(tree / "build", out_dir, settings.campaign_jobs)
+    code, campaign_s, broken = run_campaign(tree_build_dir(tree), out_dir, settings.campaign_jobs)
     if code not in (0, 1):
         raise RuntimeError(f"baseline campaign exit {code} (see {out_dir / 'campaign.log'})")
     baseline.broken_rows = {key for key, _ in broken}
@@ -521,8 +525,8 @@ def run_baseline(settings, labels):
              "break the contract" + "".join(f"\n  baseline {entry}" for _, entry in broken)]
     for label in labels:
         log(f"[baseline] ctest -L {label}")
-        code, ctest_s, failed = run_ctest(tree / "build", out_dir / f"ctest-{label}.log", label,
-                                          settings.build_jobs)
+        code, ctest_s, failed = run_ctest(tree_build_dir(tree), out_dir / f"ctest-{label}.log",
+                                          label, settings.build_jobs)
         if code is None:
             raise RuntimeError(f"baseline ctest -L {label} timed out")
         baseline.failed_tests |= {name for name, _ in failed}
@@ -559,7 +563,7 @@ def run_mutant(mutant, settings, baseline):
         add_note(result, str(error))
     finally:
         if settings.clean:
-            shutil.rmtree(tree / "build", ignore_errors=True)
+            shutil.rmtree(tree_build_dir(tree), ignore_errors=True)
     result.wall_s = round(time.monotonic() - start, 1)
     for name in ("build_s", "campaign_s", "ctest_s"):
         setattr(result, name, round(getattr(result, name), 1))
@@ -587,7 +591,7 @@ def judge_mutant(mutant, result, tree, out_dir, settings, baseline):
                                f"broken? (see {out_dir / 'build.log'})")
         result.status = "stillborn"
         return
-    build, jobs = tree / "build", settings.build_jobs
+    build, jobs = tree_build_dir(tree), settings.build_jobs
     if mutant.kind == "firmware":
         log(f"[{mutant.id}] smoke campaign")
         result.campaign_kills = check_campaign(result, build, out_dir, settings.campaign_jobs,
@@ -782,7 +786,7 @@ def main(argv=None):
             return 1
         finally:
             if args.clean:
-                shutil.rmtree(settings.trees_dir / "baseline" / "build", ignore_errors=True)
+                shutil.rmtree(tree_build_dir(settings.trees_dir / "baseline"), ignore_errors=True)
     results = run_all(mutants, settings, baseline, args.jobs, start)
     apply_equivalents(results, read_equivalents())
     text = write_reports(results, settings.out_dir, time.monotonic() - start, baseline)
