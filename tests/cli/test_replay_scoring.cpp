@@ -1,7 +1,8 @@
 // A replayed sequence with ground truth is scored like a rendered scene
 // (docs/replay.md): a textured ball composited over the real Middlebury
-// "cones" pair (../shared/data, tests/support/replay_composite.h), replayed
-// through the whole co-simulation at the sensors' 448 x 372 window. The
+// 2006 "Aloe" pair with its published calibration (../shared/data,
+// tests/support/replay_composite.h), replayed through the whole
+// co-simulation at the sensors' 448 x 372 window. The
 // report carries the truth CSV's rows, the errors against them, the
 // detection latency from the first frame whose truth moves, the RMSE; a
 // replay without truth keeps its nulls; a half-given column group is a
@@ -11,6 +12,8 @@
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -45,10 +48,24 @@ std::vector<std::vector<double>> truth_rows(const std::string& path) {
     return rows;
 }
 
+// Middlebury 2006 "Aloe" (../shared/data/middlebury_2006_aloe, full size
+// 1282 x 1110) with its published calibration (docs/replay.md has the
+// sources): f = 3740 px and B = 160 mm at full size, the views cropped by
+// dmin = 270 px (Z = f B / (d + dmin)). Scaled down by 2.8 to 458 x 396 and
+// cropped to the 448 x 372 window: f = 1335.7 px, offset 96.4 px; the
+// scene's GT disparities 43..211 px put it at 1.24-1.91 m. The ball (3 cm,
+// ~73 px wide) passes at 1.1 m, in front of everything it covers.
 std::string make_sequence(const std::string& dir) {
     testsupport::composite_spec spec;
-    spec.left_png = test_support::data_path("middlebury_2001_2003/cones/im2.png");
-    spec.right_png = test_support::data_path("middlebury_2001_2003/cones/im6.png");
+    spec.left_png = test_support::data_path("middlebury_2006_aloe/aloeL.jpg");
+    spec.right_png = test_support::data_path("middlebury_2006_aloe/aloeR.jpg");
+    spec.calibration = {3740.0, 0.160, 270.0};
+    spec.downscale = 2.8;
+    spec.crop_x = 5;
+    spec.crop_y = 12;
+    spec.depth_m = 1.1;
+    spec.radius_m = 0.03;
+    spec.pass = true;
     spec.frames = 13;  // a run of 12 periods shows scene frames 0..12
     std::string error;
     const std::string manifest = testsupport::write_composite_replay(spec, dir, &error);
@@ -98,16 +115,26 @@ TEST(ReplayScoring, ABallOverARealPairIsScoredAgainstItsTruth) {
     EXPECT_EQ(acc["first_motion_frame"], 3);  // the CSV's first moving row
     EXPECT_LE(acc["detect_latency_frames"].get<int>(), 3);
     EXPECT_TRUE(acc["rmse_mm"]["z"].is_number());
-    // Bounds measured on this sequence (regression guards, not an oracle; the
-    // oracle is the truth CSV above): depth within 2 % (max 1.36 %), the box
-    // centre settling within 5 px on average over the last four tracked
-    // frames (4.3, 4.6, 2.8, 3.2 px; it starts 19.7 px off on this cluttered
-    // background, docs/replay.md).
-    EXPECT_LT(depth_max, 2.0) << "depth error, %";
-    ASSERT_GE(boxes.size(), 4u);
-    double last4 = 0;
-    for (size_t i = boxes.size() - 4; i < boxes.size(); ++i) last4 += boxes[i] / 4;
-    EXPECT_LT(last4, 5.0) << "box centre error over the last four tracked frames, px";
+    // The ball passes in front of the real scene: its visible surface is
+    // nearer than the scene's nearest point by the pair's own ground truth
+    // and calibration (GT 8-bit, disparity in full-size pixels, 0 unknown).
+    double gt_max = 0;
+    cv::minMaxLoc(cv::imread(test_support::data_path("middlebury_2006_aloe/aloeGT.png"),
+                             cv::IMREAD_GRAYSCALE),
+                  nullptr, &gt_max);
+    const double scene_nearest_mm = 3740.0 * 160.0 / (gt_max + 270.0);
+    EXPECT_NEAR(scene_nearest_mm, 1244, 1);
+    for (const auto& row : rows) EXPECT_LT(row[5], scene_nearest_mm - 100);
+    // Bounds (regression guards; the oracle is the truth CSV above): the
+    // issue's 1 % in depth (measured 0.40 % at most) and a box centre within
+    // 3 px on average (measured 0.94 px, 1.72 px at most). With the
+    // calibration's offset dropped from the manifest (principal points
+    // equal) the same run's depth error is 96.5 %.
+    EXPECT_LT(depth_max, 1.0) << "depth error, %";
+    ASSERT_GE(boxes.size(), 5u);
+    double mean_box = 0;
+    for (const double b : boxes) mean_box += b / static_cast<double>(boxes.size());
+    EXPECT_LT(mean_box, 3.0) << "box centre error, mean over the tracked frames, px";
     // frames.csv carries the truth; the trajectory plot is drawn with it.
     const std::string frames = testsupport::read_text(dir + "/out/frames.csv");
     EXPECT_NE(frames.find("true_x_mm"), std::string::npos);

@@ -5,6 +5,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
 
 #include "model/scene/background.h"
 #include "model/scene/ball_paths.h"
@@ -15,11 +18,43 @@ namespace testsupport {
 
 namespace {
 
-scene::rgb_image crop(const scene::rgb_image& in, int width, int height) {
-    scene::rgb_image out(width, height);
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) out.at(x, y) = in.at(x, y);
+// The pair's file, scaled down by `downscale` and cropped (OpenCV reads
+// PNG and JPEG; area averaging, as a camera's larger pixels would).
+scene::rgb_image load_window(const std::string& path, const composite_spec& spec) {
+    cv::Mat bgr = cv::imread(path, cv::IMREAD_COLOR);
+    if (bgr.empty()) throw std::runtime_error("cannot read " + path);
+    if (spec.downscale != 1.0) {
+        const cv::Size size(static_cast<int>(std::lround(bgr.cols / spec.downscale)),
+                            static_cast<int>(std::lround(bgr.rows / spec.downscale)));
+        cv::resize(bgr, bgr, size, 0, 0, cv::INTER_AREA);
+    }
+    if (spec.crop_x < 0 || spec.crop_y < 0 || spec.crop_x + spec.width > bgr.cols ||
+        spec.crop_y + spec.height > bgr.rows)
+        throw std::runtime_error(path + ": " + std::to_string(bgr.cols) + " x " +
+                                 std::to_string(bgr.rows) + " scaled is too small for the crop");
+    scene::rgb_image out(spec.width, spec.height);
+    for (int y = 0; y < spec.height; ++y) {
+        const cv::Vec3b* row = bgr.ptr<cv::Vec3b>(spec.crop_y + y);
+        for (int x = 0; x < spec.width; ++x) {
+            const cv::Vec3b p = row[spec.crop_x + x];
+            out.at(x, y) = {p[2], p[1], p[0]};
+        }
+    }
     return out;
+}
+
+// The renderer's rig for the pair at the sequence's scale: cx_left - cx_right
+// = -offset, so the rig's disparity_px(Z) is f B / Z - offset, the pair's.
+scene::stereo_rig rig_of(const composite_spec& spec) {
+    scene::stereo_rig rig;
+    rig.width = spec.width;
+    rig.height = spec.height;
+    rig.focal_length_m = spec.calibration.focal_px / spec.downscale * rig.pixel_pitch_m;
+    rig.baseline_m = spec.calibration.baseline_m;
+    const double offset = spec.calibration.disparity_offset_px / spec.downscale;
+    rig.principal_dx_left = -0.5 * offset;
+    rig.principal_dx_right = 0.5 * offset;
+    return rig;
 }
 
 uint8_t channel(double v) {
@@ -50,21 +85,21 @@ std::string write_composite_replay(const composite_spec& spec, const std::string
     namespace fs = std::filesystem;
     scene::rgb_image real[2];
     try {
-        real[0] = crop(scene::read_png_rgb(spec.left_png), spec.width, spec.height);
-        real[1] = crop(scene::read_png_rgb(spec.right_png), spec.width, spec.height);
+        real[0] = load_window(spec.left_png, spec);
+        real[1] = load_window(spec.right_png, spec);
     } catch (const std::exception& e) {
         *error = e.what();
         return {};
     }
     scene::scenario s;
-    s.scene.rig.width = spec.width;
-    s.scene.rig.height = spec.height;
+    s.scene.rig = rig_of(spec);
     s.scene.background =
         scene::background_desc::procedural_plane(scene::procedural_texture_params{}, 5.0);
     scene::ball_desc ball;
     ball.radius_m = spec.radius_m;
-    ball.path = scene::line_path(spec.depth_m, spec.speed,
-                                 scene::motion_start_s(spec.still_frames, s.frame_period_s));
+    const double start_s = scene::motion_start_s(spec.still_frames, s.frame_period_s);
+    ball.path = spec.pass ? scene::pass_path(spec.depth_m, spec.speed, start_s)
+                          : scene::line_path(spec.depth_m, spec.speed, start_s);
     s.scene.balls.push_back(ball);
     scene::scenario empty = s;
     empty.scene.balls.clear();
