@@ -351,7 +351,7 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
 
     out.has_object = true;
     out.box_right = s.tracker.position();
-    s.stereo_sad(object_core(out.box_right), out);
+    s.stereo_sad(out.box_right, out);
     s.stereo_edge(out.box_right, out);
     if (s.choose_disparity(out)) s.xyz(out.box_right, out);
     return out;
@@ -558,13 +558,30 @@ box controller::impl::refit_box(box last, box found, uint64_t* cycles, sdram_tra
 
 // Stage stereo_sad: the right pattern along the same rows (+-row_slack) of
 // the left image.
+// Stage stereo_sad: the object's core matched over the depth range; a large
+// object's disparity is then its tiles' mean depth around the core's
+// (dsp/object_depth.h), the core's when too few tiles matched.
 void controller::impl::stereo_sad(box object, frame_output& out) {
     stage_scope scope(*hardware, stage::stereo_sad, out);
-    out.sad_match = stereo_match_sad(history(0), left(), object, config.stereo);
-    out.sad_at_range_end = at_range_end(out.sad_match, object, config.stereo.min_disparity,
+    const box core = object_core(object);
+    out.sad_match = stereo_match_sad(history(0), left(), core, config.stereo);
+    out.sad_at_range_end = at_range_end(out.sad_match, core, config.stereo.min_disparity,
                                         config.stereo.max_disparity, width);
-    scope.charge(cost::sad_search_cycles(object.width, object.height, out.sad_match.positions));
+    scope.charge(cost::sad_search_cycles(core.width, core.height, out.sad_match.positions));
     if (config.stereo.subpixel && out.sad_match.valid) scope.charge(cost::subpixel_cycles());
+    if (!out.sad_match.valid || out.sad_at_range_end) return;
+    if (!object_is_tiled(object, config.surface)) return;
+    const object_depth_result& r = out.surface =
+        match_object_surface(history(0), left(), object, out.sad_match.disparity_q8, config.stereo,
+                             config.rig, config.surface);
+    // Each tile a search of its own (the mean of their positions: they
+    // differ only where the left image's border clips one).
+    if (r.tiles > 0)
+        scope.charge(r.tiles *
+                     cost::sad_search_cycles(r.tile_width, r.tile_height, r.positions / r.tiles));
+    if (config.stereo.subpixel) scope.charge(r.tiles * cost::subpixel_cycles());
+    scope.charge(cost::surface_mean_cycles(r.inside, r.matched));
+    if (r.valid) out.sad_match.disparity_q8 = r.disparity_q8;
 }
 
 // Stage stereo_edge: Sobel on a band of the pattern's rows of both images

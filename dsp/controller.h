@@ -38,7 +38,9 @@
 //     the frames the track was lost in).
 //   Whenever an object box is known after the above: stereo_match_sad of
 //   the box's core (less 1/8 of each side: a round object's box corners are
-//   background) into the left image (stage stereo_sad); Sobel on a band of
+//   background) into the left image, and for a box wider or taller than
+//   96 px its tiles' mean depth around the core's disparity
+//   (dsp/object_depth.h) (stage stereo_sad); Sobel on a band of
 //   the box's rows of both images + stereo_match_edge of the whole box
 //   (stage stereo_edge); a minimum on an end of the disparity range searched
 //   is rejected; triangulation of the box centre with the chosen method's
@@ -84,6 +86,7 @@
 #include "dsp/image.h"
 #include "dsp/kernel_costs.h"
 #include "dsp/motion_detect.h"
+#include "dsp/object_depth.h"
 #include "dsp/preprocess.h"
 #include "dsp/stage.h"
 #include "dsp/stereo_edge.h"
@@ -110,6 +113,7 @@ struct controller_config {
     detect_params detect;
     track_params track;
     stereo_params stereo;
+    object_depth_params surface;  // a large object's depth from tiles (dsp/object_depth.h)
     edge_params edge;
     stereo_method method = stereo_method::sad;  // which result gives the 3D point
     camera_rig rig;
@@ -170,9 +174,10 @@ struct frame_output {
     bool detected = false;
     bool detection_at_border = false;
     bool has_object = false;
-    box box_right;  // object zone in the right image
-    box box_left;   // matched zone in the left image (from the chosen disparity)
-    stereo_result sad_match;
+    box box_right;            // object zone in the right image
+    box box_left;             // matched zone in the left image (from the chosen disparity)
+    stereo_result sad_match;  // the core's match; its disparity the tiles' when they matched
+    object_depth_result surface;
     stereo_result edge_match;
     // The minimum sat on an end of the disparity range searched (the range's
     // own ends, or where the left image's border cut it): not used.

@@ -322,6 +322,24 @@ kernel_profile subpixel_profile() {
     return p;
 }
 
+kernel_profile surface_mean_profile(int inside, int matched) {
+    // The gate's insertion sort of `inside` SADs: n^2 / 4 shifts on
+    // average (load, compare, store, branch; not pipelined: the compare
+    // decides the next step), then the gate (one MPY, one add).
+    // Per tile kept: the checks, d - offset, 2^32 / that (__divull,
+    // ~18 quotient bits: a Q8 disparity of 64-256 px) and its sum; then
+    // n 2^32 / sum (~16 quotient bits) and the offset back.
+    const uint32_t m = static_cast<uint32_t>(non_negative(inside));
+    const uint32_t n = static_cast<uint32_t>(non_negative(matched));
+    kernel_profile p("surface_mean");
+    p.add(block("sort step", op_mix{/*l*/ 1, /*s*/ 1, 0, /*d*/ 2, 0, /*lsd*/ 1},
+                latency_load + latency_alu + latency_store, m * m / 4 + m));
+    p.add(block("tile checks, sum", op_mix{/*l*/ 4, 0, 0, 0, 0, /*lsd*/ 4}, 4 * latency_alu, n));
+    p.add_call(c64x::software_divide(18, true), n);
+    p.add_call(c64x::software_divide(16, true));
+    return p;
+}
+
 kernel_profile sobel_profile(int width, int rows) {
     // IMG_sobel semantics, 4 output pixels per iteration in 16-bit lanes:
     //   d 4: LDNDW of rows y-1, y, y+1 at x-1, STW of 4 outputs
@@ -492,6 +510,10 @@ uint64_t pattern_copy_cycles(int pattern_w, int pattern_h) {
 
 uint64_t subpixel_cycles() {
     return g_model.cycles(subpixel_profile());
+}
+
+uint64_t surface_mean_cycles(int inside, int matched) {
+    return g_model.cycles(surface_mean_profile(inside, matched));
 }
 
 uint64_t sobel_cycles(int width, int rows) {

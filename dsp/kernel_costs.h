@@ -55,6 +55,10 @@ uint64_t sad_search_cycles(int pattern_w, int pattern_h, int positions);
 uint64_t pattern_copy_cycles(int pattern_w, int pattern_h);
 // Parabola sub-pixel refinement (one division).
 uint64_t subpixel_cycles();
+// The gate and mean depth of a large object's tiles (dsp/object_depth.h):
+// the sort of `inside` SADs, one 64-bit division per `matched` tile and one
+// for the mean.
+uint64_t surface_mean_cycles(int inside, int matched);
 // Sobel 3x3 over `rows` rows of `width` pixels.
 uint64_t sobel_cycles(int width, int rows);
 // Edge segment extraction and matching over `lines` epipolar lines of
@@ -92,6 +96,7 @@ c64x::kernel_profile connected_components_profile(int width, int height, int for
 c64x::kernel_profile sad_search_profile(int pattern_w, int pattern_h, int positions);
 c64x::kernel_profile pattern_copy_profile(int pattern_w, int pattern_h);
 c64x::kernel_profile subpixel_profile();
+c64x::kernel_profile surface_mean_profile(int inside, int matched);
 c64x::kernel_profile sobel_profile(int width, int rows);
 c64x::kernel_profile edge_match_profile(int width, int lines, int max_disparity,
                                         int min_disparity = 0);

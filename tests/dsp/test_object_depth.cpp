@@ -1,0 +1,140 @@
+// A large object's depth from tiles (dsp/object_depth.h) on synthetic pairs
+// whose disparities are known by construction: an object box whose left
+// half lies at disparity 40 and right half at 44 over a background at 10,
+// every layer its own random texture. The expected disparity is the one of
+// the halves' mean depth, 2 / (1/40 + 1/44) (each half holds as many tiles),
+// computed here, not by the code under test.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "dsp/object_depth.h"
+
+namespace {
+
+constexpr int width = 320, height = 240;
+constexpr int near_half = 40, far_half = 44, background = 10;  // disparities, px
+const dsp::box object{100, 60, 128, 128};
+
+struct pair_images {
+    std::vector<uint8_t> right, left;
+    dsp::gray_cplane right_view() const { return {right.data(), width, height, width}; }
+    dsp::gray_cplane left_view() const { return {left.data(), width, height, width}; }
+};
+
+uint8_t texture(int layer, int x, int y) {
+    // A fixed pseudo-random value per layer and right-image pixel.
+    // Unsigned arithmetic: wraps, where int products would overflow.
+    uint32_t h = static_cast<uint32_t>(layer) * 73856093u ^ static_cast<uint32_t>(x) * 19349663u ^
+                 static_cast<uint32_t>(y) * 83492791u;
+    h ^= h >> 13;
+    h *= 0x5bd1e995u;
+    h ^= h >> 15;
+    return static_cast<uint8_t>(h & 0xff);
+}
+
+// Right (x, y) shows the layer there; left (x, y) shows the layer whose
+// right-image point x - d lands on it (the object in front of the background).
+pair_images make_pair() {
+    pair_images p{std::vector<uint8_t>(width * height), std::vector<uint8_t>(width * height)};
+    const int split = object.x + object.width / 2;
+    auto on_object = [](int x, int y) {
+        return x >= object.x && x < object.right() && y >= object.y && y < object.bottom();
+    };
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            p.right[y * width + x] = on_object(x, y) ? texture(1, x, y) : texture(0, x, y);
+            const int x_near = x - near_half, x_far = x - far_half;
+            uint8_t v = texture(0, x - background, y);
+            if (on_object(x_near, y) && x_near < split) v = texture(1, x_near, y);
+            if (on_object(x_far, y) && x_far >= split) v = texture(1, x_far, y);
+            p.left[y * width + x] = v;
+        }
+    }
+    return p;
+}
+
+dsp::stereo_params depth_range_search() {
+    dsp::stereo_params s;
+    s.min_disparity = 0;
+    s.max_disparity = 100;
+    return s;
+}
+
+// The core's match as the controller makes it (the box less an eighth of
+// each side, over the whole depth range): the tiles' starting point.
+int32_t core_disparity_q8(const pair_images& p, dsp::box b) {
+    const dsp::box core{b.x + b.width / 8, b.y + b.height / 8, b.width - 2 * (b.width / 8),
+                        b.height - 2 * (b.height / 8)};
+    const dsp::stereo_result m =
+        dsp::stereo_match_sad(p.right_view(), p.left_view(), core, depth_range_search());
+    EXPECT_TRUE(m.valid);
+    return m.disparity_q8;
+}
+
+double halves_mean_depth_disparity(double offset) {
+    return offset + 2.0 / (1.0 / (near_half - offset) + 1.0 / (far_half - offset));
+}
+
+TEST(ObjectDepth, TheTilesGiveTheDisparityOfTheMeanDepth) {
+    const pair_images p = make_pair();
+    const dsp::camera_rig rig;
+    const dsp::object_depth_result r = dsp::match_object_surface(
+        p.right_view(), p.left_view(), object, core_disparity_q8(p, object), depth_range_search(),
+        rig, dsp::object_depth_params{});
+    EXPECT_TRUE(r.tiled);
+    ASSERT_TRUE(r.valid);
+    EXPECT_EQ(r.tiles, 64);  // 128 / 16 px a side: 8 x 8
+    EXPECT_EQ(r.matched, 64);
+    EXPECT_EQ(r.tile_width, 16);
+    EXPECT_NEAR(r.disparity_q8, 256 * halves_mean_depth_disparity(0), 1.0);
+    // Not the core's disparity, nor the halves' mean disparity (42): the
+    // mean depth is farther.
+    EXPECT_GE(std::abs(r.disparity_q8 - core_disparity_q8(p, object)), 20);
+    EXPECT_LT(r.disparity_q8, 42 * 256 - 20);
+}
+
+TEST(ObjectDepth, BackgroundTilesAreLeftOut) {
+    const pair_images p = make_pair();
+    // The box overreaches the object by two tile columns of background.
+    dsp::box wide = object;
+    wide.width += 32;
+    const dsp::object_depth_result r =
+        dsp::match_object_surface(p.right_view(), p.left_view(), wide, core_disparity_q8(p, object),
+                                  depth_range_search(), dsp::camera_rig{}, {});
+    ASSERT_TRUE(r.valid);
+    EXPECT_EQ(r.tiles, 80);
+    EXPECT_EQ(r.matched, 64);
+    EXPECT_NEAR(r.disparity_q8, 256 * halves_mean_depth_disparity(0), 1.0);
+}
+
+TEST(ObjectDepth, ThePrincipalOffsetIsOutsideTheMean) {
+    // Principal points 20 px apart (cx_left - cx_right = -20): depth goes
+    // with 1 / (d + 20), so the mean is taken over d + 20.
+    const pair_images p = make_pair();
+    dsp::camera_rig rig;
+    rig.cx_right_q8 = rig.cx_left_q8 + 20 * 256;
+    const dsp::object_depth_result r =
+        dsp::match_object_surface(p.right_view(), p.left_view(), object,
+                                  core_disparity_q8(p, object), depth_range_search(), rig, {});
+    ASSERT_TRUE(r.valid);
+    EXPECT_NEAR(r.disparity_q8, 256 * halves_mean_depth_disparity(-20), 1.0);
+    EXPECT_GT(
+        std::fabs(256 * halves_mean_depth_disparity(-20) - 256 * halves_mean_depth_disparity(0)),
+        4.0);  // the two differ by more than the tolerance
+}
+
+TEST(ObjectDepth, ObjectsUpToThePatternCapAreNotTiled) {
+    const pair_images p = make_pair();
+    dsp::box small = object;
+    small.width = small.height = 96;  // the tracker's pattern cap: the core match stands
+    const dsp::object_depth_result r =
+        dsp::match_object_surface(p.right_view(), p.left_view(), small, core_disparity_q8(p, small),
+                                  depth_range_search(), {}, {});
+    EXPECT_FALSE(r.tiled);
+    EXPECT_FALSE(r.valid);
+    EXPECT_EQ(r.tiles, 0);
+}
+
+}  // namespace
