@@ -556,9 +556,8 @@ box controller::impl::refit_box(box last, box found, uint64_t* cycles, sdram_tra
     return resized;
 }
 
-// Stage stereo_sad: the right pattern along the same rows (+-row_slack) of
-// the left image.
-// Stage stereo_sad: the object's core matched over the depth range; a large
+// Stage stereo_sad: the object's core (the right pattern) along the same rows
+// (+-row_slack) of the left image over the depth range; a large
 // object's disparity is then its tiles' mean depth around the core's
 // (dsp/object_depth.h), the core's when too few tiles matched.
 void controller::impl::stereo_sad(box object, frame_output& out) {

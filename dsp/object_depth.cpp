@@ -34,8 +34,9 @@ int surface_spread_px(int32_t core_q8, int side, const camera_rig& rig) {
 
 // A tile matched on the object has a SAD near the object's other tiles'; one
 // of background in the object's range (its true minimum lies outside it)
-// is far above (measured on the 320 px ball: 0.3-0.8 a pixel on the ball,
-// 17-42 on the background around it). Gate: gate_median_factor x the
+// is far above (measured on the 320 px ball: 0.2-1.5 a pixel on the ball
+// on the host, 1-2.5 co-simulated with the sensors' noise; 10-55 on the
+// background around it). Gate: gate_median_factor x the
 // median tile's SAD plus gate_floor_per_pixel a pixel (room for noise).
 uint64_t sad_gate(const uint32_t* sads, int n, int area, const object_depth_params& params) {
     uint32_t sorted[max_tiles];
