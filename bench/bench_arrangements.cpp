@@ -39,6 +39,7 @@
 // verilated.h, seeing SystemC, expects sc_time_stamp in the global namespace.
 using sc_core::sc_time_stamp;
 #include "Vcard.h"
+#include "bench/bench_support.h"
 #include "tb/app/output/waves_writer.h"
 #include "tb/platform/platform.h"
 #include "tests/rtl/card_bench.h"
@@ -46,13 +47,10 @@ using sc_core::sc_time_stamp;
 
 namespace {
 
-constexpr simtime::ticks ticks_per_ms = 18000000;
+using bench::env_int;
+using bench::median;
 
-int env_int(const char* name, int fallback) {
-    const char* text = std::getenv(name);
-    const int value = text ? std::atoi(text) : 0;
-    return value > 0 ? value : fallback;
-}
+constexpr simtime::ticks ticks_per_ms = 18000000;
 
 double cpu_seconds() {
     timespec t{};
@@ -105,12 +103,6 @@ run_time run_in_child(platform::arrangement_kind arrangement, int frames, bool w
     int status = 0;
     waitpid(pid, &status, 0);
     return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? r : run_time{};
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 void measure_arrangements(benchmark::State& state, bool waves_window) {

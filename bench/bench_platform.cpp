@@ -9,7 +9,8 @@
 //   syncs_per_period  island <-> SystemC syncs per period
 //   pairs_per_s       frame pairs (24.5 ms periods) per wall second (issue 14's figure)
 //   card_evals_per_edge  evaluations of the verilated card per clock edge (pclk + ECLK)
-// bench_arrangements has both arrangements side by side, docs/performance.md the history.
+// bench_arrangements has both arrangements side by side, bench_campaign the fault
+// campaign with and without snapshots, docs/performance.md the history.
 #include <benchmark/benchmark.h>
 
 #include <systemc>
