@@ -82,6 +82,11 @@ int forked_runs(const json& document) {
 void campaign_both_ways(benchmark::State& state) {
     const std::string campaign = env_text("STEREOSIM_BENCH_CAMPAIGN", "smoke");
     const int reps = env_int("STEREOSIM_BENCH_REPS", 1);
+    if (campaign.find_first_not_of("abcdefghijklmnopqrstuvwxyz") != std::string::npos) {
+        // It goes into a shell command line: a name, nothing else.
+        state.SkipWithError("STEREOSIM_BENCH_CAMPAIGN: a campaign name (smoke or full)");
+        return;
+    }
     const std::filesystem::path dir =
         std::filesystem::temp_directory_path() / ("bench_campaign_" + std::to_string(getpid()));
     for (auto _ : state) {
