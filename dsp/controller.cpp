@@ -58,8 +58,8 @@ int min_int(int a, int b) {
 // (the inverse of dsp/triangulate.h). Integer, once at init.
 int64_t disparity_q8_at_depth(const camera_rig& rig, int32_t depth_mm) {
     const int64_t depth_um = static_cast<int64_t>(depth_mm) * 1000;
-    const int64_t dcx_q8 = static_cast<int64_t>(rig.cx_left_q8) - rig.cx_right_q8;
-    return static_cast<int64_t>(rig.baseline_um) * rig.focal_px_q8() / depth_um + dcx_q8;
+    return static_cast<int64_t>(rig.baseline_um) * rig.focal_px_q8() / depth_um +
+           rig.principal_offset_q8();
 }
 
 // Where object(t-1) is looked for when the object's box at t-1 was `last`:
@@ -94,20 +94,6 @@ void refit_axis(int found_start, int found_size, int last_start, int last_size, 
     const int new_start = (centre2 - new_size) >> 1;  // floor, also below 0
     *size = new_size;
     *start = max_int(0, min_int(limit - new_size, new_start));
-}
-
-// A stereo minimum on an end of the disparity range actually searched is no
-// minimum: the true one may lie beyond. The upper end is max_disparity or,
-// nearer the right border, the largest disparity that keeps the box inside
-// the left image; there the object may have left the left view. The range
-// has disparity_margin_px beyond the depth range at each end, so an object
-// inside the depth range never has its minimum there. Measured on a ball
-// leaving the view: depth errors of +10 % to +195 % without this rule (the
-// minima at 35 px, the border, and at 13 px, the far end).
-bool at_range_end(const stereo_result& match, box object, int min_disparity, int max_disparity,
-                  int image_width) {
-    const int upper = min_int(max_disparity, image_width - object.right());
-    return match.valid && (match.disparity <= min_disparity || match.disparity >= upper);
 }
 
 // The part of an object box SAD stereo matches: the box less one eighth of

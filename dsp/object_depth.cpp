@@ -1,5 +1,7 @@
 #include "dsp/object_depth.h"
 
+#include <algorithm>
+
 namespace dsp {
 
 namespace {
@@ -7,26 +9,17 @@ namespace {
 constexpr int max_tiles_per_side = 16;
 constexpr int max_tiles = max_tiles_per_side * max_tiles_per_side;
 
-int min_of(int a, int b) {
-    return a < b ? a : b;
-}
-
-int max_of(int a, int b) {
-    return a > b ? a : b;
-}
-
 // Tiles along one side of `length` px: as many as fit at min_tile_side, at
 // most tiles_per_side.
 int tiles_along(int length, const object_depth_params& params) {
-    const int per_side = min_of(params.tiles_per_side, max_tiles_per_side);
-    return max_of(1, min_of(per_side, length / params.min_tile_side));
+    const int per_side = std::min(params.tiles_per_side, max_tiles_per_side);
+    return std::max(1, std::min(per_side, length / params.min_tile_side));
 }
 
 // The disparity span, px, of an object as deep as it is wide around the
 // core's disparity (see the header), plus two pixels of sub-pixel margin.
 int surface_spread_px(int32_t core_q8, int side, const camera_rig& rig) {
-    const int64_t offset_q8 = int64_t{rig.cx_left_q8} - rig.cx_right_q8;
-    const int64_t true_q8 = core_q8 - offset_q8;
+    const int64_t true_q8 = core_q8 - rig.principal_offset_q8();
     const int64_t focal_q8 = rig.focal_px_q8();
     if (true_q8 <= 0 || focal_q8 <= 0) return 2;
     return static_cast<int>(true_q8 * side / (2 * focal_q8)) + 2;
@@ -64,10 +57,10 @@ object_depth_result match_object_surface(gray_cplane right, gray_cplane left, bo
     object_depth_result r;
     if (!object_is_tiled(object, params)) return r;
     r.tiled = true;
-    const int spread = surface_spread_px(core_q8, max_of(object.width, object.height), rig);
+    const int spread = surface_spread_px(core_q8, std::max(object.width, object.height), rig);
     stereo_params narrow = search;
-    narrow.min_disparity = max_of(search.min_disparity, (core_q8 >> 8) - spread);
-    narrow.max_disparity = min_of(search.max_disparity, ((core_q8 + 255) >> 8) + spread);
+    narrow.min_disparity = std::max(search.min_disparity, (core_q8 >> 8) - spread);
+    narrow.max_disparity = std::min(search.max_disparity, ((core_q8 + 255) >> 8) + spread);
 
     const int columns = tiles_along(object.width, params);
     const int rows = tiles_along(object.height, params);
@@ -76,7 +69,7 @@ object_depth_result match_object_surface(gray_cplane right, gray_cplane left, bo
     // The grid centred on the box (its remainder split between both sides).
     const int x0 = object.x + (object.width - columns * r.tile_width) / 2;
     const int y0 = object.y + (object.height - rows * r.tile_height) / 2;
-    const int64_t offset_q8 = int64_t{rig.cx_left_q8} - rig.cx_right_q8;
+    const int64_t offset_q8 = rig.principal_offset_q8();
     int32_t tile_q8[max_tiles];
     uint32_t tile_sad[max_tiles];
     for (int j = 0; j < rows; ++j) {
@@ -86,10 +79,10 @@ object_depth_result match_object_surface(gray_cplane right, gray_cplane left, bo
             const stereo_result m = stereo_match_sad(right, left, tile, narrow);
             ++r.tiles;
             r.positions += m.positions;
-            // Kept only with its minimum strictly inside the narrow range and
-            // the left image: at an end, the true minimum may lie beyond.
-            const int upper = min_of(narrow.max_disparity, left.width - tile.right());
-            if (!m.valid || m.disparity <= narrow.min_disparity || m.disparity >= upper) continue;
+            // Kept only with its minimum strictly inside the narrow range.
+            if (!m.valid ||
+                at_range_end(m, tile, narrow.min_disparity, narrow.max_disparity, left.width))
+                continue;
             if (m.disparity_q8 - offset_q8 <= 0) continue;
             tile_q8[r.inside] = m.disparity_q8;
             tile_sad[r.inside] = m.sad;

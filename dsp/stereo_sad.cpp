@@ -1,5 +1,6 @@
 #include "dsp/stereo_sad.h"
 
+#include <algorithm>
 #include <cstdlib>
 
 namespace dsp {
@@ -124,6 +125,12 @@ stereo_result stereo_match_sad(gray_cplane right, gray_cplane left, box pattern,
                         : subpixel_offset_equiangular_q8(best_minus, best, best_plus);
     result.disparity_q8 = result.disparity * 256 + offset_q8;
     return result;
+}
+
+bool at_range_end(const stereo_result& match, box pattern, int min_disparity, int max_disparity,
+                  int image_width) {
+    const int upper = std::min(max_disparity, image_width - pattern.right());
+    return match.valid && (match.disparity <= min_disparity || match.disparity >= upper);
 }
 
 }  // namespace dsp

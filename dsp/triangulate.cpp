@@ -25,8 +25,7 @@ int64_t camera_rig::focal_px_q8() const {
 bool triangulate(const camera_rig& rig, int32_t x_right_q8, int32_t y_right_q8,
                  int32_t disparity_q8, point3_um* out) {
     // l + r in Q8 pixels: the disparity less the principal points' offset.
-    const int64_t den = static_cast<int64_t>(disparity_q8) -
-                        (static_cast<int64_t>(rig.cx_left_q8) - rig.cx_right_q8);
+    const int64_t den = static_cast<int64_t>(disparity_q8) - rig.principal_offset_q8();
     if (den <= 0) return false;
 
     const int64_t s = rig.baseline_um;

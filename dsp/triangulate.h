@@ -39,6 +39,8 @@ struct camera_rig {
 
     // Focal length in pixels, Q8, rounded: f / pitch (789.47 px = 202105 for the default rig).
     int64_t focal_px_q8() const;
+    // The principal points' offset, Q8 px: the disparity of a point at infinity.
+    int64_t principal_offset_q8() const { return int64_t{cx_left_q8} - cx_right_q8; }
 };
 
 struct point3_um {
