@@ -122,6 +122,7 @@ class card_bench {
         if (p_edge) d.pclk = 1;
         if (e_edge) d.eclk = 1;
         d.eval();
+        if (after_eval) after_eval();
 
         if (p_edge) {
             ++m_pclk_edges;
@@ -152,6 +153,7 @@ class card_bench {
         d.pclk = 0;
         d.eclk = 0;
         d.eval();
+        if (after_eval) after_eval();
     }
 
     template <class Pred>
@@ -247,6 +249,7 @@ class card_bench {
     std::vector<uint8_t> ardy_trace;  // ARDY before master edge n is ardy_trace[n - 1]
     uint64_t timeouts = 0;
     std::function<void()> on_eclk;
+    std::function<void()> after_eval;  // after each eval of step() (a shadow model follows)
 
     bench_options opt;
     test_sensor left, right;

@@ -6,6 +6,7 @@
 #include "model/emif/ardy_glue.h"
 #include "model/sensor/sensor_core.h"
 #include "model/time/sc_ticks.h"
+#include "tb/platform/arrangements/fast/card_eval.h"
 #include "tb/platform/island/card_signals.h"
 
 // verilated.h, seeing SystemC, expects sc_time_stamp in the global namespace
@@ -175,7 +176,8 @@ class fast_island final : public platform::island {
     pending_word m_pending[2];
     uint8_t m_irq = 0;  // EXT_INT4..6 as bits 0..2, as last stepped
     uint8_t m_irq_written = 0;
-    bool m_inputs_changed = false;  // since the card's last eval
+    bool m_inputs_changed = false;         // an EMIF input, since the card's last eval
+    bool m_sensor_inputs_changed = false;  // a sensor's pins, likewise
     static constexpr bool traced = platform::is_traced_card<card_model>;
     ticks m_clock_fall[2] = {-1, -1};  // a traced card's pending pclk / eclk fall
 };
@@ -466,8 +468,9 @@ void fast_island<card_model>::pass_falls_before(ticks limit) {
 
 template <class card_model>
 void fast_island<card_model>::eval_card() {
-    m_card->eval();
+    card_eval(*m_card, m_inputs_changed || m_sensor_inputs_changed);
     m_inputs_changed = false;
+    m_sensor_inputs_changed = false;
     ++m_observer.stats().card_evals;
 }
 
@@ -487,6 +490,7 @@ void fast_island<card_model>::apply_sensor_word(int c, const pending_word& w) {
     card_model& d = *m_card;
     const sensor::pin_word word{w.bits};
     const uint8_t data = m_config.wire.on_wire(c, word.data(), w.fall);
+    m_sensor_inputs_changed = true;
     // No eval for a new word: the card registers its sensor inputs at its
     // pixel clock before any logic reads them (rtl/sync_check.v, "input
     // sampling"), so no signal settles on them between edges; the next

@@ -31,8 +31,10 @@
 // (the only inputs with logic that settles between edges: a sensor word is
 // registered at the card's pixel clock before anything reads it), otherwise
 // the clocks' low level is recorded without an eval; then the engine's
-// switch, a sensor step, a few compares. The loop's state lives in members
-// between syncs. docs/performance.md has the figures.
+// switch, a sensor step, a few compares. The untraced card is evaluated
+// without the parts of Verilator's loop that change nothing on it
+// (card_eval.h: the input region only after an input changed). The loop's
+// state lives in members between syncs. docs/performance.md has the figures.
 #pragma once
 
 #include <memory>

@@ -1,0 +1,84 @@
+// The card's evaluation at a clock edge in the fast island, without the
+// parts of Verilator 5.006's generated eval loop that cannot change anything
+// on this card (issue 14; docs/performance.md).
+//
+// Verilator's eval (Vcard___024root___eval) runs, each time:
+//   1. the input-combinational region (ico): the logic that reads the card's
+//      inputs, recomputed from the inputs and the state;
+//   2. the active/NBA loop: evaluate the six edge triggers, OR them into the
+//      NBA set, run the (empty) active region, evaluate the triggers again,
+//      run the NBA region (the flops), clear, evaluate the triggers once
+//      more, until none fires.
+// Here the same generated functions run in the same order, less two things:
+//   - the ico region only when an input other than a clock changed since
+//     the last eval. After any eval every combinational signal is settled on
+//     the inputs and the state of that moment (Verilator repeats the
+//     input-driven logic in the NBA region where it reads state:
+//     nba_sequent__TOP__5 begins with reg_wr_en, rd_start, ardy), so an ico
+//     run on the same inputs writes the values it finds. The card reads its
+//     clocks only in its triggers (no clock in the ico logic), which the
+//     lowered-clock bookkeeping (fast_island.cpp) already relies on.
+//   - the trigger evaluation after the active region: that region is empty
+//     on this card (Vcard___024root___eval_act has no body), so nothing can
+//     have changed between the two evaluations and the second finds no edge.
+// The NBA loop still iterates until no trigger fires (the internal reset
+// synchronizers' outputs are triggers too), with Verilator's bound.
+//
+// The names are Verilator 5.006's: a Verilator that renames them fails to
+// link here rather than running wrong. Exactness is shown byte by byte
+// against Verilator's eval (tests/rtl/test_card_eval.cpp) and by the
+// arrangement identity tests (the pins arrangement runs Verilator's loop).
+#pragma once
+
+#include <cstdlib>
+
+// verilated.h, seeing SystemC, expects sc_time_stamp in the global namespace
+// (where <systemc.h> would put it). The card is --cc: it never calls it.
+#ifdef SYSTEMC_VERSION
+using sc_core::sc_time_stamp;
+#endif
+#include "Vcard.h"
+#include "Vcard__Syms.h"
+#include "Vcard___024root.h"
+#include "verilated.h"
+
+// The generated regions (Vcard___024root__DepSet_*.cpp; external linkage,
+// declared only there).
+void Vcard___024root___eval_ico(Vcard___024root* vlSelf);
+void Vcard___024root___eval_triggers__act(Vcard___024root* vlSelf);
+void Vcard___024root___eval_nba(Vcard___024root* vlSelf);
+
+namespace fast {
+
+// Any card: Verilator's own eval (the traced cards, whose tracer also reads
+// the activity flags eval_step sets).
+template <class card_model>
+void card_eval(card_model& d, bool /*inputs_changed*/) {
+    d.eval();
+}
+
+// The untraced card: the regions above, in Verilator's order.
+template <>
+inline void card_eval<Vcard>(Vcard& d, bool inputs_changed) {
+    Vcard___024root& r = *d.rootp;
+    if (inputs_changed) {
+        r.__VicoTriggered.at(0U) = true;  // as the ico trigger on its first pass
+        Vcard___024root___eval_ico(&r);
+    }
+    // Verilator's bound on the NBA loop (its "NBA region did not converge").
+    constexpr int max_nba_passes = 100;
+    Vcard___024root___eval_triggers__act(&r);
+    for (int pass = 0; r.__VactTriggered.any(); ++pass) {
+        if (pass >= max_nba_passes) {
+            VL_FATAL_MT(__FILE__, __LINE__, "", "the card's NBA region did not converge");
+            std::abort();
+        }
+        r.__VnbaTriggered = r.__VactTriggered;
+        Vcard___024root___eval_nba(&r);
+        Vcard___024root___eval_triggers__act(&r);
+    }
+    Verilated::endOfThreadMTask(r.vlSymsp->__Vm_evalMsgQp);
+    Verilated::endOfEval(r.vlSymsp->__Vm_evalMsgQp);
+}
+
+}  // namespace fast
