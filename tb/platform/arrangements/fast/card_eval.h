@@ -61,12 +61,17 @@ void card_eval(card_model& d, bool /*inputs_changed*/) {
 template <>
 inline void card_eval<Vcard>(Vcard& d, bool inputs_changed) {
     Vcard___024root& r = *d.rootp;
+    if (VL_UNLIKELY(!r.vlSymsp->__Vm_didInit)) {  // the first eval initializes the model
+        d.eval();
+        return;
+    }
     if (inputs_changed) {
         r.__VicoTriggered.at(0U) = true;  // as the ico trigger on its first pass
         Vcard___024root___eval_ico(&r);
     }
-    // Verilator's bound on the NBA loop (its "NBA region did not converge").
-    constexpr int max_nba_passes = 100;
+    // Verilator's bound on the NBA loop (its "NBA region did not converge":
+    // a 102nd pass).
+    constexpr int max_nba_passes = 101;
     Vcard___024root___eval_triggers__act(&r);
     for (int pass = 0; r.__VactTriggered.any(); ++pass) {
         if (pass >= max_nba_passes) {
