@@ -31,7 +31,6 @@
 namespace {
 
 using bench = rtl_test::card_bench<Vcard>;
-namespace regs = dsp::card_regs;
 
 // A byte range of the model's root.
 struct byte_range {
@@ -56,7 +55,7 @@ class shadow_card {
     ~shadow_card() { m_card->final(); }
 
     // The bench card's reset sequence (card_bench's constructor), with
-    // Verilator's eval, then the bytes that tell the two models apart.
+    // Verilator's eval, then what the comparison leaves out.
     void reset_like(Vcard& bench_card) {
         Vcard& s = *m_card;
         s.pclk = s.eclk = 0;
