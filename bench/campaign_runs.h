@@ -1,11 +1,13 @@
 // The fault campaign both ways (issue 14; docs/performance.md "Fault
-// campaigns from snapshots"): `stereosim faults --campaign C --jobs 2` with
-// snapshots (the default: runs of one seed fork from a fault-free leader at
-// their first fault's onset) and with --no-snapshots (every run from the
-// start), one after the other, the order alternating over the repetitions.
+// campaigns from snapshots"), for bench_platform: `stereosim faults
+// --campaign C --jobs 2` with snapshots (the default: runs of one seed fork
+// from a fault-free leader at their first fault's onset) and with
+// --no-snapshots (every run from the start), one after the other, the order
+// alternating over the repetitions.
 //
 // STEREOSIM_BENCH_CAMPAIGN: smoke (default, about 2 min both ways) or full
-// (about 25 min on 2 cores). STEREOSIM_BENCH_REPS: repetitions (default 1).
+// (about 25 min on 2 cores). STEREOSIM_BENCH_CAMPAIGN_REPS: repetitions
+// (default 1).
 // Each campaign's own output goes to a log beside its folder, kept when a
 // campaign fails.
 // Counters:
@@ -15,10 +17,14 @@
 //   contract_broken                        runs that broke the contract, either way (0 expected)
 //   rows_identical                         1 if both ways' campaign.json rows are equal but for
 //                                          wall_s and snapshot_ms
+// The program that includes this defines STEREOSIM_BINARY (bench/CMakeLists.txt).
+#pragma once
+
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -28,11 +34,8 @@
 
 #include "bench/bench_support.h"
 
-namespace {
+namespace bench {
 
-using bench::env_int;
-using bench::env_text;
-using bench::median;
 using nlohmann::json;
 
 struct campaign_run {
@@ -43,8 +46,8 @@ struct campaign_run {
 // One campaign into `out` (removed first); wall time of the whole command.
 // A campaign that broke the contract exits 1 but writes campaign.json: its
 // timing counts, and contract_broken reports the breaks.
-campaign_run run_campaign(const std::string& campaign, bool snapshots,
-                          const std::filesystem::path& out) {
+inline campaign_run run_campaign(const std::string& campaign, bool snapshots,
+                                 const std::filesystem::path& out) {
     std::filesystem::remove_all(out);
     std::filesystem::create_directories(out.parent_path());
     // Its table and progress lines go to OUT.log beside OUT.
@@ -64,7 +67,7 @@ campaign_run run_campaign(const std::string& campaign, bool snapshots,
 }
 
 // The rows without the fields that depend on the machine or on forking.
-json comparable_rows(const json& document) {
+inline json comparable_rows(const json& document) {
     json rows = document.at("rows");
     for (json& row : rows) {
         row.erase("wall_s");
@@ -73,15 +76,15 @@ json comparable_rows(const json& document) {
     return rows;
 }
 
-int forked_runs(const json& document) {
+inline int forked_runs(const json& document) {
     int forked = 0;
     for (const json& row : document.at("rows")) forked += row.at("snapshot_ms").is_number();
     return forked;
 }
 
-void campaign_both_ways(benchmark::State& state) {
+inline void campaign_both_ways(benchmark::State& state) {
     const std::string campaign = env_text("STEREOSIM_BENCH_CAMPAIGN", "smoke");
-    const int reps = env_int("STEREOSIM_BENCH_REPS", 1);
+    const int reps = env_int("STEREOSIM_BENCH_CAMPAIGN_REPS", 1);
     if (campaign.find_first_not_of("abcdefghijklmnopqrstuvwxyz") != std::string::npos) {
         // It goes into a shell command line: a name, nothing else.
         state.SkipWithError("STEREOSIM_BENCH_CAMPAIGN: a campaign name (smoke or full)");
@@ -128,8 +131,5 @@ void campaign_both_ways(benchmark::State& state) {
     }
     std::filesystem::remove_all(dir);
 }
-BENCHMARK(campaign_both_ways)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
-}  // namespace
-
-BENCHMARK_MAIN();
+}  // namespace bench
