@@ -6,6 +6,9 @@ void ardy_glue::add(const ardy_fault& fault) {
     if (fault.ce < 0 || fault.ce >= ce_count) return;
     m_fault[fault.ce] = fault;
     m_armed[fault.ce] = false;
+    m_unarmed = 0;
+    for (int ce = 0; ce < ce_count; ++ce)
+        m_unarmed += m_fault[ce].extra_cycles != 0 && !m_armed[ce];
 }
 
 bool ardy_glue::empty() const {
@@ -38,8 +41,12 @@ bool ardy_glue::holds(const emif_pins& pins, const emif_async_master& master) co
 
 void ardy_glue::clock(const emif_pins& pins, simtime::ticks t) {
     m_strobe_edges = count_after(pins);
-    for (int ce = 0; ce < ce_count; ++ce)
-        if (m_fault[ce].extra_cycles != 0 && t >= m_fault[ce].from_tick) m_armed[ce] = true;
+    if (m_unarmed == 0) return;  // every ECLK edge calls this: nothing left to arm
+    for (int ce = 0; ce < ce_count; ++ce) {
+        if (m_fault[ce].extra_cycles == 0 || m_armed[ce] || t < m_fault[ce].from_tick) continue;
+        m_armed[ce] = true;
+        --m_unarmed;
+    }
 }
 
 bool ardy_glue::bus_ardy(const emif_pins& pins, bool card_ardy,

@@ -44,6 +44,7 @@ class ardy_glue {
 
     ardy_fault m_fault[ce_count];
     bool m_armed[ce_count] = {};
+    int m_unarmed = 0;            // faults whose from_tick has not come yet
     uint32_t m_strobe_edges = 0;  // the register: strobe edges so far on a faulted CE
 };
 

@@ -13,7 +13,10 @@
 // Oracle: Verilator 5.006's generated eval, an implementation independent of
 // card_eval's loop. Negative control: a shadow that never runs the
 // input-combinational region (card_eval told that no input changed) drifts
-// apart, so the comparison sees what card_eval's input tracking is for.
+// apart, so the comparison sees what card_eval's input tracking is for. The
+// reset in mid-frame is what checks the NBA loop: the reset synchronizers'
+// outputs fall inside an NBA pass and need a second one (a loop cut to one
+// pass differs on 4 evals, the trigger re-evaluation always skipped on 5).
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -22,7 +22,13 @@
 //     on this card (Vcard___024root___eval_act has no body), so nothing can
 //     have changed between the two evaluations and the second finds no edge.
 // The NBA loop still iterates until no trigger fires (the internal reset
-// synchronizers' outputs are triggers too), with Verilator's bound.
+// synchronizers' outputs are triggers too), with Verilator's bound. After an
+// NBA pass the triggers are evaluated again only if one of those two
+// outputs moved: the other trigger sources are inputs (both clocks and
+// rst_n), which the NBA region does not write, so with every source at its
+// recorded previous value each trigger term is 0 and each "previous value"
+// store rewrites what is there. The static_assert below stops the build if
+// the RTL gains a trigger.
 //
 // The names are Verilator 5.006's: a Verilator that renames them fails to
 // link here rather than running wrong. Exactness is shown byte by byte
@@ -31,6 +37,7 @@
 #pragma once
 
 #include <cstdlib>
+#include <type_traits>
 
 // verilated.h, seeing SystemC, expects sc_time_stamp in the global namespace
 // (where <systemc.h> would put it). The card is --cc: it never calls it.
@@ -50,6 +57,14 @@ void Vcard___024root___eval_nba(Vcard___024root* vlSelf);
 
 namespace fast {
 
+// The only trigger sources the NBA region can move: the reset synchronizers'
+// outputs (rtl/reset_sync.v in rtl/card_top.v), unchanged since the last
+// trigger evaluation.
+inline bool internal_triggers_steady(const Vcard___024root& r) {
+    return r.card_top__DOT__erst_n == r.__Vtrigrprev__TOP__card_top__DOT__erst_n &&
+           r.card_top__DOT__prst_n == r.__Vtrigrprev__TOP__card_top__DOT__prst_n;
+}
+
 // Any card: Verilator's own eval (the traced cards, whose tracer also reads
 // the activity flags eval_step sets).
 template <class card_model>
@@ -61,6 +76,10 @@ void card_eval(card_model& d, bool /*inputs_changed*/) {
 template <>
 inline void card_eval<Vcard>(Vcard& d, bool inputs_changed) {
     Vcard___024root& r = *d.rootp;
+    // Six triggers: posedge eclk or negedge erst_n, posedge pclk or negedge
+    // rst_n, ... (Vcard___024root___eval_triggers__act). Another one means
+    // another source, which internal_triggers_steady must learn of.
+    static_assert(std::is_same_v<decltype(r.__VactTriggered), VlTriggerVec<6>>);
     if (VL_UNLIKELY(!r.vlSymsp->__Vm_didInit)) {  // the first eval initializes the model
         d.eval();
         return;
@@ -80,6 +99,10 @@ inline void card_eval<Vcard>(Vcard& d, bool inputs_changed) {
         }
         r.__VnbaTriggered = r.__VactTriggered;
         Vcard___024root___eval_nba(&r);
+        if (internal_triggers_steady(r)) {
+            r.__VactTriggered.clear();  // what the evaluation would find
+            break;
+        }
         Vcard___024root___eval_triggers__act(&r);
     }
     Verilated::endOfThreadMTask(r.vlSymsp->__Vm_evalMsgQp);
