@@ -36,6 +36,7 @@
 // arrangement identity tests (the pins arrangement runs Verilator's loop).
 #pragma once
 
+#include <cstddef>
 #include <cstdlib>
 #include <type_traits>
 
@@ -63,6 +64,19 @@ namespace fast {
 inline bool internal_triggers_steady(const Vcard___024root& r) {
     return r.card_top__DOT__erst_n == r.__Vtrigrprev__TOP__card_top__DOT__erst_n &&
            r.card_top__DOT__prst_n == r.__Vtrigrprev__TOP__card_top__DOT__prst_n;
+}
+
+// The fired triggers into the NBA set one byte at a time. The trigger
+// function has just stored them a byte at a time, and the wider loads of a
+// plain copy cannot take bytes from several pending stores: they wait for
+// those stores to retire (the island loop's hottest instruction in perf).
+// The empty asm keeps the compiler from merging the byte loads again.
+inline void copy_fired_triggers(VlTriggerVec<6>& to, VlTriggerVec<6>& from) {
+    for (size_t i = 0; i < 6; ++i) {
+        bool fired = from.at(i);
+        asm volatile("" : "+r"(fired));
+        to.at(i) = fired;
+    }
 }
 
 // Any card: Verilator's own eval (the traced cards, whose tracer also reads
@@ -97,7 +111,7 @@ inline void card_eval<Vcard>(Vcard& d, bool inputs_changed) {
             VL_FATAL_MT(__FILE__, __LINE__, "", "the card's NBA region did not converge");
             std::abort();
         }
-        r.__VnbaTriggered = r.__VactTriggered;
+        copy_fired_triggers(r.__VnbaTriggered, r.__VactTriggered);
         Vcard___024root___eval_nba(&r);
         if (internal_triggers_steady(r)) {
             r.__VactTriggered.clear();  // what the evaluation would find
