@@ -7,7 +7,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <ctime>
+#include <exception>
 #include <optional>
 #include <type_traits>
 
@@ -35,11 +37,19 @@ std::optional<Result> in_child(Run&& run) {
         return std::nullopt;
     }
     if (pid == 0) {
+        // The child never returns into the benchmark program: an exception
+        // would otherwise carry on running the parent's other benchmarks.
         close(fd[0]);
-        const std::optional<Result> r = run();
-        if (!r) _exit(4);
-        const ssize_t written = write(fd[1], &*r, sizeof(Result));
-        _exit(written == static_cast<ssize_t>(sizeof(Result)) ? 0 : 3);
+        try {
+            const std::optional<Result> r = run();
+            if (!r) _exit(4);
+            const ssize_t written = write(fd[1], &*r, sizeof(Result));
+            _exit(written == static_cast<ssize_t>(sizeof(Result)) ? 0 : 3);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "bench child: %s\n", e.what());
+        } catch (...) {
+        }
+        _exit(5);
     }
     close(fd[1]);
     Result r{};
