@@ -113,10 +113,9 @@ inline void card_eval<Vcard>(Vcard& d, bool inputs_changed) {
         }
         copy_fired_triggers(r.__VnbaTriggered, r.__VactTriggered);
         Vcard___024root___eval_nba(&r);
-        if (internal_triggers_steady(r)) {
-            r.__VactTriggered.clear();  // what the evaluation would find
-            break;
-        }
+        // No clear of the fired set on the way out: every eval (this one or
+        // Verilator's) evaluates the triggers before it reads them.
+        if (internal_triggers_steady(r)) break;
         Vcard___024root___eval_triggers__act(&r);
     }
     Verilated::endOfThreadMTask(r.vlSymsp->__Vm_evalMsgQp);
