@@ -1,0 +1,229 @@
+// The verilated card alone on the default scenario's own inputs (issue 14;
+// docs/performance.md "The card alone"): how fast the platform could run if
+// everything but the card's evaluation cost nothing.
+//
+// A child runs the default scenario in the fast arrangement (traces off)
+// while this program records every evaluation of its card (bench/card_trace.h):
+// the linker routes the fast island's calls of Vcard::eval_step and of
+// card_eval's generated regions through the wrappers below
+// (bench/CMakeLists.txt, --wrap). The same child then replays the records
+// into a fresh card: once checking every output against the run, then
+// STEREOSIM_BENCH_REPS times (default 5) timed, each followed by a replay
+// that only writes the inputs (the replay's own cost). Other children run the same
+// scenario without recording, before and after, for the platform's own time.
+// STEREOSIM_BENCH_FRAMES sets the periods (default 4; a record is 28 bytes,
+// about 3.1 M evaluations a period).
+//
+// Counters (medians):
+//   platform_pairs_per_s  the whole co-simulation, frame pairs per wall second
+//   card_pairs_per_s      the card's evaluations alone per wall second: the
+//                         replay's time less that of a replay that only writes
+//                         the inputs
+//   card_pairs_per_s_best the same from the fastest replay (the least disturbed)
+//   card_share            the card's time over the platform's: the part of the
+//                         wall time no testbench change can remove
+//   evals_per_period      the card's evaluations per 24.5 ms period
+//   replay_ns_per_eval    the replay's wall time per evaluation
+//   inputs_only_ns_per_eval  the same replay writing the inputs and evaluating
+//                         nothing: the replay's own part of replay_ns_per_eval
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <optional>
+#include <systemc>
+#include <vector>
+
+#include "bench/bench_support.h"
+#include "bench/card_trace.h"
+#include "bench/child_run.h"
+#include "tb/platform/platform.h"
+
+// ---- the recorder: the wrapped calls of the fast island -------------------------------------
+namespace {
+
+std::vector<card_trace::record>* g_trace = nullptr;  // recording while set
+bool g_in_full_eval = false;     // inside Verilator's eval: its own region calls
+bool g_region_recorded = false;  // card_eval ran the input region: its record is taken
+
+bool clocks_moved(const Vcard___024root& r) {
+    return r.eclk != r.__Vtrigrprev__TOP__eclk || r.pclk != r.__Vtrigrprev__TOP__pclk ||
+           r.rst_n != r.__Vtrigrprev__TOP__rst_n;
+}
+
+}  // namespace
+
+void real_eval_step(Vcard* self) asm("__real__ZN5Vcard9eval_stepEv");
+void real_eval_ico(Vcard___024root* r) asm(
+    "__real__Z26Vcard___024root___eval_icoP15Vcard___024root");
+void real_eval_triggers(Vcard___024root* r) asm(
+    "__real__Z36Vcard___024root___eval_triggers__actP15Vcard___024root");
+
+void wrap_eval_step(Vcard* self) asm("__wrap__ZN5Vcard9eval_stepEv");
+void wrap_eval_ico(Vcard___024root* r) asm(
+    "__wrap__Z26Vcard___024root___eval_icoP15Vcard___024root");
+void wrap_eval_triggers(Vcard___024root* r) asm(
+    "__wrap__Z36Vcard___024root___eval_triggers__actP15Vcard___024root");
+
+void wrap_eval_step(Vcard* self) {
+    if (!g_trace) return real_eval_step(self);
+    g_trace->push_back(card_trace::record_of(*self, card_trace::bit_full_eval));
+    g_in_full_eval = true;
+    real_eval_step(self);
+    g_in_full_eval = false;
+}
+
+// card_eval runs the input region first, then the triggers.
+void wrap_eval_ico(Vcard___024root* r) {
+    if (g_trace && !g_in_full_eval) {
+        g_trace->push_back(
+            card_trace::record_of(*r->vlSymsp->__Vm_modelp, card_trace::bit_input_region));
+        g_region_recorded = true;
+    }
+    real_eval_ico(r);
+}
+
+// card_eval's first trigger evaluation starts an evaluation (a clock or the
+// reset moved since the last one); a second one within it (after a reset
+// synchronizer moved) finds every source at its previous value.
+void wrap_eval_triggers(Vcard___024root* r) {
+    if (g_trace && !g_in_full_eval) {
+        if (g_region_recorded) {
+            g_region_recorded = false;
+        } else if (clocks_moved(*r)) {
+            g_trace->push_back(card_trace::record_of(*r->vlSymsp->__Vm_modelp, 0));
+        }
+    }
+    real_eval_triggers(r);
+}
+
+// ---- the benchmark -----------------------------------------------------------------------
+namespace {
+
+struct replay_figures {
+    double record_run_wall_s = 0.0;  // the platform while recording (not a figure of merit)
+    double replay_wall_s = 0.0;      // median of the timed replays
+    double replay_best_s = 0.0;      // the fastest: the least disturbed by other load
+    double inputs_only_s = 0.0;      // median of the replays that evaluate nothing
+    double evals = 0.0;
+    bool outputs_match = false;
+};
+
+platform::platform_config default_config(int frames) {
+    platform::platform_config config;
+    config.hash_pins = false;
+    config.frames = frames;
+    return config;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::optional<double> platform_wall(int frames) {
+    return bench::in_child<double>([frames]() -> std::optional<double> {
+        platform::platform_top top(default_config(frames));
+        const auto t0 = std::chrono::steady_clock::now();
+        top.run();
+        return seconds_since(t0);
+    });
+}
+
+// Wall seconds of one replay of `trace` into a fresh card (not inlined:
+// callgrind's --toggle-collect='*timed_replay*' counts the replays alone).
+template <card_trace::replay_mode mode>
+__attribute__((noinline)) double timed_replay(const std::vector<card_trace::record>& trace) {
+    VerilatedContext context;
+    Vcard card(&context, "card");
+    const auto t0 = std::chrono::steady_clock::now();
+    card_trace::replay<mode>(card, trace);
+    const double wall = seconds_since(t0);
+    card.final();
+    return wall;
+}
+
+std::optional<replay_figures> record_and_replay(int frames, int reps) {
+    return bench::in_child<replay_figures>([=]() -> std::optional<replay_figures> {
+        std::vector<card_trace::record> trace;
+        trace.reserve(static_cast<size_t>(frames) * 3400000);
+        replay_figures f;
+        {
+            g_trace = &trace;  // from the card's construction: its reset is recorded too
+            platform::platform_top top(default_config(frames));
+            const auto t0 = std::chrono::steady_clock::now();
+            top.run();
+            f.record_run_wall_s = seconds_since(t0);
+            g_trace = nullptr;
+        }
+        f.evals = static_cast<double>(trace.size());
+        {
+            VerilatedContext context;
+            Vcard card(&context, "card");
+            const size_t at = card_trace::replay<card_trace::replay_mode::verify>(card, trace);
+            f.outputs_match = at == trace.size();
+            if (!f.outputs_match) {
+                std::printf("  the replay left the run at evaluation %zu of %zu\n", at,
+                            trace.size());
+                std::fflush(stdout);
+            }
+            card.final();
+        }
+        if (!f.outputs_match) return f;
+        std::vector<double> walls, inputs_only;
+        for (int rep = 0; rep < reps; ++rep) {
+            walls.push_back(timed_replay<card_trace::replay_mode::timed>(trace));
+            inputs_only.push_back(timed_replay<card_trace::replay_mode::inputs_only>(trace));
+        }
+        f.replay_wall_s = bench::median(walls);
+        f.replay_best_s = *std::min_element(walls.begin(), walls.end());
+        f.inputs_only_s = bench::median(inputs_only);
+        return f;
+    });
+}
+
+void card_alone_default_scenario(benchmark::State& state) {
+    const int frames = bench::env_int("STEREOSIM_BENCH_FRAMES", 4);
+    const int reps = bench::env_int("STEREOSIM_BENCH_REPS", 5);
+    for (auto _ : state) {
+        const std::optional<double> before = platform_wall(frames);
+        const std::optional<replay_figures> r = record_and_replay(frames, reps);
+        const std::optional<double> after = platform_wall(frames);
+        if (!before || !after || !r) {
+            state.SkipWithError("a child simulation failed");
+            return;
+        }
+        if (!r->outputs_match) {
+            state.SkipWithError("the replay does not reproduce the run's outputs");
+            return;
+        }
+        const double platform_s = bench::median({*before, *after});
+        std::printf(
+            "  platform %.3f s and %.3f s, recording run %.3f s, replay %.3f s (median of %d, "
+            "fastest %.3f s; inputs only %.3f s)\n",
+            *before, *after, r->record_run_wall_s, r->replay_wall_s, reps, r->replay_best_s,
+            r->inputs_only_s);
+        state.counters["frames"] = frames;
+        state.counters["platform_pairs_per_s"] = frames / platform_s;
+        // The card's own time: the replay less its own writing of the inputs.
+        const double card_s = r->replay_wall_s - r->inputs_only_s;
+        state.counters["card_pairs_per_s"] = frames / card_s;
+        state.counters["card_pairs_per_s_best"] = frames / (r->replay_best_s - r->inputs_only_s);
+        state.counters["card_share"] = card_s / platform_s;
+        state.counters["evals_per_period"] = r->evals / frames;
+        state.counters["replay_ns_per_eval"] = 1e9 * r->replay_wall_s / r->evals;
+        state.counters["inputs_only_ns_per_eval"] = 1e9 * r->inputs_only_s / r->evals;
+    }
+}
+BENCHMARK(card_alone_default_scenario)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+
+}  // namespace
+
+int sc_main(int argc, char* argv[]) {
+    sc_core::sc_set_time_resolution(1, sc_core::SC_FS);
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}
