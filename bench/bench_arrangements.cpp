@@ -25,6 +25,7 @@
 using sc_core::sc_time_stamp;
 #include "Vcard.h"
 #include "bench/arrangement_runs.h"
+#include "bench/sc_benchmark_main.h"
 #include "tests/rtl/card_bench.h"
 #include "tests/rtl/icarus/card_stimulus.h"
 
@@ -140,9 +141,5 @@ BENCHMARK(card_icarus_vs_verilator)->Iterations(1)->Unit(benchmark::kSecond)->Us
 }  // namespace
 
 int sc_main(int argc, char* argv[]) {
-    sc_core::sc_set_time_resolution(1, sc_core::SC_FS);
-    benchmark::Initialize(&argc, argv);
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return bench::run_sc_benchmarks(argc, argv);
 }

@@ -38,6 +38,7 @@
 #include "bench/bench_support.h"
 #include "bench/card_trace.h"
 #include "bench/child_run.h"
+#include "bench/sc_benchmark_main.h"
 #include "tb/platform/platform.h"
 
 // ---- the recorder: the wrapped calls of the fast island -------------------------------------
@@ -220,10 +221,5 @@ BENCHMARK(card_alone_default_scenario)->Iterations(1)->Unit(benchmark::kSecond)-
 }  // namespace
 
 int sc_main(int argc, char* argv[]) {
-    sc_core::sc_set_time_resolution(1, sc_core::SC_FS);
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return bench::run_sc_benchmarks(argc, argv);
 }

@@ -30,6 +30,7 @@
 #include "bench/arrangement_runs.h"
 #include "bench/campaign_runs.h"
 #include "bench/child_run.h"
+#include "bench/sc_benchmark_main.h"
 #include "tb/platform/platform.h"
 #include "tb/platform/report.h"
 
@@ -103,10 +104,5 @@ BENCHMARK(campaign_both_ways)->Iterations(1)->Unit(benchmark::kSecond)->UseRealT
 }  // namespace
 
 int sc_main(int argc, char* argv[]) {
-    sc_core::sc_set_time_resolution(1, sc_core::SC_FS);
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return bench::run_sc_benchmarks(argc, argv);
 }
