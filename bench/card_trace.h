@@ -20,7 +20,9 @@
 
 namespace card_trace {
 
-enum input_bit : uint32_t {
+// The bits of record::bits: the 1-bit inputs, the clocks' previous values
+// and the kind of evaluation.
+enum record_bit : uint32_t {
     bit_rst_n = 1u << 0,
     bit_pclk = 1u << 1,
     bit_eclk = 1u << 2,
@@ -39,23 +41,26 @@ enum input_bit : uint32_t {
     bit_prev_eclk = 1u << 15,
     bit_full_eval = 1u << 16,     // Verilator's own eval (the reset and the first evaluation)
     bit_input_region = 1u << 17,  // card_eval ran the input-combinational region
+    bit_end_of_run = 1u << 18,    // no evaluation: the card's outputs after the last one
 };
 
 struct record {
     uint32_t ea = 0, ed_in = 0;
-    uint32_t bits = 0;  // input_bit
+    uint32_t bits = 0;  // record_bit
     uint8_t l_data = 0, r_data = 0, be_n = 0;
     uint8_t outputs = 0;  // sensor_oe, ed_oe, ardy, ext_int4..6 (bits 0..5)
     uint32_t ed_out = 0, level_l = 0, level_r = 0;
 };
+static_assert(sizeof(record) == 28, "the trace's size per evaluation, as documented");
 
 inline uint8_t output_bits(const Vcard& d) {
     return static_cast<uint8_t>(d.sensor_oe | d.ed_oe << 1 | d.ardy << 2 | d.ext_int4 << 3 |
                                 d.ext_int5 << 4 | d.ext_int6 << 5);
 }
 
-// The card as an evaluation of `kind` (bit_full_eval, bit_input_region or 0)
-// finds it.
+// The card's inputs and outputs at the start of an evaluation of `kind`
+// (bit_full_eval, bit_input_region, 0 for card_eval without the input region,
+// or bit_end_of_run after the last evaluation).
 inline record record_of(const Vcard& d, uint32_t kind) {
     const Vcard___024root& root = *d.rootp;
     const auto bit = [](uint8_t v, uint32_t b) { return v ? b : 0u; };
@@ -125,6 +130,7 @@ size_t replay(Vcard& d, const std::vector<record>& trace) {
         if constexpr (mode == replay_mode::verify) {
             if (!outputs_match(d, r)) return i;
         }
+        if (r.bits & bit_end_of_run) break;
         apply(d, r);
         if constexpr (mode == replay_mode::inputs_only) {
             asm volatile("" ::: "memory");  // every record's stores happen
