@@ -45,6 +45,7 @@
 #include <systemc>
 #include <vector>
 
+#include "bench/arrangement_runs.h"
 #include "bench/bench_support.h"
 #include "bench/card_trace.h"
 #include "bench/child_run.h"
@@ -130,8 +131,10 @@ struct replay_figures {
 // each later one (measured), with room to spare.
 constexpr size_t records_per_period_bound = 3400000;
 
+// The recorded run: as run_arrangement's fast one, traces off.
 platform::platform_config default_config(int frames) {
     platform::platform_config config;
+    config.arrangement = platform::arrangement_kind::fast;
     config.hash_pins = false;
     config.frames = frames;
     return config;
@@ -141,13 +144,13 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// The platform's own time: the same run without recording, in a child
+// (bench/arrangement_runs.h).
 std::optional<double> platform_wall(int frames) {
-    return bench::in_child<double>([frames]() -> std::optional<double> {
-        platform::platform_top top(default_config(frames));
-        const auto t0 = std::chrono::steady_clock::now();
-        top.run();
-        return seconds_since(t0);
-    });
+    const std::optional<bench::run_time> r =
+        bench::run_arrangement(platform::arrangement_kind::fast, frames, false);
+    if (!r) return std::nullopt;
+    return r->wall;
 }
 
 // Not inlined, so that callgrind can count each kind of replay alone:
