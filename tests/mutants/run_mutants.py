@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Mutation qualification of the fault campaign (docs/mutants.md).
 
-Every mutant (a firmware patch from tests/mutants/firmware/*.patch, or an RTL
+Every mutant (a firmware patch from tests/mutants/firmware/*.patch, a
+hand-written RTL patch from tests/mutants/rtl-targeted/*.patch, or an RTL
 module file made by tests/mutants/rtl/generate) gets its own source tree,
 build-mutants/trees/<id>/src (the working tree's files as they are now,
 tracked and untracked-not-ignored, deleted ones skipped, then the mutation),
@@ -55,6 +56,7 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[2]
 MUTANTS_DIR = REPO / "tests" / "mutants"
 FIRMWARE_DIR = MUTANTS_DIR / "firmware"
+TARGETED_RTL_DIR = MUTANTS_DIR / "rtl-targeted"
 EQUIVALENT_FILE = MUTANTS_DIR / "equivalent.txt"
 RTL_GENERATOR = MUTANTS_DIR / "rtl" / "generate"
 WORK_DIR = REPO / "build-mutants"
@@ -90,6 +92,9 @@ class Mutant:
     description: str
     source: Path      # the .patch, or the mutated module file
 
+    def is_patch(self):
+        return self.source.suffix == ".patch"
+
 
 @dataclasses.dataclass
 class Result:
@@ -117,16 +122,26 @@ def patch_targets(patch_text):
     return paths
 
 
-def firmware_mutants(directory=FIRMWARE_DIR):
-    """The catalogue: one Mutant per <id>.patch, described by its first line."""
+def patch_mutants(directory, kind):
+    """One Mutant of `kind` per <id>.patch in directory, described by its first line."""
     mutants = []
     for patch in sorted(directory.glob("*.patch")):
         text = patch.read_text()
         header = text.splitlines()[0] if text else ""
         description = header[1:].strip() if header.startswith("#") else ""
         targets = patch_targets(text)
-        mutants.append(Mutant(patch.stem, "firmware", ",".join(targets), description, patch))
+        mutants.append(Mutant(patch.stem, kind, ",".join(targets), description, patch))
     return mutants
+
+
+def firmware_mutants(directory=FIRMWARE_DIR):
+    """The firmware catalogue."""
+    return patch_mutants(directory, "firmware")
+
+
+def targeted_rtl_mutants(directory=TARGETED_RTL_DIR):
+    """The hand-written RTL mutants (judged like the generator's)."""
+    return patch_mutants(directory, "rtl")
 
 
 def read_rtl_catalogue(rtl_dir):
@@ -206,7 +221,7 @@ def mutated_contents(mutant, snapshot):
     """{repository path: new bytes} of the files the mutation changes. A
     firmware patch is applied with `patch -p1` to copies of its files in a
     scratch directory; an error there is an error of the catalogue."""
-    if mutant.kind == "rtl":
+    if not mutant.is_patch():
         if not mutant.source.is_file():
             raise RuntimeError(f"mutated file {mutant.source} missing")
         return {mutant.file: mutant.source.read_bytes()}
@@ -723,6 +738,7 @@ def select_mutants(args):
     if args.kind in ("firmware", "all"):
         mutants += firmware_mutants()
     if args.kind in ("rtl", "all"):
+        mutants += targeted_rtl_mutants()
         rtl_dir = args.rtl_dir
         if rtl_dir is None:
             rtl_dir = WORK_DIR / "rtl"

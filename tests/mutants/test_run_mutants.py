@@ -41,8 +41,16 @@ class Catalogue(unittest.TestCase):
             self.assertTrue(m.description, m.id)
             self.assertTrue(m.file.startswith("dsp/"), m.id)
 
+    def test_targeted_rtl_mutants_patch_rtl_files(self):
+        mutants = rm.targeted_rtl_mutants()
+        self.assertGreaterEqual(len(mutants), 8)
+        for m in mutants:
+            self.assertEqual(m.kind, "rtl", m.id)
+            self.assertTrue(m.description, m.id)
+            self.assertTrue(m.file.startswith("rtl/") and m.file.endswith(".v"), m.id)
+
     def test_every_patch_applies_and_changes_its_file(self):
-        for m in rm.firmware_mutants():
+        for m in rm.firmware_mutants() + rm.targeted_rtl_mutants():
             with self.subTest(mutant=m.id):
                 changed = rm.mutated_contents(m, SNAPSHOT)
                 for path, content in changed.items():
