@@ -1,5 +1,7 @@
 #include "tb/platform/probe_hal.h"
 
+#include "dsp/card_regs.h"
+
 #include <systemc>
 
 #include "model/c6416/c6416_sc.h"
@@ -76,6 +78,8 @@ uint32_t probe_hal::read32(uint32_t address) {
 void probe_hal::write32(uint32_t address, uint32_t value) {
     enter();
     m_inner.write32(address, value);
+    if (address == dsp::card_regs::ce2_base + dsp::card_regs::ctrl)
+        m_card_control.push_back({now(), value});
     leave();
 }
 

@@ -35,6 +35,12 @@ struct fw_event {
     dsp::event_record event;
 };
 
+// A register write of the DSP as it completed on the bus.
+struct register_write {
+    simtime::ticks tick = 0;
+    uint32_t value = 0;
+};
+
 struct fw_result {
     simtime::ticks tick = 0;
     uint32_t pair = 0;  // the pair's number, as the firmware reports it
@@ -77,6 +83,9 @@ class probe_hal final : public dsp::hal {
     // Tick the CPU went to sleep if it is asleep now, else -1.
     simtime::ticks asleep_since() const { return m_asleep_since; }
     const std::vector<fw_event>& fw_events() const { return m_fw_events; }
+    // Every write of the card's CTRL (ENABLE: OE on / off), the truth the
+    // contract judges the firmware's re-arms by, whatever it reports.
+    const std::vector<register_write>& card_control_writes() const { return m_card_control; }
     const std::vector<fw_result>& results() const { return m_results; }
     uint64_t stage_cycles(dsp::stage s) const { return m_stage_cycles[static_cast<int>(s)]; }
     // SDRAM bytes charged per stage (dsp::hal::charge_with_traffic), whole run.
@@ -100,6 +109,7 @@ class probe_hal final : public dsp::hal {
     std::vector<charge_record> m_charges;
     std::vector<tick_interval> m_sleeps;
     std::vector<fw_event> m_fw_events;
+    std::vector<register_write> m_card_control;
     std::vector<fw_result> m_results;
     uint64_t m_stage_cycles[dsp::stage_count] = {};
     dsp::sdram_traffic m_stage_traffic[dsp::stage_count];

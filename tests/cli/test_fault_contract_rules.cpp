@@ -37,6 +37,7 @@ faults::fault_observation good_skew() {
     f.detect_ms = 98;
     f.frames_to_detect = 0;
     f.causes = 0x22;
+    f.detect_start_in_step = true;
     f.reported = true;
     f.reported_by = "sync_error";
     f.report_ms = 98.1;
@@ -178,10 +179,15 @@ TEST(FaultContractRules, TheFirmwareGivesUpNeitherLateNorEarly) {
     run.hard_error = true;
     run.hard_error_ms = f.onset_ms + 7 * 24.5;
     run.failed_checks_before_give_up = 6;
+    run.recovery.give_up_cause = "hard_error";  // the card in HARD_ERROR at the give-up
     EXPECT_TRUE(faults::check(f, leak, p, run).ok);
     run.failed_checks_before_give_up = 3;  // gave up at the card's first HARD_ERROR
     EXPECT_TRUE(has_violation(faults::check(f, leak, p, run), "gave up after 3 failed checks"));
-    run.failed_checks_before_give_up = 0;  // a silent card: the watchdog's give-up
+    // A card silent for a watchdog period: the watchdog's give-up, whatever
+    // failed before the card fell silent.
+    run.recovery.give_up_cause = "watchdog";
+    EXPECT_TRUE(faults::check(f, leak, p, run).ok);
+    run.failed_checks_before_give_up = 0;
     EXPECT_TRUE(faults::check(f, leak, p, run).ok);
     run.hard_error_ms = f.onset_ms + 9 * 24.5;  // past the 8-period bound
     EXPECT_FALSE(faults::check(f, leak, p, run).ok);
@@ -269,6 +275,11 @@ TEST(FaultContractRules, TheVerdictBlamesTheFaultedSensor) {
     EXPECT_TRUE(has_violation(faults::check(f, skew, params(), good_run()),
                               "do not name the faulted sensor R"));
     f.causes = 0x20;  // R_VSYNC alone names it
+    EXPECT_TRUE(faults::check(f, skew, params(), good_run()).ok);
+    // Detected in a start out of step by the truth: its causes may be the
+    // start-up delay's, of either sensor.
+    f.causes = 0x11;
+    f.detect_start_in_step = false;
     EXPECT_TRUE(faults::check(f, skew, params(), good_run()).ok);
     // A drifting clock moves the streams against each other: the card flags
     // the late one, so either stream's timing causes name it; dark ones do not.

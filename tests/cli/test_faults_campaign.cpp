@@ -107,7 +107,8 @@ TEST(FaultCli, AFaultIsReportedWithItsOnsetAndOutcome) {
 TEST(FaultCampaign, SmokeSliceKeepsTheContract) {
     const fs::path good = scratch("good");
     const command_result ok =
-        run("faults --campaign smoke --match dark-leak:sensor=R --jobs 1 --out " + good.string());
+        run("faults --campaign smoke --match dark-leak:sensor=R,level=48 --jobs 1 --out " +
+            good.string());
     std::printf("%s\n", ok.output.c_str());
     EXPECT_EQ(ok.exit_code, 0);
     const json g = read_json(good / "campaign.json");
@@ -147,7 +148,9 @@ json without_host_figures(const json& j) {
 // cycles, verdicts) are the same as when each run starts from the beginning.
 TEST(FaultCampaign, SnapshotsGiveTheSameRunsAsRunsFromTheStart) {
     const std::string slice =
-        "faults --campaign smoke --match 'pixels=1@frame=2|drop-frame|emif-wait' --jobs 2 "
+        "faults --campaign smoke --match "
+        "'skew:sensor=L,pixels=1@frame=2|drop-frame:sensor=R@frame=4|"
+        "emif-wait:cycles=40@frame=3' --jobs 2 "
         "--keep-runs --out ";
     const fs::path forked = scratch("forked"), spawned = scratch("spawned");
     const command_result a = run(slice + forked.string());

@@ -214,8 +214,7 @@ TEST(FaultContract, ThresholdsFollowTheCardAndTheProfile) {
     EXPECT_EQ(nominal("drift:sensor=R,ppm=2", p), outcome::resync);  // resync | hard_error
     // -1 ppm: 0.41 clock; only starts with phase <= 0.09 pass: either.
     EXPECT_EQ(nominal("drift:sensor=L,ppm=-1", p), outcome::resync);
-    EXPECT_EQ(faults::expected_for(f, parse_ok("drift:sensor=L,ppm=-1"), p, {}).allowed.size(),
-              2u);
+    EXPECT_EQ(faults::expected_for(f, parse_ok("drift:sensor=L,ppm=-1"), p, {}).allowed.size(), 2u);
     // A pair's read: 153,600 words x (14 + c) ECLK x 10 ns against 24.5 ms:
     // c = 2 gives 24.58 ms (overflow), c = 1 23.04 ms.
     EXPECT_EQ(nominal("emif-wait:cycles=2", p), outcome::overflow);
@@ -313,20 +312,45 @@ TEST(FaultContract, ViolationsAreReported) {
 TEST(FaultCampaign, SmokeCoversEveryKindAndShardsPartitionThePlan) {
     const std::vector<faults::campaign_run> smoke = faults::campaign_plan("smoke", 1);
     std::set<std::string> kinds;
-    int clean = 0;
+    std::set<std::pair<std::string, int>> kind_sensors;  // one-sensor kinds
+    int clean = 0, soak_clean = 0, soak_faults = 0, soak_drift = 0, combined = 0;
     for (const faults::campaign_run& r : smoke) {
         if (r.fault.empty()) {
             ++clean;
+            // Three default watchdog periods (500 ms) of a healthy run.
+            soak_clean += r.frames * 24.5 >= 3 * 500;
             continue;
         }
         // A row may inject several faults, space-separated.
         std::istringstream specs(r.fault);
-        for (std::string spec; specs >> spec;)
-            kinds.insert(faults::fault_type_name(parse_ok(spec).type));
-        EXPECT_LE(r.frames, 14);  // a surely overrunning CPU needs 10 periods to show drops
+        int faults_in_row = 0;
+        bool bus_or_cpu = false, sensor_fault = false;
+        for (std::string spec; specs >> spec; ++faults_in_row) {
+            const faults::fault_spec s = parse_ok(spec);
+            kinds.insert(faults::fault_type_name(s.type));
+            if (faults::is_sensor_fault(s.type)) {
+                kind_sensors.insert({faults::fault_type_name(s.type), s.camera});
+                sensor_fault = true;
+            } else {
+                bus_or_cpu = true;
+            }
+            soak_drift += s.type == faults::fault_type::drift && r.frames * 24.5 >= 1500;
+        }
+        combined += bus_or_cpu && sensor_fault;
+        // More intermittent faults than RETRY_LIMIT, in one run.
+        soak_faults += faults_in_row > r.retry_limit && r.retry_limit >= 8;
+        if (faults_in_row == 1 && r.frames * 24.5 < 1500) {
+            EXPECT_LE(r.frames, 14);  // a surely overrunning CPU needs 10 periods to show drops
+        }
     }
     EXPECT_EQ(kinds.size(), static_cast<size_t>(faults::fault_type_count));
-    EXPECT_EQ(clean, 2);
+    for (const auto& [kind, camera] : kind_sensors)
+        EXPECT_EQ(kind_sensors.count({kind, 1 - camera}), 1u) << kind << " on one sensor only";
+    EXPECT_EQ(clean, 3);
+    EXPECT_EQ(soak_clean, 1);
+    EXPECT_GE(soak_faults, 1);
+    EXPECT_GE(soak_drift, 1);
+    EXPECT_GE(combined, 2);
     std::printf("smoke: %zu runs (%d clean)\n", smoke.size(), clean);
 
     const std::vector<faults::campaign_run> full = faults::campaign_plan("full", 3);

@@ -70,7 +70,7 @@ cmp "$work/sweep/sweep.csv" "$work/sweep-local/sweep.csv" || {
 cmp "$work/sweep/frontier.csv" "$work/sweep-local/frontier.csv"
 
 # A slice of the smoke campaign (3 runs) as a 2-task array.
-slice=(--campaign smoke --match 'drop-frame|dark-leak:sensor=L|clean')
+slice=(--campaign smoke --match 'drop-frame:sensor=R@frame=4|dark-leak:sensor=L,level=8|skew:sensor=L,pixels=1@frame=2')
 "$stereosim" faults "${slice[@]}" --emit-slurm --slurm-tasks 2 --slurm-cpus 1 --out "$work/campaign"
 run_array "$work/campaign"
 "$stereosim" faults "${slice[@]}" --jobs 2 --out "$work/campaign-local" >/dev/null 2>&1

@@ -15,40 +15,92 @@ struct plan_entry {
     const char* settings = nullptr;  // space-separated KEY=VALUE for --set
 };
 
-// Short runs (CI): one spec per kind and regime. Faults that must end in a
-// hard error run with RETRY_LIMIT 2 so the firmware's give-up bound,
-// (1 + 1) x (2 + 1) + 2 = 8 periods, fits in 10 frames.
+// Short runs (CI): every one-sensor kind and regime on both sensors, bus and
+// CPU faults alone and combined with a sensor fault, the modes (sequential,
+// DSK v3), and the soak rows below. Faults that must end in a hard error run
+// with RETRY_LIMIT 2 so the firmware's give-up bound, (1 + 1) x (2 + 1) + 2 =
+// 8 periods, fits in 10 frames.
 const plan_entry smoke_faults[] = {
     {"skew:sensor=R,lines=3@frame=4", 8, 8},
+    {"skew:sensor=L,lines=3@frame=4", 8, 8},
     {"skew:sensor=L,pixels=1@frame=2", 8, 8},
+    {"skew:sensor=R,pixels=1@frame=2", 8, 8},
     // RETRY_LIMIT 0: every failed check is a card hard error and a firmware
     // re-arm; two of them with good pairs between must not add up to a
     // give-up. Seed 3's starts after each re-arm are in step by the truth
     // (two out-of-step starts in a row would make the give-up right).
     {"skew:sensor=R,lines=3@frame=3 skew:sensor=L,lines=2@frame=7", 12, 0},
     {"drop-line:sensor=L,line=100@frame=4", 8, 8},
+    {"drop-line:sensor=R,line=100@frame=4", 8, 8},
     {"drop-frame:sensor=R@frame=4", 8, 8},
+    {"drop-frame:sensor=L@frame=4", 8, 8},
     {"extra-frame:sensor=L@frame=4", 8, 8},
+    {"extra-frame:sensor=R@frame=4", 8, 8},
     {"drift:sensor=R,ppm=1", 8, 8},
+    {"drift:sensor=L,ppm=1", 8, 8},
     {"drift:sensor=R,ppm=200", 10, 2},
+    {"drift:sensor=L,ppm=200", 10, 2},
     {"glitch:sensor=L,signal=href@ms=130.2", 10, 8},
+    {"glitch:sensor=R,signal=href@ms=130.2", 10, 8},
     {"glitch:sensor=R,signal=vsync@ms=100", 8, 8},
+    {"glitch:sensor=L,signal=vsync@ms=100", 8, 8},
     // 48 - 6 sigma >= 32: flagged every frame; 48 + 6 sigma < 64: a
     // threshold programmed one bit off would never see it.
     {"dark-leak:sensor=R,level=48@frame=2", 10, 2},
+    {"dark-leak:sensor=L,level=48@frame=2", 10, 2},
     {"dark-leak:sensor=L,level=8", 8, 8},
+    {"dark-leak:sensor=R,level=8", 8, 8},
     {"stuck-bit:sensor=L,bit=7", 10, 2},
+    {"stuck-bit:sensor=R,bit=7", 10, 2},
     {"stuck-bit:sensor=R,bit=0", 8, 8},
+    {"stuck-bit:sensor=L,bit=0", 8, 8},
     {"dead:sensor=R", 10, 2},
+    {"dead:sensor=L", 10, 2},
     {"oe-stuck:sensor=L", 10, 2},
+    {"oe-stuck:sensor=R", 10, 2},
     // Both sensors silent and a START_TIMEOUT longer than the run: the card
     // never flags anything, only the firmware's own watchdog can give up.
     {"dead:sensor=L dead:sensor=R", 10, 2,
      "firmware.watchdog_ms=50 firmware.card_start_timeout=65535"},
+    // The same on DSK v3 (a 1 GHz CPU: the watchdog's timer period).
+    {"dead:sensor=L dead:sensor=R", 10, 2,
+     "firmware.watchdog_ms=50 firmware.card_start_timeout=65535 dsk.version=3"},
+    // Both silent with a START_TIMEOUT of one frame: the card's own start
+    // timeout fails each start, RETRY_LIMIT restarts, HARD_ERROR.
+    {"dead:sensor=L dead:sensor=R", 10, 2, "firmware.card_start_timeout=525"},
+    // A card that falls silent after it has shown events: seed 3's first
+    // start is out of step, and both sensors ignore the card's restart.
+    {"dead:sensor=L@ms=10 dead:sensor=R@ms=10", 10, 2,
+     "firmware.watchdog_ms=50 firmware.card_start_timeout=65535"},
+    // A persistent fault under a watchdog shorter than the give-up: its
+    // ticks see the card's failed checks as progress.
+    {"dark-leak:sensor=L,level=48@frame=3", 14, 4, "firmware.watchdog_ms=100"},
     {"emif-wait:cycles=40@frame=3", 8, 8},
     {"cpu-slow:factor=20@frame=4", 14, 8},
+    // A bus or CPU fault with a sensor fault in effect at the same time.
+    {"cpu-slow:factor=3@frame=3 skew:sensor=L,lines=3@frame=5", 14, 8},
+    {"emif-wait:cycles=2@frame=2 drop-frame:sensor=R@frame=5", 12, 8},
+    {"emif-wait:cycles=30@frame=3 dark-leak:sensor=L,level=48@frame=5", 12, 2},
+    // The modes: sequential capture, DSK v3.
+    {"skew:sensor=R,lines=3@frame=4", 8, 8, "firmware.mode=sequential"},
+    {"drop-frame:sensor=L@frame=4", 8, 8, "dsk.version=3"},
 };
 
+// Soak rows: longer than every time constant of the design. A clean run of
+// three default watchdog periods (500 ms each: 64 x 24.5 ms = 1.57 s), ten
+// one-frame faults on alternating sensors spaced by good frames (more than
+// RETRY_LIMIT 8: none may add up to a hard error), and a slow drift that
+// slips every few frames (+1 ppm: 0.41 clock a frame).
+const plan_entry smoke_soak[] = {
+    {nullptr, 64, 8},
+    {"skew:sensor=L,lines=3@frame=4 drop-line:sensor=R,line=100@frame=9 "
+     "drop-frame:sensor=L@frame=14 skew:sensor=R,pixels=1@frame=19 "
+     "drop-line:sensor=L,line=300@frame=24 drop-frame:sensor=R@frame=29 "
+     "skew:sensor=R,lines=2@frame=34 drop-line:sensor=R,line=20@frame=39 "
+     "skew:sensor=L,pixels=2@frame=44 drop-frame:sensor=L@frame=49",
+     54, 8},
+    {"drift:sensor=L,ppm=1", 64, 8},
+};
 const plan_entry full_faults[] = {
     {"skew:sensor=R,lines=1@frame=4", 14, 8},
     {"skew:sensor=L,lines=3@frame=5", 14, 8},
@@ -123,6 +175,8 @@ std::vector<campaign_run> campaign_plan(const std::string& name, int seeds) {
     if (smoke) {
         for (int s = 0; s < 2 * seeds; ++s) add({nullptr, 8, 8}, first_seed + s);
         for (const plan_entry& e : smoke_faults)
+            for (int s = 0; s < seeds; ++s) add(e, first_seed + s);
+        for (const plan_entry& e : smoke_soak)
             for (int s = 0; s < seeds; ++s) add(e, first_seed + s);
     } else {
         for (int s = 0; s < full_clean_runs; ++s) add({nullptr, full_clean_frames, 8}, 100 + s);

@@ -83,6 +83,11 @@ struct verdict {
     std::vector<std::string> violations;  // one line each
 };
 
+// Counts the faults whose only allowed outcome is hard_error into
+// run->give_up_expected (call before check: the others may then end there).
+void note_expected_give_ups(const std::vector<fault_spec>& specs, const contract_params& p,
+                            run_observation* run);
+
 // Classifies the fault's observed outcome and checks it and the run's
 // invariants against the contract.
 verdict check(const fault_observation& f, const fault_spec& spec, const contract_params& p,

@@ -59,6 +59,51 @@ contract_params params_of(const json& j) {
     return p;
 }
 
+json recovery_json(const recovery_observation& r) {
+    return {{"failed_checks", r.failed_checks},
+            {"card_restarts", r.card_restarts},
+            {"card_hard_errors", r.card_hard_errors},
+            {"longest_streak", r.longest_streak},
+            {"firmware_rearms", r.firmware_rearms},
+            {"watchdog_firings", r.watchdog_firings},
+            {"give_up_cause", r.give_up_cause},
+            {"hard_errors_early", r.hard_errors_early},
+            {"hard_errors_missed", r.hard_errors_missed},
+            {"actions_without_check", r.actions_without_check},
+            {"checks_without_action", r.checks_without_action},
+            {"unexplained_rearms", r.unexplained_rearms},
+            {"early_watchdogs", r.early_watchdogs},
+            {"missed_watchdogs", r.missed_watchdogs},
+            {"unexplained_overflows", r.unexplained_overflows},
+            {"unexplained_silences", r.unexplained_silences},
+            {"unexplained", r.unexplained}};
+}
+
+recovery_observation recovery_of(const json& j) {
+    recovery_observation r;
+    if (!j.is_object()) return r;
+    r.failed_checks = integer(j, "failed_checks");
+    r.card_restarts = integer(j, "card_restarts");
+    r.card_hard_errors = integer(j, "card_hard_errors");
+    r.longest_streak = integer(j, "longest_streak");
+    r.firmware_rearms = integer(j, "firmware_rearms");
+    r.watchdog_firings = integer(j, "watchdog_firings");
+    r.give_up_cause = j.value("give_up_cause", std::string("none"));
+    r.hard_errors_early = integer(j, "hard_errors_early");
+    r.hard_errors_missed = integer(j, "hard_errors_missed");
+    r.actions_without_check = integer(j, "actions_without_check");
+    r.checks_without_action = integer(j, "checks_without_action");
+    r.unexplained_rearms = integer(j, "unexplained_rearms");
+    r.early_watchdogs = integer(j, "early_watchdogs");
+    r.missed_watchdogs = integer(j, "missed_watchdogs");
+    r.unexplained_overflows = integer(j, "unexplained_overflows");
+    r.unexplained_silences = integer(j, "unexplained_silences");
+    if (j.contains("unexplained") && j["unexplained"].is_array())
+        for (const json& line : j["unexplained"])
+            if (line.is_string()) r.unexplained.push_back(line.get<std::string>());
+    return r;
+}
+
 }  // namespace
 
 bool fault_run_result::contract_ok() const {
@@ -85,10 +130,12 @@ json fault_json(const std::string& spec_text, const fault_observation& f, const 
         {"frames_to_detect", f.detected ? json(f.frames_to_detect) : json(nullptr)},
         {"masked_checks", f.masked_checks},
         {"verdict_causes", f.causes},
+        {"detect_start_in_step", f.detect_start_in_step},
         {"reported", f.reported},
         {"reported_by", f.reported_by},
         {"report_ms", null_if(f.reported, f.report_ms)},
         {"onset_start_out_of_step", f.onset_start_out_of_step},
+        {"onset_frame_cut", f.onset_frame_cut},
         {"resumed_ms", null_if(f.resumed_ms >= 0, f.resumed_ms)},
         {"pair_ms_min", null_if(f.pair_ms_min >= 0, f.pair_ms_min)},
         {"slowed_ms_max", null_if(f.slowed_ms_max >= 0, f.slowed_ms_max)},
@@ -152,6 +199,7 @@ json fault_run_json(const fault_run_result& r) {
         {"points_scored", run.points_scored},
         {"max_box_err_px", run.max_box_err_px},
         {"max_depth_err_pct", run.max_depth_err_pct},
+        {"recovery", recovery_json(run.recovery)},
         {"contract_params", params_json(r.params)},
         {"contract_ok", r.contract_ok()},
         {"violations", violations},
@@ -196,6 +244,7 @@ run_observation run_of(const json& j) {
     run.points_scored = integer(j, "points_scored");
     run.max_box_err_px = num(j, "max_box_err_px", 0);
     run.max_depth_err_pct = num(j, "max_depth_err_pct", 0);
+    run.recovery = recovery_of(j.value("recovery", json::object()));
     return run;
 }
 
@@ -212,11 +261,13 @@ fault_observation observation_of(const json& f, const fault_spec& spec) {
     o.detect_ms = num(f, "detect_ms");
     o.frames_to_detect = static_cast<int>(num(f, "frames_to_detect"));
     o.causes = static_cast<uint32_t>(integer(f, "verdict_causes"));
+    o.detect_start_in_step = f.value("detect_start_in_step", true);
     o.masked_checks = integer(f, "masked_checks");
     o.reported = f.value("reported", false);
     o.reported_by = f.value("reported_by", std::string("none"));
     o.report_ms = num(f, "report_ms");
     o.onset_start_out_of_step = f.value("onset_start_out_of_step", false);
+    o.onset_frame_cut = f.value("onset_frame_cut", false);
     o.resumed_ms = num(f, "resumed_ms");
     o.pair_ms_min = num(f, "pair_ms_min");
     o.slowed_ms_max = num(f, "slowed_ms_max");
@@ -267,6 +318,7 @@ bool read_from_report(const json& report, fault_run_result* r, std::string* erro
         r->specs.push_back(*spec);
         run.faults.push_back(observation_of(f, *spec));
     }
+    note_expected_give_ups(r->specs, r->params, &run);
     if (r->specs.empty()) r->verdicts.push_back(check_clean(run));
     for (size_t i = 0; i < r->specs.size(); ++i)
         r->verdicts.push_back(check(run.faults[i], r->specs[i], r->params, run));

@@ -27,6 +27,9 @@ struct fault_observation {
     int frames_to_detect = -1;  // whole periods from the onset to the detection
     int masked_checks = 0;  // SYNC_ERRORs before it the fault cannot explain (out-of-step starts)
     uint32_t causes = 0;    // VERDICT cause bits of the firmware's first sync_error report
+    // The detecting SYNC_ERROR's start was in step by the truth (else the
+    // start-up delay of either sensor may be what its causes name).
+    bool detect_start_in_step = false;
     // The firmware's own report of this onset: the first sync_error, overflow,
     // hard_error or pair_dropped report at or after the detection.
     bool reported = false;
@@ -35,6 +38,9 @@ struct fault_observation {
     // The start the onset fell in was out of step by the sensors' truth (a
     // restart is due whatever the fault): the truth, not the card's choice.
     bool onset_start_out_of_step = false;
+    // Sensor faults: OE fell within a reaction window of the onset (a restart
+    // decided on an earlier frame), so no check saw the onset frame.
+    bool onset_frame_cut = false;
     // Recovery: the first in-step pair the card forwards after the detection.
     bool recovered = false;
     double recover_ms = -1;
@@ -58,6 +64,36 @@ struct fault_observation {
 // Rule 10's window: a configured re-arm is a few register accesses after the
 // report (microseconds); a period is 24.5 ms.
 inline constexpr double rearm_window_ms = 1.0;
+
+// Rule 11 (tb/app/faults/recovery_rule.h): the run's recovery actions as the
+// card's pins and the DSP's bus show them, and those no cause explains.
+struct recovery_observation {
+    int failed_checks = 0;     // SYNC_ERROR pulses
+    int card_restarts = 0;     // STATE -> OE_LOW
+    int card_hard_errors = 0;  // STATE -> HARD_ERROR
+    int longest_streak = 0;    // failed checks in a row, counted from the pins
+    int firmware_rearms = 0;   // ENABLE 0 -> 1 after the boot's
+    int watchdog_firings = 0;  // firmware actions only a silent card explains
+    // What the pins show as the cause of the firmware's give-up, if it gave
+    // up: hard_error, overflow, sync_error, watchdog, or none.
+    std::string give_up_cause = "none";
+    // Each breaks the rule.
+    int hard_errors_early = 0;      // HARD_ERROR before RETRY_LIMIT + 1 failed checks in a row
+    int hard_errors_missed = 0;     // a restart where RETRY_LIMIT + 1 called for HARD_ERROR
+    int actions_without_check = 0;  // a restart or HARD_ERROR with no SYNC_ERROR pulse
+    int checks_without_action = 0;  // a SYNC_ERROR pulse the card did not act on
+    int unexplained_rearms = 0;     // a re-arm or give-up with no cause on the pins
+    int early_watchdogs = 0;        // fired less than a period after a card event or raise
+    int missed_watchdogs = 0;       // a silent, enabled card not acted on in 2 periods
+    int unexplained_overflows = 0;  // OVERFLOW with no bus fault in effect
+    int unexplained_silences = 0;   // the watchdog fired with no fault in effect
+    std::vector<std::string> unexplained;  // the first few, one line each
+    int broken() const {
+        return hard_errors_early + hard_errors_missed + actions_without_check +
+               checks_without_action + unexplained_rearms + early_watchdogs + missed_watchdogs +
+               unexplained_overflows + unexplained_silences;
+    }
+};
 
 // The whole run.
 struct run_observation {
@@ -104,6 +140,10 @@ struct run_observation {
     // boxes and 3D points scored, and their worst errors.
     int boxes_scored = 0, points_scored = 0;
     double max_box_err_px = 0, max_depth_err_pct = 0;
+    recovery_observation recovery;  // rule 11
+    // Faults of the run whose only allowed outcome is hard_error: the give-up
+    // they force is no fault of the others (set before the check).
+    int give_up_expected = 0;
     std::vector<fault_observation> faults;
 };
 

@@ -1,6 +1,7 @@
 #include "tb/app/faults/observe.h"
 
 #include "tb/app/faults/fault_report.h"
+#include "tb/app/faults/recovery_rule.h"
 
 #include <algorithm>
 #include <cmath>
@@ -58,7 +59,9 @@ bool find_onset(const platform::platform_top& top, const fault_spec& s, simtime:
     }
     const std::vector<sensor::frame_truth>& truth = top.cycle_island().sensor(s.camera).truth();
     const uint32_t bit = sensor::fault_bit(sensor_kind(s));
-    for (size_t i = 0; i < truth.size(); ++i) {
+    // A dead sensor runs on until the next OE rise, which it ignores: that
+    // rise is when it acts, whatever frames carry its bit meanwhile.
+    for (size_t i = 0; s.type != fault_type::dead && i < truth.size(); ++i) {
         const sensor::frame_truth& t = truth[i];
         if (!(t.faults & bit)) continue;
         if (s.when.kind == trigger_spec::by::frame && t.index < s.when.frame) continue;
@@ -297,12 +300,16 @@ simtime::ticks detect_fault(const run_sources& in, const fault_spec& s, simtime:
                             fault_observation* f) {
     if (is_sensor_fault(s.type)) {
         for (simtime::ticks t : in.sync_errors) {
-            if (t < onset) continue;
+            // A verdict issued before the fault could reach a checked pixel.
+            if (t < onset + reaction_window) continue;
             if (!attributable(in.top, in.score, s, t)) {
                 ++f->masked_checks;
                 continue;
             }
             f->detected_by = "sync_error";
+            const int start = start_of(in.score, t);
+            f->detect_start_in_step =
+                start >= 0 && in.score.starts[static_cast<size_t>(start)].truth_in_step;
             return t;
         }
     } else if (s.type == fault_type::emif_wait) {
@@ -409,6 +416,15 @@ fault_observation observe_fault(const run_sources& in, const fault_spec& s, size
     const int onset_start = start_of(in.score, *onset);
     f.onset_start_out_of_step =
         onset_start >= 0 && !in.score.starts[static_cast<size_t>(onset_start)].truth_in_step;
+    // A frame whose start met a restart already decided (the card lowered OE
+    // on a verdict about an earlier frame) is never checked.
+    if (is_sensor_fault(s.type)) {
+        for (const platform::timeline_event& e : in.top.events().events()) {
+            if (e.kind != platform::event_kind::oe || e.a != 0 || e.tick < *onset) continue;
+            f.onset_frame_cut = e.tick <= *onset + reaction_window;
+            break;
+        }
+    }
     pair_times(in.events, *onset, &f);
     observe_recovery(in, *onset, detect, &f);
     observe_pairs(in, *onset, &f);
@@ -511,6 +527,7 @@ run_observation observe(platform::platform_top& top, const platform::scoreboard_
     std::vector<simtime::ticks> onsets(specs.size(), never);
     for (size_t i = 0; i < specs.size(); ++i)
         run.faults.push_back(observe_fault(in, specs[i], i, &onsets[i]));
+    run.recovery = judge_recovery(gather_recovery_inputs(top, specs, onsets));
     onsets.push_back(never);  // a clean run: no onset
     observe_run_rules(in, specs, onsets, &run);
     return run;
@@ -523,6 +540,7 @@ fault_run_result evaluate(platform::platform_top& top, const platform::scoreboar
     r.specs = specs;
     r.params = params_for(top.config());
     r.run = observe(top, score, specs);
+    note_expected_give_ups(specs, r.params, &r.run);
     if (specs.empty()) r.verdicts.push_back(check_clean(r.run));
     for (size_t i = 0; i < specs.size(); ++i)
         r.verdicts.push_back(check(r.run.faults[i], specs[i], r.params, r.run));

@@ -21,4 +21,11 @@ namespace faults {
 run_observation observe(platform::platform_top& top, const platform::scoreboard_report& score,
                         const std::vector<fault_spec>& specs);
 
+struct recovery_inputs;
+// Rule 11's inputs from the run (recovery_inputs.cpp); `onsets` per spec,
+// recovery_rule.h's no_tick for a fault that did not act.
+recovery_inputs gather_recovery_inputs(const platform::platform_top& top,
+                                       const std::vector<fault_spec>& specs,
+                                       const std::vector<simtime::ticks>& onsets);
+
 }  // namespace faults

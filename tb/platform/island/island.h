@@ -49,6 +49,8 @@ class island : public sc_core::sc_module {
     const std::vector<simtime::ticks>& irq_rises(int index) const {
         return m_observer.irq_rises(index);
     }
+    // The card's OE controller state after each change (STATUS.STATE).
+    const std::vector<card_state_change>& card_states() const { return m_observer.card_states(); }
     // Ticks of the ECLK edges where an EDMA access (one burst) completed.
     const std::vector<simtime::ticks>& edma_completions() const {
         return m_observer.edma_completions();

@@ -67,6 +67,13 @@ struct period_sample {
     bool fifo_overflow[2] = {};        // the card's sticky overflow flag rose in the period
 };
 
+// The card's OE controller entered `state` (STATUS.STATE, docs/card-registers.md)
+// at the pixel clock edge `tick`.
+struct card_state_change {
+    simtime::ticks tick = 0;
+    uint8_t state = 0;
+};
+
 struct island_stats {
     uint64_t pclk_edges = 0;
     uint64_t eclk_edges = 0;

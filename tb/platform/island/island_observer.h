@@ -57,13 +57,18 @@ class island_observer {
         }
         m_frames.record(camera, bits);
     }
-    // The card's pixel clock rose at t: its OE and FIFO write sides after it.
-    void pclk_rise(simtime::ticks t, bool oe, const uint32_t fifo_level[2],
+    // The card's pixel clock rose at t: its OE, OE controller state
+    // (STATUS.STATE) and FIFO write sides after it.
+    void pclk_rise(simtime::ticks t, bool oe, uint8_t oe_state, const uint32_t fifo_level[2],
                    const bool fifo_overflow[2]) {
         ++m_stats.pclk_edges;
         if (oe != m_oe) {
             m_oe = oe;
             add_event(t, event_kind::oe, oe ? 1 : 0);
+        }
+        if (oe_state != m_oe_state) {
+            m_oe_state = oe_state;
+            m_card_states.push_back({t, oe_state});
         }
         for (int c = 0; c < 2; ++c) {
             if (fifo_level[c] > m_current.fifo_peak_words[c])
@@ -112,6 +117,7 @@ class island_observer {
     void finish();
 
     const std::vector<simtime::ticks>& irq_rises(int index) const { return m_irq_rises[index]; }
+    const std::vector<card_state_change>& card_states() const { return m_card_states; }
     const std::vector<simtime::ticks>& edma_completions() const { return m_edma_done; }
     const std::vector<period_sample>& periods() const { return m_periods; }
     uint32_t fifo_peak_words(int camera) const { return m_fifo_peak_run[camera]; }
@@ -142,11 +148,13 @@ class island_observer {
     uint64_t m_dsp_seen = 0;
     uint64_t m_card_out_seen = 0;
     bool m_oe = false;
+    uint8_t m_oe_state = 0;
     uint8_t m_irq = 0;
     uint64_t m_access_seen[2] = {};
     bool m_fifo_overflow_seen[2] = {};
 
     std::vector<simtime::ticks> m_irq_rises[3];
+    std::vector<card_state_change> m_card_states;
     std::vector<simtime::ticks> m_edma_done;
     std::vector<period_sample> m_periods;
     period_sample m_current;

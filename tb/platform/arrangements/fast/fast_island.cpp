@@ -368,7 +368,8 @@ void fast_island<card_model>::card_pclk_outputs(ticks t) {
     const uint32_t level[2] = {d.dbg_fifo_level_l, d.dbg_fifo_level_r};
     const bool overflow[2] = {root.card_top__DOT__l_overflow != 0,
                               root.card_top__DOT__r_overflow != 0};
-    m_observer.pclk_rise(t, d.sensor_oe != 0, level, overflow);
+    m_observer.pclk_rise(t, d.sensor_oe != 0,
+                         root.card_top__DOT__u_capture__DOT__u_oe__DOT__state_q, level, overflow);
 }
 
 // Interrupt pins, the engine's step, the card's new EMIF inputs; true to

@@ -381,7 +381,8 @@ class pins_island : public platform::island {
             for (int c = 0; c < 2; ++c) m_observer.sensor_word(c, m_wires[c].word(), t);
         }
         if (m_edges & pclk_rise) {
-            m_observer.pclk_rise(t, settled.sensor_oe, settled.fifo_level, settled.fifo_overflow);
+            m_observer.pclk_rise(t, settled.sensor_oe, static_cast<uint8_t>(settled.oe_state),
+                                 settled.fifo_level, settled.fifo_overflow);
         }
         if (m_edges & eclk_rise) {
             m_observer.eclk_rise(t, settled.irq_bits());
