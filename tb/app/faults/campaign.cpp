@@ -137,6 +137,20 @@ json row_json(const campaign_row& r) {
     for (const verdict& x : r.result.verdicts)
         for (const std::string& s : x.violations) violations.push_back(s);
     j["violations"] = violations;
+    j["mode"] = run.mode;
+    j["dsk"] = run.dsk_version;
+    json faults = json::array();
+    for (size_t i = 0; i < r.result.specs.size() && i < run.faults.size(); ++i) {
+        const fault_spec& s = r.result.specs[i];
+        const outcome o = r.result.verdicts[i].actual;
+        faults.push_back({{"spec", run.faults[i].spec},
+                          {"kind", fault_type_name(s.type)},
+                          {"sensor", is_sensor_fault(s.type) ? (s.camera == 0 ? "L" : "R") : "-"},
+                          {"outcome", outcome_name(o)},
+                          {"safety_class", safety_class(s.type, o)},
+                          {"onset_phases", run.faults[i].onset_phases}});
+    }
+    j["faults"] = faults;
     return j;
 }
 

@@ -1,5 +1,7 @@
 #include "tb/app/faults/campaign_files.h"
 
+#include "tb/app/faults/campaign_coverage.h"
+
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -134,6 +136,8 @@ json campaign_document(const std::string& name, const std::string& shard, int se
             false_alarms += r.at("false_alarms").get<int>();
         }
     }
+    json space = fault_space_coverage(rows);
+    json safety = safety_class_shares(rows);
     return {{"campaign", name},
             {"shard", shard},
             {"seeds", seeds},
@@ -144,6 +148,8 @@ json campaign_document(const std::string& name, const std::string& shard, int se
             {"clean_frames", clean_frames},
             {"clean_false_alarms", false_alarms},
             {"wall_s", wall_s},
+            {"fault_space", std::move(space)},
+            {"safety_classes", std::move(safety)},
             {"rows", std::move(rows)}};
 }
 
@@ -179,6 +185,7 @@ std::string campaign_table(const json& campaign) {
            "firmware's overrun policy, unsy = unsynced pairs used, miss = out-of-step pairs "
            "forwarded, fals = false "
            "alarms\n";
+    out << coverage_text(campaign);
     return out.str();
 }
 

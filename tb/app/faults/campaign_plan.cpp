@@ -144,6 +144,83 @@ const plan_entry full_faults[] = {
     {"cpu-slow:factor=20@frame=4", 20, 8},
 };
 
+// Full campaign, every seed: the soak rows longer, on both sensors, the
+// combined rows and their mirrors, the special rows of the smoke campaign.
+const plan_entry full_soak[] = {
+    {nullptr, 64, 8},
+    {nullptr, 100, 8},
+    {"skew:sensor=L,lines=3@frame=4 drop-line:sensor=R,line=100@frame=9 "
+     "drop-frame:sensor=L@frame=14 skew:sensor=R,pixels=1@frame=19 "
+     "drop-line:sensor=L,line=300@frame=24 drop-frame:sensor=R@frame=29 "
+     "skew:sensor=R,lines=2@frame=34 drop-line:sensor=R,line=20@frame=39 "
+     "skew:sensor=L,pixels=2@frame=44 drop-frame:sensor=L@frame=49",
+     54, 8},
+    {"skew:sensor=R,lines=3@frame=4 drop-line:sensor=L,line=100@frame=9 "
+     "drop-frame:sensor=R@frame=14 skew:sensor=L,pixels=1@frame=19 "
+     "drop-line:sensor=R,line=300@frame=24 drop-frame:sensor=L@frame=29 "
+     "skew:sensor=L,lines=2@frame=34 drop-line:sensor=L,line=20@frame=39 "
+     "skew:sensor=R,pixels=2@frame=44 drop-frame:sensor=R@frame=49 "
+     "skew:sensor=L,lines=1@frame=54 drop-frame:sensor=R@frame=59",
+     64, 8},
+    {"drift:sensor=L,ppm=1", 80, 8},
+    {"drift:sensor=R,ppm=1", 80, 8},
+    {"cpu-slow:factor=3@frame=3 skew:sensor=L,lines=3@frame=5", 14, 8},
+    {"cpu-slow:factor=3@frame=3 skew:sensor=R,lines=3@frame=5", 14, 8},
+    {"cpu-slow:factor=20@frame=4 drop-frame:sensor=L@frame=6", 20, 8},
+    {"emif-wait:cycles=2@frame=2 drop-frame:sensor=R@frame=5", 12, 8},
+    {"emif-wait:cycles=2@frame=2 drop-frame:sensor=L@frame=5", 12, 8},
+    {"emif-wait:cycles=30@frame=3 dark-leak:sensor=L,level=48@frame=5", 12, 2},
+    {"emif-wait:cycles=30@frame=3 stuck-bit:sensor=R,bit=7@frame=5", 12, 2},
+    {"dead:sensor=L dead:sensor=R", 10, 2, "firmware.card_start_timeout=525"},
+    {"dead:sensor=L@ms=10 dead:sensor=R@ms=10", 10, 2,
+     "firmware.watchdog_ms=50 firmware.card_start_timeout=65535"},
+    {"dark-leak:sensor=L,level=48@frame=3", 14, 4, "firmware.watchdog_ms=100"},
+    {"dark-leak:sensor=R,level=48@frame=3", 14, 4, "firmware.watchdog_ms=100"},
+};
+
+// Full campaign, one seed (11): a representative of every kind under the
+// other modes, and onsets placed in the other phases of a frame (seed 11's
+// frames start at 24.738 + 24.5 k ms: dark rows 1.26-1.63 ms in, active rows
+// 1.73-24.1 ms in; its card restarts OE from 24.60 to 24.64 ms).
+const char* const mode_settings[] = {"firmware.mode=sequential", "dsk.version=3",
+                                     "firmware.mode=sequential dsk.version=3"};
+const plan_entry mode_representatives[] = {
+    {"skew:sensor=L,lines=3@frame=4", 8, 8},
+    {"drop-line:sensor=R,line=100@frame=4", 8, 8},
+    {"drop-frame:sensor=L@frame=4", 8, 8},
+    {"extra-frame:sensor=R@frame=4", 8, 8},
+    {"drift:sensor=L,ppm=200", 10, 2},
+    {"glitch:sensor=R,signal=vsync@ms=100", 8, 8},
+    {"dark-leak:sensor=L,level=80@frame=2", 10, 2},
+    {"stuck-bit:sensor=R,bit=7", 10, 2},
+    {"dead:sensor=L", 10, 2},
+    {"oe-stuck:sensor=R", 10, 2},
+    {"emif-wait:cycles=40@frame=3", 8, 8},
+    {"cpu-slow:factor=20@frame=4", 14, 8},
+};
+const plan_entry phase_rows[] = {
+    {"dark-leak:sensor=R,level=80@ms=124.1", 10, 2},
+    {"dark-leak:sensor=L,level=80@ms=134.7", 10, 2},
+    {"dark-leak:sensor=L,level=80@ms=24.62", 10, 2},
+    {"stuck-bit:sensor=L,bit=7@ms=124.1", 10, 2},
+    {"stuck-bit:sensor=R,bit=7@ms=134.7", 10, 2},
+    {"stuck-bit:sensor=R,bit=7@ms=24.62", 10, 2},
+    {"drift:sensor=R,ppm=200@ms=124.1", 12, 2},
+    {"drift:sensor=L,ppm=200@ms=134.7", 12, 2},
+    {"drift:sensor=L,ppm=200@ms=24.62", 12, 2},
+    {"skew:sensor=L,lines=2@ms=124.1", 8, 8},
+    {"skew:sensor=R,lines=2@ms=134.7", 8, 8},
+    {"glitch:sensor=L,signal=href@ms=124.1", 8, 8},
+    {"glitch:sensor=R,signal=vsync@ms=123.2", 8, 8},
+    {"glitch:sensor=R,signal=href@ms=24.62", 8, 8},
+    {"emif-wait:cycles=40@ms=124.1", 8, 8},
+    {"emif-wait:cycles=40@ms=134.7", 8, 8},
+    {"emif-wait:cycles=40@ms=24.62", 8, 8},
+    {"cpu-slow:factor=20@ms=124.1", 14, 8},
+    {"cpu-slow:factor=20@ms=134.7", 14, 8},
+    {"cpu-slow:factor=20@ms=24.62", 14, 8},
+};
+
 // Full campaign: 84 clean runs of 12 frames = 1008 clean frames.
 constexpr int full_clean_runs = 84, full_clean_frames = 12;
 
@@ -182,6 +259,14 @@ std::vector<campaign_run> campaign_plan(const std::string& name, int seeds) {
         for (int s = 0; s < full_clean_runs; ++s) add({nullptr, full_clean_frames, 8}, 100 + s);
         for (const plan_entry& e : full_faults)
             for (int s = 0; s < seeds; ++s) add(e, first_seed + s);
+        for (const plan_entry& e : full_soak)
+            for (int s = 0; s < seeds; ++s) add(e, first_seed + s);
+        for (const char* settings : mode_settings)
+            for (plan_entry e : mode_representatives) {
+                e.settings = settings;
+                add(e, first_seed);
+            }
+        for (const plan_entry& e : phase_rows) add(e, first_seed);
     }
     return runs;
 }

@@ -36,6 +36,28 @@ const char* outcome_name(outcome o) {
     return "?";
 }
 
+const char* safety_class(fault_type type, outcome actual) {
+    switch (actual) {
+        case outcome::resync:
+        case outcome::hard_error:
+        case outcome::overflow:
+        case outcome::overrun:
+        case outcome::no_recovery:
+            return "detected";
+        case outcome::stale_pair:
+        case outcome::missed:
+            return "residual";
+        case outcome::not_in_effect:
+        case outcome::pending:
+            return "none";
+        case outcome::harmless:
+            break;
+    }
+    const bool waits_for_a_restart =
+        type == fault_type::dead || type == fault_type::oe_stuck || type == fault_type::drift;
+    return waits_for_a_restart ? "latent" : "safe";
+}
+
 contract_params params_for(const platform::platform_config& config) {
     contract_params p;
     p.retry_limit = config.card_retry_limit;

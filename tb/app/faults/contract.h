@@ -40,6 +40,16 @@ enum class outcome : uint8_t {
 };
 const char* outcome_name(outcome o);
 
+// The observed outcome in the classes of ISO 26262-5 (docs/fault-contract.md,
+// "Outcomes as safety classes"): "detected" (a safety mechanism saw it and
+// the system reached its safe state: resync, hard_error, overflow, overrun,
+// no_recovery), "residual" (it broke the safety goal unseen: stale_pair,
+// missed), "latent" (unseen, harmless alone, but a second fault makes it
+// matter: a dead or OE-stuck sensor before its restart, a drift with no slip
+// yet), "safe" (no effect on the safety goal: the other harmless faults),
+// "none" (the run proves nothing of it: not_in_effect, pending).
+const char* safety_class(fault_type type, outcome actual);
+
 struct expectation {
     std::vector<outcome> allowed;   // the first is the nominal one
     int max_frames_to_detect = -1;  // -1: not checked

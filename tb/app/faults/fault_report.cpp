@@ -136,6 +136,7 @@ json fault_json(const std::string& spec_text, const fault_observation& f, const 
         {"report_ms", null_if(f.reported, f.report_ms)},
         {"onset_start_out_of_step", f.onset_start_out_of_step},
         {"onset_frame_cut", f.onset_frame_cut},
+        {"onset_phases", f.onset_phases},
         {"resumed_ms", null_if(f.resumed_ms >= 0, f.resumed_ms)},
         {"pair_ms_min", null_if(f.pair_ms_min >= 0, f.pair_ms_min)},
         {"slowed_ms_max", null_if(f.slowed_ms_max >= 0, f.slowed_ms_max)},
@@ -167,6 +168,8 @@ json fault_run_json(const fault_run_result& r) {
     return {
         {"frames", run.frames},
         {"period_ms", run.period_ms},
+        {"mode", run.mode},
+        {"dsk_version", run.dsk_version},
         {"end_ms", run.end_ms},
         {"pairs_forwarded", run.pairs_forwarded},
         {"pairs_processed", run.pairs_processed},
@@ -210,6 +213,8 @@ json fault_run_json(const fault_run_result& r) {
 run_observation run_of(const json& j) {
     run_observation run;
     run.frames = integer(j, "frames");
+    run.mode = j.value("mode", std::string("overlapped"));
+    run.dsk_version = j.contains("dsk_version") ? integer(j, "dsk_version") : 1;
     run.period_ms = num(j, "period_ms", 24.5);
     run.end_ms = num(j, "end_ms", 0);
     run.firmware_started = true;
@@ -268,6 +273,9 @@ fault_observation observation_of(const json& f, const fault_spec& spec) {
     o.report_ms = num(f, "report_ms");
     o.onset_start_out_of_step = f.value("onset_start_out_of_step", false);
     o.onset_frame_cut = f.value("onset_frame_cut", false);
+    if (f.contains("onset_phases") && f["onset_phases"].is_array())
+        for (const json& p : f["onset_phases"])
+            if (p.is_string()) o.onset_phases.push_back(p.get<std::string>());
     o.resumed_ms = num(f, "resumed_ms");
     o.pair_ms_min = num(f, "pair_ms_min");
     o.slowed_ms_max = num(f, "slowed_ms_max");

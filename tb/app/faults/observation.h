@@ -41,6 +41,7 @@ struct fault_observation {
     // Sensor faults: OE fell within a reaction window of the onset (a restart
     // decided on an earlier frame), so no check saw the onset frame.
     bool onset_frame_cut = false;
+    std::vector<std::string> onset_phases;  // observe.h's onset_phases
     // Recovery: the first in-step pair the card forwards after the detection.
     bool recovered = false;
     double recover_ms = -1;
@@ -99,6 +100,8 @@ struct recovery_observation {
 struct run_observation {
     int frames = 0;
     double period_ms = 24.5;
+    std::string mode = "overlapped";  // the firmware's capture mode
+    int dsk_version = 1;
     double end_ms = 0;
     bool firmware_started = false;
     int pairs_forwarded = 0, pairs_processed = 0, pairs_rejected = 0, pairs_dropped = 0;

@@ -425,6 +425,7 @@ fault_observation observe_fault(const run_sources& in, const fault_spec& s, size
             break;
         }
     }
+    f.onset_phases = onset_phases(in.top, s, *onset, f.onset_frame_cut);
     pair_times(in.events, *onset, &f);
     observe_recovery(in, *onset, detect, &f);
     observe_pairs(in, *onset, &f);
@@ -512,6 +513,8 @@ run_observation observe(platform::platform_top& top, const platform::scoreboard_
     run_observation run;
     const simtime::ticks period = top.config().period;
     run.frames = top.config().frames;
+    run.mode = dsp::pipeline_mode_name(top.config().mode);
+    run.dsk_version = top.config().dsk.version;
     run.period_ms = to_ms(period);
     run.end_ms = to_ms(top.end_tick());
     run.firmware_started = top.firmware_started();

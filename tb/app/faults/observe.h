@@ -21,6 +21,11 @@ namespace faults {
 run_observation observe(platform::platform_top& top, const platform::scoreboard_report& score,
                         const std::vector<fault_spec>& specs);
 
+// Where the fault acted (onset_phase.cpp): one of vertical_blanking,
+// dark_rows, active_rows, then oe_restart or first_check, and bus_burst.
+std::vector<std::string> onset_phases(const platform::platform_top& top, const fault_spec& s,
+                                      simtime::ticks onset, bool frame_cut);
+
 struct recovery_inputs;
 // Rule 11's inputs from the run (recovery_inputs.cpp); `onsets` per spec,
 // recovery_rule.h's no_tick for a fault that did not act.
