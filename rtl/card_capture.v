@@ -242,6 +242,18 @@ module card_capture #(
 
     assign discard_seq = discard_seq_q;
 
+`ifdef VERILATOR  // functional coverage (--coverage-user, make coverage): forwarding decisions
+    always_ff @(posedge pclk) begin
+        cov_pair_forwarded : cover (pair_good && fwd_now);
+        cov_pair_skipped : cover (pair_good && !fwd_now);
+        cov_discard_for_sync : cover (publish_discard && sync_bad_now);
+        cov_discard_for_overflow : cover (publish_discard && ovf_now && !sync_bad_now);
+        cov_discard_for_abort : cover (publish_discard && abort);
+        cov_overflow_hit : cover (ovf_hit && !ovf_before);
+        cov_frame_start_while_discarding : cover (frame_start && discard_pending);
+    end
+`endif
+
     // ---- counters and verdict -----------------------------------------------------------
     always_ff @(posedge pclk or negedge rst_n) begin
         if (!rst_n) begin

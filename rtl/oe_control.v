@@ -85,6 +85,29 @@ module oe_control (
         end
     end
 
+`ifdef VERILATOR  // functional coverage (--coverage-user, make coverage): states and arcs
+    always_ff @(posedge pclk) begin
+        cov_st_idle : cover (state_q == S_IDLE);
+        cov_st_oe_low : cover (state_q == S_OE_LOW);
+        cov_st_wait_vsync : cover (state_q == S_WAIT_VSYNC);
+        cov_st_run : cover (state_q == S_RUN);
+        cov_st_hard_error : cover (state_q == S_HARD_ERROR);
+        cov_arc_enable : cover (state_q == S_IDLE && state_next == S_WAIT_VSYNC);
+        cov_arc_origin : cover (state_q == S_WAIT_VSYNC && state_next == S_RUN);
+        cov_arc_timeout_restart : cover (state_q == S_WAIT_VSYNC && state_next == S_OE_LOW);
+        cov_arc_timeout_hard_error : cover (state_q == S_WAIT_VSYNC && state_next == S_HARD_ERROR);
+        cov_arc_mismatch_restart : cover (state_q == S_RUN && state_next == S_OE_LOW);
+        cov_arc_mismatch_hard_error : cover (state_q == S_RUN && state_next == S_HARD_ERROR);
+        cov_arc_restart_done : cover (state_q == S_OE_LOW && state_next == S_WAIT_VSYNC);
+        cov_arc_disable_oe_low : cover (state_q == S_OE_LOW && state_next == S_IDLE);
+        cov_arc_disable_wait_vsync : cover (state_q == S_WAIT_VSYNC && state_next == S_IDLE);
+        cov_arc_disable_run : cover (state_q == S_RUN && state_next == S_IDLE);
+        cov_arc_hard_error_cleared : cover (state_q == S_HARD_ERROR && state_next == S_IDLE);
+        cov_pass_clears_failures : cover (state_q == S_RUN && frame_end && !frame_sync_bad &&
+                                      fails_q != '0);
+    end
+`endif
+
     assign state       = state_q;
     assign oe          = oe_q;
     assign run         = state_q == S_WAIT_VSYNC || state_q == S_RUN;

@@ -187,6 +187,21 @@ module sync_check (
         in_frame && (l_px != exp_pixel)
     };
 
+`ifdef VERILATOR  // functional coverage (--coverage-user, make coverage): each cause, each stream
+    always_ff @(posedge pclk) begin
+        cov_cause_l_window : cover (err_now[0]);
+        cov_cause_r_window : cover (err_now[1]);
+        cov_cause_l_dark : cover (err_now[2]);
+        cov_cause_r_dark : cover (err_now[3]);
+        cov_cause_l_vsync : cover (err_now[4]);
+        cov_cause_r_vsync : cover (err_now[5]);
+        cov_start_timeout : cover (timeout);
+        cov_origin_left_first : cover (origin && l_vs_rise && !r_vs_rise);
+        cov_origin_right_first : cover (origin && r_vs_rise && !l_vs_rise);
+        cov_origin_together : cover (origin && l_vs_rise && r_vs_rise);
+    end
+`endif
+
     logic [5:0] causes_q;
     logic [15:0] mm_line_q, mm_col_q;
     wire [5:0] causes_before = frame_start ? 6'd0 : causes_q;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "tb/app/faults/contract.h"
 #include "tb/app/faults/fault_spec.h"
@@ -245,6 +246,92 @@ TEST(FaultContractRules, CpuAndBusRowsThatSurelyOverrunOrFitAllowOneOutcome) {
     EXPECT_TRUE(faults::check(dropped, spec_of("cpu-slow:factor=20"), p, run).ok);
     EXPECT_EQ(faults::expected_for(f, spec_of("emif-wait:cycles=40,ce=2"), p, run).allowed,
               std::vector<outcome>{outcome::harmless});
+    // A pair read 40 % over the period overflows within 3 periods; one within
+    // 20 % fills the FIFOs' 1.7 frames slowly, if at all in the run.
+    const faults::expectation slow =
+        faults::expected_for(f, spec_of("emif-wait:cycles=10"), p, run);
+    EXPECT_EQ(slow.allowed, std::vector<outcome>{outcome::overflow});
+    EXPECT_EQ(slow.max_frames_to_detect, 3);
+    const faults::expectation marginal =
+        faults::expected_for(f, spec_of("emif-wait:cycles=2"), p, run);
+    EXPECT_EQ(marginal.allowed.size(), 2u);
+    EXPECT_EQ(marginal.max_frames_to_detect, -1);
+}
+
+// A one-frame timing fault is judged by the check of the frame it hits;
+// where that check fails anyway (its start out of step by the truth) or
+// never comes (a restart decided on an earlier frame cuts the frame at its
+// start), the restart may wipe it out.
+TEST(FaultContractRules, AOneFrameFaultMaskedByARestartMayLeaveNoTrace) {
+    faults::fault_observation f = good_skew();
+    f.detected = false;
+    f.recovered = false;
+    f.resumed_ms = -1;
+    EXPECT_FALSE(faults::check(f, skew, params(), good_run()).ok);
+    faults::fault_observation masked = f;
+    masked.onset_start_out_of_step = true;
+    EXPECT_TRUE(faults::check(masked, skew, params(), good_run()).ok);
+    masked = f;
+    masked.onset_frame_cut = true;
+    EXPECT_TRUE(faults::check(masked, skew, params(), good_run()).ok);
+    // Detected late in such a frame: no detection bound either.
+    masked = good_skew();
+    masked.onset_frame_cut = true;
+    masked.frames_to_detect = 3;
+    EXPECT_TRUE(faults::check(masked, skew, params(), good_run()).ok);
+    faults::fault_observation late = good_skew();
+    late.frames_to_detect = 3;
+    EXPECT_TRUE(
+        has_violation(faults::check(late, skew, params(), good_run()), "detected 3 frames"));
+}
+
+// Two faults in one run: a persistent sensor fault forces the give-up, so a
+// bus fault of the same run that alone would end in overflow may end there
+// too; a run where no fault forces it may not.
+TEST(FaultContractRules, AnotherFaultsGiveUpExplainsAHardError) {
+    faults::contract_params p = params();
+    p.retry_limit = 2;
+    const std::vector<faults::fault_spec> specs = {spec_of("emif-wait:cycles=30@frame=3"),
+                                                   spec_of("dark-leak:sensor=L,level=48@frame=5")};
+    faults::fault_observation bus;
+    bus.in_effect = true;
+    bus.onset_ms = 73.5;
+    bus.detected = true;
+    bus.detected_by = "overflow";
+    bus.detect_ms = 80;
+    bus.reported = true;
+    bus.reported_by = "overflow";
+    bus.report_ms = 80.1;
+    faults::fault_observation leak = good_skew();
+    leak.onset_ms = 122;
+    leak.causes = 0x04;
+    leak.recovered = false;
+    faults::run_observation run = good_run();
+    run.end_ms = 294;
+    run.hard_error = true;
+    run.hard_error_ms = 122 + 7 * 24.5;
+    run.failed_checks_before_give_up = 6;
+    run.recovery.give_up_cause = "hard_error";
+    run.faults = {bus, leak};
+    EXPECT_TRUE(has_violation(faults::check(bus, specs[0], p, run), "outcome hard_error"));
+    faults::note_expected_give_ups(specs, p, &run);
+    EXPECT_EQ(run.give_up_expected, 1);
+    EXPECT_TRUE(faults::check(bus, specs[0], p, run).ok)
+        << faults::check(bus, specs[0], p, run).violations[0];
+    EXPECT_TRUE(faults::check(leak, specs[1], p, run).ok);
+}
+
+// Each outcome in the classes of ISO 26262-5.
+TEST(FaultContractRules, OutcomesAsSafetyClasses) {
+    using faults::fault_type;
+    EXPECT_STREQ(faults::safety_class(fault_type::skew, outcome::resync), "detected");
+    EXPECT_STREQ(faults::safety_class(fault_type::emif_wait, outcome::overflow), "detected");
+    EXPECT_STREQ(faults::safety_class(fault_type::extra_frame, outcome::stale_pair), "residual");
+    EXPECT_STREQ(faults::safety_class(fault_type::skew, outcome::missed), "residual");
+    EXPECT_STREQ(faults::safety_class(fault_type::dead, outcome::harmless), "latent");
+    EXPECT_STREQ(faults::safety_class(fault_type::drift, outcome::harmless), "latent");
+    EXPECT_STREQ(faults::safety_class(fault_type::dark_leak, outcome::harmless), "safe");
+    EXPECT_STREQ(faults::safety_class(fault_type::skew, outcome::pending), "none");
 }
 
 // Rule 7: pending is not a pass.

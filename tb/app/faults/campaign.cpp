@@ -17,6 +17,7 @@
 
 #include "tb/app/cli/child_run.h"
 #include "tb/app/faults/campaign_files.h"
+#include "tb/app/faults/child_exit.h"
 #include "tb/platform/platform_config.h"
 
 namespace faults {
@@ -233,7 +234,8 @@ pid_t start_group(const campaign_options& o, const std::vector<campaign_run>& pl
                            snapshot_trigger_of(specs_of(plan[i]), period)});
     std::fflush(nullptr);
     const pid_t pid = fork();
-    if (pid == 0) _exit(o.run_group(members, o.binary, run_dir(u.runs[0]) + "/leader.txt", tokens));
+    if (pid == 0)
+        exit_child(o.run_group(members, o.binary, run_dir(u.runs[0]) + "/leader.txt", tokens));
     if (pid < 0) *error = std::string("cannot fork a snapshot group: ") + std::strerror(errno);
     return pid;
 }

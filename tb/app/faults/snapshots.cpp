@@ -12,6 +12,7 @@
 #include <numeric>
 
 #include "tb/app/cli/run_command.h"
+#include "tb/app/faults/child_exit.h"
 #include "tb/app/faults/job_tokens.h"
 #include "tb/platform/platform.h"
 
@@ -98,7 +99,7 @@ pid_t fork_member(const snapshot_member& m, platform::platform_top* top, const s
         const int rc = parse_run(m.args, make, &run) ? run.run->execute_from_snapshot(*top)
                                                      : cli::exit_bad_input;
         std::fflush(nullptr);
-        _exit(rc);
+        exit_child(rc);
     }
     std::vector<std::string> text = {binary, "run"};
     text.insert(text.end(), m.args.begin(), m.args.end());

@@ -22,6 +22,14 @@ using sc_core::sc_time_stamp;
 #include "verilated.h"
 #include "verilated_fst_c.h"
 #include "verilated_vcd_c.h"
+#ifdef STEREOSIM_COVERAGE_DIR
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <string>
+
+#include "verilated_cov.h"
+#endif
 
 namespace fast {
 
@@ -123,7 +131,7 @@ class fast_island final : public platform::island {
                 sensor::frame_source& source, emif::emif_async_master& engine,
                 platform::timeline& events);
     ~fast_island() override { m_card->final(); }
-    void finish() override { m_observer.finish(); }
+    void finish() override;
     void add_late_faults(const std::vector<sensor::fault> (&sensor_faults)[2],
                          const std::vector<emif::ardy_fault>& ardy_faults) override;
 
@@ -211,6 +219,27 @@ fast_island<card_model>::fast_island(sc_core::sc_module_name name,
     m_tracer.begin(engine.pins());
     if (m_tracing) trace_card(-1);
     SC_THREAD(run);
+}
+
+#ifdef STEREOSIM_COVERAGE_DIR
+// Coverage builds (make coverage, docs/fault-contract.md "Coverage"): the
+// card's line, toggle and functional coverage of this run, a file per run so
+// that a campaign's forked runs each leave theirs.
+void write_card_coverage(VerilatedContext& context) {
+    ::mkdir(STEREOSIM_COVERAGE_DIR, 0755);
+    static int runs = 0;
+    const std::string path = std::string(STEREOSIM_COVERAGE_DIR) + "/card-" +
+                             std::to_string(::getpid()) + "-" + std::to_string(runs++) + ".dat";
+    context.coveragep()->write(path.c_str());
+}
+#endif
+
+template <class card_model>
+void fast_island<card_model>::finish() {
+    m_observer.finish();
+#ifdef STEREOSIM_COVERAGE_DIR
+    if constexpr (!traced) write_card_coverage(*m_context);
+#endif
 }
 
 template <class card_model>
