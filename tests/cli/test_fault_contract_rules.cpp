@@ -344,6 +344,13 @@ TEST(FaultContractRules, PendingIsNotAPass) {
     const faults::verdict v = faults::check(f, skew, params(), run);
     EXPECT_EQ(v.actual, outcome::pending);
     EXPECT_FALSE(v.ok);
+    // The line says why and what to ask for: detected at 98 ms, recovery due
+    // 2 periods later, at 147 ms = 6 periods, and a period of margin.
+    EXPECT_TRUE(has_violation(v,
+                              "rule 9: pending: detected at 98.0 ms, the run ended at 110.0 ms "
+                              "before its recovery or hard error was due at 147.0 ms: ask for "
+                              "--frames 7 or more"))
+        << v.violations[0];
 }
 
 // Rule 8: the frames the firmware processed are those of the pair it names.

@@ -309,33 +309,34 @@ void invariants(const run_observation& run, verdict* v, bool allow_stale) {
         v->violations.push_back(why);
     };
     if (run.unsynced_pairs_used > 0 && !allow_stale)
-        violate(std::to_string(run.unsynced_pairs_used) + " pair(s) out of step used");
+        violate("rule 1: " + std::to_string(run.unsynced_pairs_used) + " pair(s) out of step used");
     if (run.used_before_verdict > 0)
-        violate(std::to_string(run.used_before_verdict) + " pair(s) used before their verdict");
+        violate("rule 2: " + std::to_string(run.used_before_verdict) +
+                " pair(s) used before their verdict");
     if (run.false_alarms > 0)
-        violate(std::to_string(run.false_alarms) +
+        violate("rule 3: " + std::to_string(run.false_alarms) +
                 " false alarm(s): SYNC_ERROR for an in-step start that no fault in effect "
                 "explains");
     if (run.pairs_unaccounted > 0)
-        violate(std::to_string(run.pairs_unaccounted) +
+        violate("rule 5: " + std::to_string(run.pairs_unaccounted) +
                 " in-step pair(s) forwarded but neither processed nor reported dropped (pairs " +
                 numbers(run.unaccounted_pairs) + ")");
     if (run.unreported_sync_errors > 0)
-        violate(std::to_string(run.unreported_sync_errors) +
+        violate("rule 6: " + std::to_string(run.unreported_sync_errors) +
                 " card SYNC_ERROR(s) the firmware never reported");
     if (run.unreported_overflows > 0)
-        violate(std::to_string(run.unreported_overflows) +
+        violate("rule 6: " + std::to_string(run.unreported_overflows) +
                 " card OVERFLOW(s) the firmware never reported");
     if (run.unreported_in_step > 0)
-        violate(std::to_string(run.unreported_in_step) +
+        violate("rule 6: " + std::to_string(run.unreported_in_step) +
                 " OE start(s) whose pairs the firmware used without reporting in_step");
     if (run.unrearmed_overflows > 0)
-        violate(std::to_string(run.unrearmed_overflows) +
+        violate("rule 10: " + std::to_string(run.unrearmed_overflows) +
                 " overflow(s) reported but not followed by the configured re-arm "
                 "(rearm_on_overflow: an OE restart within " +
                 std::to_string(static_cast<int>(rearm_window_ms)) + " ms)");
     if (run.identity_mismatches > 0)
-        violate(std::to_string(run.identity_mismatches) +
+        violate("rule 7: " + std::to_string(run.identity_mismatches) +
                 " pair(s) processed with frames that are not the pair's own (pairs " +
                 numbers(run.mismatched_pairs) + ")");
     // Rule 11: one line per recovery action no cause explains.
@@ -363,39 +364,49 @@ verdict check_clean(const run_observation& run) {
     invariants(run, &v, false);
     if (run.misses > 0) {
         v.ok = false;
-        v.violations.push_back(std::to_string(run.misses) + " out-of-step pair(s) forwarded");
+        v.violations.push_back("rule 1: " + std::to_string(run.misses) +
+                               " out-of-step pair(s) forwarded");
     }
     if (run.hard_error) {
         v.ok = false;
-        v.violations.push_back("hard_error on a clean run");
+        v.violations.push_back("rule 4: hard_error on a clean run");
     }
     // A run of a few periods with nothing processed is a dead system, not a clean one.
     if (run.frames >= 4 && run.pairs_processed == 0) {
         v.ok = false;
-        v.violations.push_back("no pair processed in a clean run of " + std::to_string(run.frames) +
-                               " frames");
+        v.violations.push_back("rule 5: no pair processed in a clean run of " +
+                               std::to_string(run.frames) + " frames");
     }
     // Working means right, too: against the scene's ground truth, with
     // margins over the system test's 3 px / 2 % (docs/platform.md).
     if (run.frames >= clean_frames_to_track && run.points_scored == 0) {
         v.ok = false;
-        v.violations.push_back("no 3D point in a clean run of " + std::to_string(run.frames) +
-                               " frames");
+        v.violations.push_back("rule 5: no 3D point in a clean run of " +
+                               std::to_string(run.frames) + " frames");
     }
     if (run.boxes_scored > 0 && run.max_box_err_px > clean_max_box_err_px) {
         v.ok = false;
-        v.violations.push_back("a box " + std::to_string(run.max_box_err_px) +
+        v.violations.push_back("rule 5: a box " + std::to_string(run.max_box_err_px) +
                                " px off the object's image centre (max 10)");
     }
     if (run.points_scored > 0 && run.max_depth_err_pct > clean_max_depth_err_pct) {
         v.ok = false;
-        v.violations.push_back("a depth " + std::to_string(run.max_depth_err_pct) +
+        v.violations.push_back("rule 5: a depth " + std::to_string(run.max_depth_err_pct) +
                                " % off the ground truth (max 5)");
     }
     return v;
 }
 
 namespace {
+
+// When a detected fault's recovery is due: 2 periods per failed start after
+// the detection, + 2; a hard error by the give-up bound.
+double due_ms(const fault_observation& f, const contract_params& p, const expectation& e) {
+    const bool hard_expected =
+        std::find(e.allowed.begin(), e.allowed.end(), outcome::hard_error) != e.allowed.end();
+    return hard_expected ? f.onset_ms + hard_error_bound_periods(p) * p.period_ms
+                         : f.detect_ms + (2.0 + 2.0 * f.failed_starts) * p.period_ms;
+}
 
 // What the observed figures say happened to the fault.
 outcome classify(const fault_observation& f, const fault_spec& s, const contract_params& p,
@@ -408,13 +419,28 @@ outcome classify(const fault_observation& f, const fault_spec& s, const contract
         return f.unsynced_pairs_used == f.stale_pairs_used ? outcome::stale_pair : outcome::missed;
     if (!f.detected) return outcome::harmless;
     if (f.recovered) return outcome::resync;
-    // Due: 2 periods per failed start after the detection, + 2; a hard
-    // error by the give-up bound.
-    const bool hard_expected =
-        std::find(e.allowed.begin(), e.allowed.end(), outcome::hard_error) != e.allowed.end();
-    const double due_ms = hard_expected ? f.onset_ms + hard_error_bound_periods(p) * p.period_ms
-                                        : f.detect_ms + (2.0 + 2.0 * f.failed_starts) * p.period_ms;
-    return run.end_ms < due_ms ? outcome::pending : outcome::no_recovery;
+    return run.end_ms < due_ms(f, p, e) ? outcome::pending : outcome::no_recovery;
+}
+
+// The outcome the contract does not allow, as a line that says which rule
+// and, for a run too short to judge, how long a run would judge it.
+std::string outcome_violation(const fault_observation& f, const contract_params& p,
+                              const run_observation& run, const expectation& e, const verdict& v) {
+    char text[320];
+    if (v.actual == outcome::pending) {
+        const double due = due_ms(f, p, e);
+        std::snprintf(text, sizeof text,
+                      "rule 9: pending: detected at %.1f ms, the run ended at %.1f ms before its "
+                      "recovery or hard error was due at %.1f ms: ask for --frames %d or more",
+                      f.detect_ms, run.end_ms, due,
+                      static_cast<int>(std::ceil(due / p.period_ms)) + 1);
+        return text;
+    }
+    if (v.actual == outcome::not_in_effect)
+        return "rule 9: the fault never took effect during the run (a trigger after its end at " +
+               std::to_string(run.end_ms) + " ms?): it proves nothing";
+    return std::string("per kind: outcome ") + outcome_name(v.actual) + ", contract " +
+           v.expected_text + " (" + e.why + ")";
 }
 
 // Rules 2 and 9: the firmware reports what the card flagged, in time, and
@@ -424,12 +450,12 @@ void check_reports(const fault_observation& f, const fault_spec& s, const contra
     if (!f.in_effect || !f.detected) return;
     const double bound_ms = hard_error_bound_periods(p) * p.period_ms;
     if (!f.reported)
-        violate("the card flagged the fault (" + f.detected_by + " at " +
+        violate("rule 6: the card flagged the fault (" + f.detected_by + " at " +
                 std::to_string(f.detect_ms) + " ms) but the firmware never reported it");
     else if (f.report_ms - f.onset_ms > bound_ms)
-        violate("the firmware reported the fault " + std::to_string(f.report_ms - f.onset_ms) +
-                " ms after the onset (bound " + std::to_string(hard_error_bound_periods(p)) +
-                " periods)");
+        violate("rule 6: the firmware reported the fault " +
+                std::to_string(f.report_ms - f.onset_ms) + " ms after the onset (bound " +
+                std::to_string(hard_error_bound_periods(p)) + " periods)");
     if (is_sensor_fault(s.type) && f.detected_by == "sync_error" && f.detect_start_in_step) {
         // A drifting clock, or a sensor that ignores OE while the other
         // restarts, moves the streams against each other: the card flags
@@ -445,7 +471,7 @@ void check_reports(const fault_observation& f, const fault_spec& s, const contra
         if ((f.causes & blame) == 0) {
             char causes[16];
             std::snprintf(causes, sizeof causes, "0x%02x", f.causes);
-            violate(std::string("the sync error's causes ") + causes +
+            violate(std::string("rule 8: the sync error's causes ") + causes +
                     " do not name the faulted sensor " + (s.camera == 0 ? "L" : "R"));
         }
     }
@@ -483,7 +509,7 @@ verdict check(const fault_observation& f, const fault_spec& s, const contract_pa
     if (run.give_up_expected > (forces_give_up ? 1 : 0))
         allowed.allowed.push_back(outcome::hard_error);
     if (stale && (f.unsynced_pairs_used > 1 || f.unsynced_pairs_used != f.stale_pairs_used))
-        violate("extra-frame: " + std::to_string(f.unsynced_pairs_used) +
+        violate("rule 1: extra-frame: " + std::to_string(f.unsynced_pairs_used) +
                 " out-of-step pair(s) used, at most the one stale pair allowed");
 
     const double period = p.period_ms;
@@ -491,39 +517,39 @@ verdict check(const fault_observation& f, const fault_spec& s, const contract_pa
     v.actual = classify(f, s, p, run, e);
     if (std::find(allowed.allowed.begin(), allowed.allowed.end(), v.actual) ==
         allowed.allowed.end())
-        violate(std::string("outcome ") + outcome_name(v.actual) + ", contract " + v.expected_text +
-                " (" + e.why + ")");
+        violate(outcome_violation(f, p, run, e, v));
     if (f.in_effect && e.max_frames_to_detect >= 0 && f.detected &&
         f.frames_to_detect > e.max_frames_to_detect + f.masked_checks)
-        violate("detected " + std::to_string(f.frames_to_detect) + " frames after the onset (max " +
-                std::to_string(e.max_frames_to_detect) + " + " + std::to_string(f.masked_checks) +
-                " out-of-step restart(s))");
+        violate("per kind: detected " + std::to_string(f.frames_to_detect) +
+                " frames after the onset (max " + std::to_string(e.max_frames_to_detect) + " + " +
+                std::to_string(f.masked_checks) + " out-of-step restart(s))");
     if (v.actual == outcome::resync && f.frames_to_recover > 2 + 2 * f.failed_starts)
-        violate("recovered after " + std::to_string(f.frames_to_recover) + " frames with " +
-                std::to_string(f.failed_starts) +
+        violate("per kind: recovered after " + std::to_string(f.frames_to_recover) +
+                " frames with " + std::to_string(f.failed_starts) +
                 " failed restart(s) (max 2 + 2 per failed start)");
     // Recovered means the firmware uses pairs again, within the recovery bound.
     if (v.actual == outcome::resync && run.end_ms > f.recover_ms + 2 * period &&
         (f.resumed_ms < 0 || f.resumed_ms - f.recover_ms > 2 * period))
-        violate("the card recovered at " + std::to_string(f.recover_ms) +
+        violate("rule 5: the card recovered at " + std::to_string(f.recover_ms) +
                 " ms but the firmware processed no pair within 2 periods");
     // The bound runs from the onset of the fault the give-up is due to.
     const bool own_give_up =
         std::find(e.allowed.begin(), e.allowed.end(), outcome::hard_error) != e.allowed.end();
     if (v.actual == outcome::hard_error && f.in_effect && own_give_up &&
         run.hard_error_ms - f.onset_ms > bound * period)
-        violate("hard error " + std::to_string(run.hard_error_ms - f.onset_ms) +
+        violate("rule 4: hard error " + std::to_string(run.hard_error_ms - f.onset_ms) +
                 " ms after the onset (bound " + std::to_string(bound) + " periods)");
     // Not before its re-arms either: the card's failed checks since the last
     // good pair (none: a silent card, the watchdog's give-up).
     const int due_checks = static_cast<int>((p.hard_error_rearms + 1) * (p.retry_limit + 1));
     if (v.actual == outcome::hard_error && run.recovery.give_up_cause == "hard_error" &&
         run.failed_checks_before_give_up < due_checks)
-        violate("the firmware gave up after " + std::to_string(run.failed_checks_before_give_up) +
-                " failed checks, before its " + std::to_string(p.hard_error_rearms) +
+        violate("rule 4: the firmware gave up after " +
+                std::to_string(run.failed_checks_before_give_up) + " failed checks, before its " +
+                std::to_string(p.hard_error_rearms) +
                 " re-arm(s): (re-arms + 1) x (RETRY_LIMIT + 1) = " + std::to_string(due_checks));
     if (v.actual == outcome::overrun && f.dropped_pairs.empty())
-        violate("overrun without the dropped pairs named in a pair_dropped report");
+        violate("rule 5: overrun without the dropped pairs named in a pair_dropped report");
     check_reports(f, s, p, violate);
     return v;
 }
