@@ -1,6 +1,6 @@
 // TMS320C6416 register addresses and bit fields: the ONE source used by the
 // firmware (dsp/control_program.cpp) and the C6416 model (model/c6416).
-// Plain constants, no dependencies. Sources (keys of hardware-facts.md):
+// Plain constants, no dependencies. Sources (keys of docs/hardware-facts.md):
 //   [DS]  C6416 data sheet SPRS146 (memory map Table 3, EDMA Table 8/25,
 //         interrupt selector Table 26);
 //   [CSL] TI Chip Support Library hal headers (csl_emifahal.h,

@@ -1,12 +1,12 @@
 // C64x cycle cost model: how many CPU cycles a hand-scheduled TMS320C64x
-// kernel takes, from a description of how it is coded (DESIGN.md, "Firmware
+// kernel takes, from a description of how it is coded (docs/design-brief.md, "Firmware
 // timing"). The firmware runs natively on the host; simulated time advances
 // by these modelled cycles.
 //
 // A kernel call is an operation profile: a few sections, each a
 // software-pipelined loop (or a straight-line block) described by the
 // operations ONE iteration issues on each functional-unit class of the C64x
-// (.L .S .M .D, two units each: side A and B; hardware-facts.md section 1),
+// (.L .S .M .D, two units each: side A and B; docs/hardware-facts.md section 1),
 // its trip count, how often it is entered, the latency of its critical
 // dependence chain and any loop-carried recurrence. Then
 //
@@ -25,7 +25,7 @@
 // chain = N * II + chain - 1 cycles (prologue + kernel + epilogue).
 //
 // Latencies (1 + delay slots): loads 5 (4 delay slots; the standard C6000
-// load, marked unverified in hardware-facts.md section 1), DOTPU4 4 (3 delay
+// load, marked unverified in docs/hardware-facts.md section 1), DOTPU4 4 (3 delay
 // slots, [BINU] "4cycle"), 16-bit multiplies (MPY, MPY2, XPND4, the "1616_m"
 // class) 2, .L/.S/.D ALU ops 1, stores 1 (nothing in the kernel waits on
 // them).
@@ -47,7 +47,7 @@
 
 namespace dsp::c64x {
 
-// DSK clocks (hardware-facts.md section 2): v1 600 MHz CPU / 100 MHz EMIF,
+// DSK clocks (docs/hardware-facts.md section 2): v1 600 MHz CPU / 100 MHz EMIF,
 // v2 720 / 120, v3 (C6416T DSK) 1 GHz / 125 (the BSL says 120: discrepancy).
 constexpr uint64_t dsk_v1_cpu_hz = 600'000'000;
 constexpr uint64_t dsk_v2_cpu_hz = 720'000'000;
@@ -152,7 +152,7 @@ struct model_params {
     // 1.0 = the hand-scheduled kernels these profiles describe.
     uint32_t compiled_c_factor_q8 = 256;
 
-    // Memory. Facts: L1D line 64 B (hardware-facts.md section 1); EMIFA
+    // Memory. Facts: L1D line 64 B (docs/hardware-facts.md section 1); EMIFA
     // 64-bit, SDRAM on CE0 (section 3); EMIF and CPU clocks (section 2).
     uint32_t l1d_line_bytes = 64;
     uint32_t l1d_miss_l2_cycles = 6;  // ASSUMED: stall per L1D read miss served by L2 SRAM
@@ -201,7 +201,7 @@ class cost_model {
 };
 
 // Cycles to time at a CPU clock: exact integer picoseconds (rounded to
-// nearest) and 1/18 ns simulation ticks (DESIGN.md "Time"; exact for 600, 720
+// nearest) and 1/18 ns simulation ticks (docs/design-brief.md "Time"; exact for 600, 720
 // and 1000 MHz: 30, 25 and 18 ticks per cycle).
 uint64_t cycles_to_ps(uint64_t cycles, uint64_t cpu_hz);
 uint64_t cycles_to_ticks(uint64_t cycles, uint64_t cpu_hz);
@@ -217,7 +217,7 @@ kernel_profile software_divide(uint32_t bits, bool wide_operands = false);
 uint32_t quotient_bits(uint64_t limit);
 
 // TI IMGLIB C64x kernels, described as they are coded, with the published
-// cycle formulas (hardware-facts.md section 5). The first four are the
+// cycle formulas (docs/hardware-facts.md section 5). The first four are the
 // fitting set, the last four the check set.
 namespace imglib {
 kernel_profile sad_8x8();                // 31

@@ -84,7 +84,7 @@ enum class rearm_cause : uint8_t { hard_error = 1, sync_error = 2, overflow = 3,
 
 // The card registers the firmware writes at boot (docs/card-registers.md).
 // Defaults: the card's reset values, i.e. the default sensor profile
-// (DESIGN.md): 640 x 480 active, 16 dark columns, 8 dark rows, 800 x 525.
+// (docs/design-brief.md): 640 x 480 active, 16 dark columns, 8 dark rows, 800 x 525.
 struct card_setup {
     uint32_t dark_threshold = card_regs::dark_threshold_reset;
     uint32_t h_start = card_regs::h_start_reset;
@@ -107,7 +107,7 @@ struct card_setup {
 };
 
 // The card's async timing on CE2 / CE3 in ECLK cycles, read and write alike
-// (the DSK's own settings are symmetric, hardware-facts.md section 3); a
+// (the DSK's own settings are symmetric, docs/hardware-facts.md section 3); a
 // field of 0 keeps the DSK version's value (2/10/2 on v1, 2/12/2 on v2/v3).
 struct card_bus_timing {
     uint32_t setup = 0;   // RDSETUP / WRSETUP, 1..15

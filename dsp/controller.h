@@ -55,7 +55,7 @@
 // Firmware rules: all buffers are allocated in init() from the maximum image
 // size; process_pair allocates nothing and uses integer arithmetic per pixel.
 //
-// Memory plan (DESIGN.md "DSP memory"; L2 = 1 MB, hardware-facts.md section
+// Memory plan (docs/design-brief.md "DSP memory"; L2 = 1 MB, docs/hardware-facts.md section
 // 1). The raw Bayer pairs stay in SDRAM where the EDMA writes them; the
 // preprocess reads each raw byte once (line by line: three raw rows -> one
 // RGB row -> one gray row, the rows stay in L1D). Everything else is in L2:
@@ -160,7 +160,7 @@ struct memory_plan {
     }
 };
 memory_plan plan_memory(const controller_config& config);
-constexpr size_t c6416_l2_bytes = 1'048'576;  // hardware-facts.md section 1
+constexpr size_t c6416_l2_bytes = 1'048'576;  // docs/hardware-facts.md section 1
 
 struct frame_output {
     uint32_t frame_index = 0;

@@ -1,4 +1,4 @@
-// The firmware's only way to the hardware (DESIGN.md, "Layers"). The host
+// The firmware's only way to the hardware (docs/design-brief.md, "Layers"). The host
 // harness implements it with plain counters (tests/support/host/counting_hal); the C6416
 // TLM model (model/c6416) implements it with registers, EDMA, interrupts and
 // simulated time. Everything a real C6416 program needs and nothing OS-like:

@@ -20,7 +20,7 @@
 
 namespace dsp::cost {
 
-// Where a kernel's image data lives (DESIGN.md, "DSP memory").
+// Where a kernel's image data lives (docs/design-brief.md, "DSP memory").
 enum class memory : uint8_t { l2, sdram };
 
 // The model all functions below use (default: DSK v1 clocks, fitted values).

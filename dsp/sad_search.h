@@ -16,7 +16,7 @@
 //   pattern row and 8 pixels LDNDW image + LDDW pattern (.D), two SUBABS4
 //   (.L), two DOTPU4 against 0x01010101 (.M) summing the bytes; a 40x40
 //   position costs 258 cycles (0.16 cycles/pixel). IMG_mad_16x16 publishes
-//   38 cycles per 256-pixel position (hardware-facts.md section 5).
+//   38 cycles per 256-pixel position (docs/hardware-facts.md section 5).
 //   No early exit: the cost is fixed by the sizes, not by the data. The host
 //   code's fixed-count 16- and 8-pixel steps become the compiler's SIMD
 //   (PSADBW on x86).

@@ -1,4 +1,4 @@
-// 3x3 Sobel edge magnitude, IMG_sobel semantics (hardware-facts.md section 5,
+// 3x3 Sobel edge magnitude, IMG_sobel semantics (docs/hardware-facts.md section 5,
 // the IMGLIB v1.03 C reference):
 //   H = -i00 - 2 i01 - i02 + i20 + 2 i21 + i22   (vertical gradient, d/dy)
 //   V = -i00 + i02 - 2 i10 + 2 i12 - i20 + i22   (horizontal gradient, d/dx)
@@ -15,7 +15,7 @@
 //   c - a are computed once per column and reused by three outputs, so per
 //   pixel 3 loads, 8 additions/subtractions/shifts, 2 absolute values,
 //   1 saturation, 1 store. The C64x 8-bit IMG_sobel cycle formula is NOT
-//   FOUND (hardware-facts.md section 5; the C64x+ IMG_sobel_3x3_16 costs
+//   FOUND (docs/hardware-facts.md section 5; the C64x+ IMG_sobel_3x3_16 costs
 //   15 * cols * (rows - 2) / 4 + 32). Modelled cycles: cost::sobel_cycles
 //   (dsp/kernel_costs.h).
 #pragma once

@@ -1,4 +1,4 @@
-// The firmware's processing stages. The names are fixed (DESIGN.md,
+// The firmware's processing stages. The names are fixed (docs/design-brief.md,
 // "Decisions") and used everywhere: reports, timeline, waveforms.
 #pragma once
 
@@ -19,14 +19,22 @@ constexpr int stage_count = static_cast<int>(stage::count_);
 
 constexpr const char* stage_name(stage s) {
     switch (s) {
-        case stage::capture: return "capture";
-        case stage::preprocess: return "preprocess";
-        case stage::detect: return "detect";
-        case stage::track: return "track";
-        case stage::stereo_sad: return "stereo_sad";
-        case stage::stereo_edge: return "stereo_edge";
-        case stage::xyz: return "xyz";
-        case stage::count_: break;
+        case stage::capture:
+            return "capture";
+        case stage::preprocess:
+            return "preprocess";
+        case stage::detect:
+            return "detect";
+        case stage::track:
+            return "track";
+        case stage::stereo_sad:
+            return "stereo_sad";
+        case stage::stereo_edge:
+            return "stereo_edge";
+        case stage::xyz:
+            return "xyz";
+        case stage::count_:
+            break;
     }
     return "?";
 }

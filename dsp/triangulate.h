@@ -29,9 +29,9 @@
 namespace dsp {
 
 struct camera_rig {
-    int32_t baseline_um = 120000;          // s: 120 mm (DESIGN.md default rig)
-    int32_t focal_length_um = 6000;        // 6 mm lenses
-    int32_t pixel_pitch_nm = 7600;         // 7.6 um, the OV7620's (hardware-facts.md section 6)
+    int32_t baseline_um = 120000;    // s: 120 mm (docs/design-brief.md default rig)
+    int32_t focal_length_um = 6000;  // 6 mm lenses
+    int32_t pixel_pitch_nm = 7600;   // 7.6 um, the OV7620's (docs/hardware-facts.md section 6)
     int32_t cx_left_q8 = 320 * 256 - 128;  // principal points, Q8 px: image centre of
     int32_t cy_left_q8 = 240 * 256 - 128;  // a 640x480 image is (319.5, 239.5)
     int32_t cx_right_q8 = 320 * 256 - 128;

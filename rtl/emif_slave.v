@@ -1,6 +1,6 @@
 // EMIFA asynchronous slave of the card on CE2 (registers) and CE3 (pixel
 // ports), synchronous to ECLKOUT: the C64x drives its async strobes from
-// ECLKOUT edges (hardware-facts.md section 3), so the pins are sampled on the
+// ECLKOUT edges (docs/hardware-facts.md section 3), so the pins are sampled on the
 // same clock without synchronizers. docs/card.md lists the timing
 // assumptions (those the facts mark NOT FOUND).
 //

@@ -1,5 +1,5 @@
 // Interrupt pulse for a C64x EXT_INT pin. The C6416 needs EXT_INTx high for
-// >= 4P and low for >= 4P (P = CPU period; hardware-facts.md section 4), i.e.
+// >= 4P and low for >= 4P (P = CPU period; docs/hardware-facts.md section 4), i.e.
 // 8 ns at 500 MHz, the slowest CPU considered. HIGH_CYCLES and LOW_CYCLES ECLK
 // cycles give 40 ns / 40 ns at 100 MHz and 30 ns at 133 MHz (defaults 4 / 4),
 // a 3.75x margin. Active high (EXTPOL default: rising edge interrupts).

@@ -29,7 +29,7 @@ struct c6416_config {
     // buffers (from 0x80000000, ~1.2 MB) never reach. Its bytes are garbage.
     uint32_t sdram_traffic_base = 0x80C00000u;
     uint32_t sdram_traffic_bytes = 4u << 20;
-    // Stack of the CPU thread that runs the firmware (DESIGN.md, "Known traps").
+    // Stack of the CPU thread that runs the firmware (docs/design-brief.md, "Known traps").
     std::size_t cpu_stack_bytes = std::size_t{64} << 20;
     // sc_stop() when the firmware's entry returns.
     bool stop_when_firmware_returns = false;

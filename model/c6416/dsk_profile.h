@@ -1,4 +1,4 @@
-// The clocks of a C6416 DSK (hardware-facts.md section 2): CPU and EMIFA.
+// The clocks of a C6416 DSK (docs/hardware-facts.md section 2): CPU and EMIFA.
 // v1 600 MHz / 100 MHz (the default, the paper's era), v2 720 / 120,
 // v3 (C6416T DSK) 1 GHz / 125. Any other pair is settable; periods are exact
 // rational tick counts (model/time/ticks.h), so e.g. 850 MHz (21.18 ticks)

@@ -1,7 +1,7 @@
 // The C64x EMIF CE space control register (CECTLn) and the async timing it
 // programs, in ECLKOUT cycles.
 //
-// Bit fields exactly as hardware-facts.md section 3 gives them from TI's CSL
+// Bit fields exactly as docs/hardware-facts.md section 3 gives them from TI's CSL
 // (csl_emifahal.h): WRSETUP 31:28, WRSTRB 27:22, WRHLD 21:20 plus WRHLDMSB
 // bit 3 (the C64x's third hold bit), RDSETUP 19:16, TA 15:14, RDSTRB 13:8,
 // MTYPE 7:4, RDHLD 2:0.
@@ -17,7 +17,7 @@
 
 namespace emif {
 
-// MTYPE values (hardware-facts.md section 3), one definition with the
+// MTYPE values (docs/hardware-facts.md section 3), one definition with the
 // firmware's register header.
 using memory_type = dsp::c6416::emifa::mtype;
 
@@ -52,7 +52,7 @@ cectl_fields cectl_unpack(uint32_t cectl);
 uint32_t cectl_pack(const cectl_fields& f);
 async_timing decode_cectl(uint32_t cectl);
 
-// Register values used on the DSK (hardware-facts.md section 3, [GEL]/[BSL]).
+// Register values used on the DSK (docs/hardware-facts.md section 3, [GEL]/[BSL]).
 inline constexpr uint32_t cectl_dsk_v1 = 0x22A28A22;  // CE2/CE3 at 100 MHz: 2/10/2, TA 2, ASYNC32
 inline constexpr uint32_t cectl_dsk_v2 = 0x23228C22;  // CE2/CE3 at 120/125 MHz: 2/12/2, TA 2
 inline constexpr uint32_t cectl_sdram_dsk = 0xFFFFFFD3;  // CE0: SDRAM64
@@ -61,7 +61,7 @@ inline constexpr uint32_t cectl_sdram_dsk = 0xFFFFFFD3;  // CE0: SDRAM64
 inline constexpr uint32_t cectl_reset = 0xFFFFFF03;
 
 // EMIFA CE spaces: CE0 0x80000000, CE1 0x90000000, CE2 0xA0000000,
-// CE3 0xB0000000, 256 MB each (hardware-facts.md section 3; [TR] for CE2/CE3).
+// CE3 0xB0000000, 256 MB each (docs/hardware-facts.md section 3; [TR] for CE2/CE3).
 inline constexpr uint32_t ce_base(int ce) {
     return 0x80000000u + (static_cast<uint32_t>(ce) << 28);
 }

@@ -38,7 +38,7 @@ namespace emif {
 // SDRAM on CE0 at transaction level (docs/emif.md lists which numbers are ASSUMED).
 struct sdram_timing {
     // ECLK cycles between refresh requests: SDTIM PERIOD = 0x618 = 1560 at
-    // 100 MHz (hardware-facts.md section 3, [GEL]); 0 turns refresh off.
+    // 100 MHz (docs/hardware-facts.md section 3, [GEL]); 0 turns refresh off.
     uint32_t refresh_period = 1560;
     // ASSUMED: bus cycles one auto-refresh occupies (~tRC of a 64 Mbit PC100 part, 70 ns).
     uint32_t refresh_cycles = 7;
@@ -54,7 +54,7 @@ struct sdram_timing {
     // chunk pays access_cycles again for every row boundary it crosses.
     // Geometry (ASSUMED from the DSK's 16 MB = 2 x 64 Mbit parts, 32 bits
     // each, on the 64-bit bus: 4 banks x 2048 rows x 256 columns of 8 bytes,
-    // hardware-facts.md section 3): one row of one bank = 2 KB of
+    // docs/hardware-facts.md section 3): one row of one bank = 2 KB of
     // consecutive addresses, column address in the low bits, then the bank,
     // then the row. A row is identified by offset / row_bytes.
     uint32_t row_bytes = 2048;
@@ -62,7 +62,7 @@ struct sdram_timing {
 
 struct emif_config {
     simtime::tick_clock eclk{simtime::rational_ticks{simtime::emif_100mhz_period, 1}};
-    // CECTL0..3 (hardware-facts.md section 3): CE0 SDRAM, CE1 at reset,
+    // CECTL0..3 (docs/hardware-facts.md section 3): CE0 SDRAM, CE1 at reset,
     // CE2/CE3 the DSK v1 daughter-card setting.
     uint32_t cectl[ce_count] = {cectl_sdram_dsk, cectl_reset, cectl_dsk_v1, cectl_dsk_v1};
     // ASSUMED (NOT FOUND in the facts; the card's docs and its test master use 1):

@@ -1,5 +1,5 @@
 // The EMIFA asynchronous interface at the pins, as the DSP drives and
-// samples it (hardware-facts.md section 3; J4 connector of the DSK), and the
+// samples it (docs/hardware-facts.md section 3; J4 connector of the DSK), and the
 // C++ interfaces of things clocked on ECLKOUT beside the EMIF engine.
 //
 // One emif_pins value is what the DSP drives from one ECLKOUT rising edge to

@@ -1,5 +1,5 @@
 // Thin SystemC pin wrapper around the EMIF engine, for the literal pin-level
-// arrangement (DESIGN.md "How it is clocked"): ports named after the J4
+// arrangement (docs/design-brief.md "How it is clocked"): ports named after the J4
 // memory connector's pins, the engine stepped by an SC_METHOD at every
 // rising edge of ECLKOUT. At an edge it reads ARDY and ED as they were
 // before the edge (SystemC's evaluate/update rule) and writes the pins for

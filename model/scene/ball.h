@@ -23,7 +23,7 @@ struct ball_material {
 };
 
 struct ball_desc {
-    double radius_m = 0.05;  // DESIGN.md default ball radius
+    double radius_m = 0.05;  // docs/design-brief.md default ball radius
     ball_material material;
     trajectory path;
     vec3 spin_axis{0.0, 1.0, 0.0};  // unit

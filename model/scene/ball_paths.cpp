@@ -9,7 +9,7 @@ double motion_start_s(int still_frames, double frame_period_s) {
 }
 
 trajectory thrown_ball_path(double depth_m, double ball_radius_m, double speed, double start_s) {
-    // Written so that a 5 cm ball bounces at exactly 0.30 m (DESIGN.md's default).
+    // Written so that a 5 cm ball bounces at exactly 0.30 m (docs/design-brief.md's default).
     const double bounce_y = 0.30 + (0.05 - ball_radius_m);
     trajectory path = trajectory::ballistic({-0.30, 0.0, depth_m},
                                             {0.14 * speed, -2.0 * speed, -0.45 * speed}, start_s,

@@ -44,9 +44,9 @@ struct pinhole_camera {
 };
 
 struct stereo_rig {
-    double baseline_m = 0.120;      // s (DESIGN.md default rig)
-    double focal_length_m = 0.006;  // 6 mm lenses (DESIGN.md default rig)
-    double pixel_pitch_m = 7.6e-6;  // OV7620 pixel, 7.6 um (hardware-facts.md section 6)
+    double baseline_m = 0.120;      // s (docs/design-brief.md default rig)
+    double focal_length_m = 0.006;  // 6 mm lenses (docs/design-brief.md default rig)
+    double pixel_pitch_m = 7.6e-6;  // OV7620 pixel, 7.6 um (docs/hardware-facts.md section 6)
     int width = 640;                // OV7620 default valid window 640 x 480 (section 6)
     int height = 480;
     // Principal points as offsets from the image centre ((W-1)/2, (H-1)/2),

@@ -31,8 +31,9 @@ namespace scene {
 
 struct scenario {
     scene_desc scene;
-    double frame_period_s = 0.0245;  // DESIGN.md: one sensor frame = one 24.5 ms sync period
-    int frame_count = 100;           // nominal length; any n >= 0 can be rendered
+    double frame_period_s =
+        0.0245;             // docs/design-brief.md: one sensor frame = one 24.5 ms sync period
+    int frame_count = 100;  // nominal length; any n >= 0 can be rendered
 };
 
 struct ball_truth {

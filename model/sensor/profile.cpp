@@ -34,7 +34,7 @@ std::string sensor_profile::validate() const {
     return {};
 }
 
-// Start-up rule of DESIGN.md for every profile: fixed latency, then with
+// Start-up rule of docs/design-brief.md for every profile: fixed latency, then with
 // probability 0.25 an extra delay of 1 pclk .. 2 lines.
 static void set_startup(sensor_profile& p) {
     p.startup_latency_pclks = 2 * p.line_pclks;  // ASSUMED: 2 line periods

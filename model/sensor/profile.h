@@ -14,10 +14,10 @@
 // Dark (optically black) pixels read black_level (plus noise); border pixels
 // are light-sensitive pixels outside the scene image: they repeat the
 // outermost 2x2 CFA cell of the image. cfa is the colour order of the first
-// ACTIVE pixel (DESIGN.md: the Bayer order depends on the window start).
+// ACTIVE pixel (docs/design-brief.md: the Bayer order depends on the window start).
 //
 // Every field of the named profiles says where its value comes from:
-// [DESIGN] DESIGN.md decisions, [HF6] hardware-facts.md section 6 (with its
+// [DESIGN] docs/design-brief.md decisions, [HF6] docs/hardware-facts.md section 6 (with its
 // source), DERIVED (arithmetic on those), ASSUMED (no source: our choice).
 #pragma once
 
@@ -88,12 +88,12 @@ struct sensor_profile {
     std::string validate() const;
 };
 
-// DESIGN.md default profile: 800 pclk per line (16 dark + 640 active + 144
+// docs/design-brief.md default profile: 800 pclk per line (16 dark + 640 active + 144
 // blanking), 525 lines per frame (8 dark + 480 active + 37 blanking), pclk
 // 120/7 MHz -> 420,000 pclk = 441,000,000 ticks = exactly 24.5 ms per frame.
 sensor_profile default_profile();
 
-// Real parts of the era (hardware-facts.md section 6).
+// Real parts of the era (docs/hardware-facts.md section 6).
 sensor_profile ov7620_profile();
 sensor_profile mt9v011_profile();
 sensor_profile mt9v012_profile();

@@ -1,6 +1,6 @@
 // Ground truth of a sensor's own timing: one record per frame it started, so
 // the testbench knows which pairs really were in step, whatever the card
-// concludes (DESIGN.md "When a pair may be used").
+// concludes (docs/design-brief.md "When a pair may be used").
 #pragma once
 
 #include <cstdint>
@@ -35,7 +35,7 @@ struct frame_truth {
 // Faults that change which pixel clock carries which active pixel.
 uint32_t timing_fault_mask();
 
-// DESIGN.md: out of step = the two streams differ by one pixel clock or more
+// docs/design-brief.md: out of step = the two streams differ by one pixel clock or more
 // anywhere in the pair's active data. True when both frames are complete, show
 // the same scene frame, carry all their active pixels with no timing fault,
 // and their first and last active pixels are less than one pixel clock apart

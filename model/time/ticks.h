@@ -1,4 +1,4 @@
-// The integer time base shared by every layer (DESIGN.md, "Time").
+// The integer time base shared by every layer (docs/design-brief.md, "Time").
 //
 // One tick is 1/18 ns. Every clock of the platform is a whole number of ticks
 // (or, for clocks off that grid, an exact fraction of ticks), so edge times are
@@ -14,7 +14,7 @@
 // A clock is a rational period N/D ticks (D = 1 for clocks on the grid) and an
 // origin tick. Its half-edges h = 0, 1, 2, ... (even = rising, odd = falling)
 // fall at  origin + floor(h * N / (2 D)).  Drift (a sensor on its own
-// oscillator, DESIGN.md "Clocks") multiplies the period by (1e6 + ppm) / 1e6:
+// oscillator, docs/design-brief.md "Clocks") multiplies the period by (1e6 + ppm) / 1e6:
 // the tick count per period changes by fractional accumulation, never by a
 // rounded period. clock_cursor steps the same sequence with an integer
 // remainder accumulator (two additions per half-edge, no division) and is
@@ -30,7 +30,7 @@ using ticks = int64_t;
 inline constexpr ticks ticks_per_ns = 18;
 inline constexpr int64_t fs_per_ns = 1000000;
 
-// Periods in ticks of the platform's clocks (DESIGN.md "Time"; hardware-facts.md
+// Periods in ticks of the platform's clocks (docs/design-brief.md "Time"; docs/hardware-facts.md
 // section 2: DSK v1 600 MHz / 100 MHz EMIF, v2 720 / 120, v3 1 GHz / 125).
 inline constexpr ticks pclk_default_period = 1050;  // 120/7 MHz default pixel clock
 inline constexpr ticks emif_100mhz_period = 180;

@@ -64,7 +64,7 @@ struct traffic_figures {
 traffic_figures firmware_traffic(int cols, int rows, uint32_t card_cectl,
                                  const emif::emif_config& emif, uint32_t l2_line_bytes = 128);
 
-// DESIGN.md "What the budget means", with the paper's two modes:
+// docs/design-brief.md "What the budget means", with the paper's two modes:
 //   sequential: the pair is read, then processed, before the next can be
 //               taken: fits when capture + processing (+ the interrupt
 //               path) <= period;

@@ -8,7 +8,7 @@
 //                                 v                              |
 //                           c6416_sc [ CPU thread: firmware on probe_hal, EDMA, L2, SDRAM ]
 //
-// One platform per process: SystemC elaborates once (DESIGN.md "Known traps").
+// One platform per process: SystemC elaborates once (docs/design-brief.md "Known traps").
 #pragma once
 
 #include <cstdint>

@@ -20,7 +20,7 @@ emif::emif_config engine_config(const platform_config& config) {
     emif::emif_config e;
     e.eclk = simtime::tick_clock(config.dsk.emif_period());
     // One SDRAM row refresh every 15.6 us ([TR]; SDTIM 0x618 at 100 MHz,
-    // 0x750 at 120 MHz, hardware-facts.md section 3).
+    // 0x750 at 120 MHz, docs/hardware-facts.md section 3).
     e.sdram.refresh_period = static_cast<uint32_t>(config.dsk.emif_hz * 156 / 10000000);
     return e;
 }

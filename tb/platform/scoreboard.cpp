@@ -38,7 +38,7 @@ int64_t first_frame_between(const std::vector<sensor::frame_truth>& truth, simti
     return -1;
 }
 
-// DESIGN.md's rule (sensor::pair_in_step), with "show the same scene frame"
+// docs/design-brief.md's rule (sensor::pair_in_step), with "show the same scene frame"
 // read as "were rendered at the same scene time": each sensor numbers its own
 // scene frames, and after an OE restart the two numberings can differ by the
 // frames one sensor began and the other did not (docs/platform.md).

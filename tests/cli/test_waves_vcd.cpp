@@ -2,7 +2,7 @@
 // here by a plain parser, the GTKWave save file and translate filters beside
 // it, and the option errors. The expected figures come from the sensor
 // profile (docs/sensor.md), the DSK v1 CECTL value decoded here from the C64x
-// field layout (hardware-facts.md section 3) and the tick arithmetic of
+// field layout (docs/hardware-facts.md section 3) and the tick arithmetic of
 // model/time/ticks.h, not from the writer.
 #include <gtest/gtest.h>
 #include <stdlib.h>
@@ -93,7 +93,7 @@ std::string value_at(const std::vector<vcd_change>& h, ticks t) {
     return v;
 }
 
-// C64x EMIF CECTL fields (SPRU266, hardware-facts.md section 3):
+// C64x EMIF CECTL fields (SPRU266, docs/hardware-facts.md section 3):
 // WRSETUP 31:28, WRSTRB 27:22, WRHLD 21:20, RDSETUP 19:16, TA 15:14,
 // RDSTRB 13:8, MTYPE 7:4, RDHLD 2:0 -- in ECLKOUT cycles.
 struct cectl_fields {

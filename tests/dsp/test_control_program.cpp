@@ -28,10 +28,9 @@
 #include "dsp/card_regs.h"
 #include "dsp/control_program.h"
 #include "tb/platform/host/counting_hal.h"
-#include "tests/support/host/scenarios.h"
 #include "tb/platform/host/stereo_runner.h"
 #include "tests/support/heap_counter.h"
-
+#include "tests/support/host/scenarios.h"
 
 namespace {
 
@@ -64,7 +63,7 @@ struct platform_config {
     int width = 64;
     int height = 48;
     int64_t cpu_period = 30;                      // ticks: 600 MHz (DSK v1)
-    int64_t frame_period = 24500 * ticks_per_us;  // DESIGN.md: one sensor frame
+    int64_t frame_period = 24500 * ticks_per_us;  // docs/design-brief.md: one sensor frame
     int64_t start_latency = 2 * ticks_per_ms;     // OE rise to the first frame's start
     int64_t first_start_latency = 0;              // the first OE only, if set (a silent card)
     int64_t restart_gap = 24500 * ticks_per_us;   // card's OE restart after a mismatch
@@ -990,7 +989,7 @@ TEST(ControlProgramOverrun, NewPairIsDroppedWhenNoBufferIsFreeSequential) {
     check_overrun_policy(dsp::pipeline_mode::sequential);
 }
 
-// DESIGN.md: with the paper's figures only overlapped mode keeps up. The
+// docs/design-brief.md: with the paper's figures only overlapped mode keeps up. The
 // bus takes 21.5 ms per pair (two VGA frames at 14 ECLK per word, v1: here
 // 1536 words of 14 us) and the CPU 12 ms; the sensor period is 24.5 ms.
 // Sequential: 33.5 ms per pair -> every other pair dropped; overlapped:

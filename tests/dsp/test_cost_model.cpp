@@ -1,6 +1,6 @@
 // The C64x cost model (dsp/c64x_cost_model.h): the unit scheduler against a
 // brute-force assignment, the section formula against hand arithmetic, the
-// fit against TI IMGLIB's published C64x cycle formulas (hardware-facts.md
+// fit against TI IMGLIB's published C64x cycle formulas (docs/hardware-facts.md
 // section 5), the check set it was not fitted on, memory costs and the
 // cycles-to-time conversion.
 #include <gtest/gtest.h>
@@ -29,7 +29,7 @@ double relative_error(double model, double published) {
     return (model - published) / published;
 }
 
-// Fitting set: the sizes of hardware-facts.md section 5's examples plus
+// Fitting set: the sizes of docs/hardware-facts.md section 5's examples plus
 // others around them.
 std::vector<imglib_case> fitting_cases() {
     std::vector<imglib_case> cases;
@@ -230,7 +230,7 @@ TEST(C64xCostModel, CyclesToTimeAtTheDskClocks) {
     EXPECT_EQ(cycles_to_ps(1, dsk_v1_cpu_hz), 1'667u);  // 1666.67 rounded
     EXPECT_EQ(cycles_to_ps(720, dsk_v2_cpu_hz), 1'000'000u);
     EXPECT_EQ(cycles_to_ps(1000, dsk_v3_cpu_hz), 1'000'000u);
-    // Ticks of 1/18 ns: 30, 25 and 18 per cycle (DESIGN.md "Time").
+    // Ticks of 1/18 ns: 30, 25 and 18 per cycle (docs/design-brief.md "Time").
     EXPECT_EQ(cycles_to_ticks(1, dsk_v1_cpu_hz), 30u);
     EXPECT_EQ(cycles_to_ticks(1, dsk_v2_cpu_hz), 25u);
     EXPECT_EQ(cycles_to_ticks(1, dsk_v3_cpu_hz), 18u);

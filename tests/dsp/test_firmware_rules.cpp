@@ -1,4 +1,4 @@
-// Firmware rules (DESIGN.md, "Layers"): after init, the controller's frame
+// Firmware rules (docs/design-brief.md, "Layers"): after init, the controller's frame
 // loop allocates nothing; and the cycles it reports per stage are non-zero
 // exactly for the stages that ran, equal to what it charged to the HAL.
 //
@@ -16,9 +16,9 @@
 #include "dsp/controller.h"
 #include "dsp/kernel_costs.h"
 #include "tb/platform/host/counting_hal.h"
-#include "tests/support/host/scenarios.h"
 #include "tb/platform/host/stereo_runner.h"
 #include "tests/support/heap_counter.h"
+#include "tests/support/host/scenarios.h"
 
 using test_support::heap_counter;
 

@@ -82,7 +82,7 @@ TEST_F(KernelCosts, SadSearchScalesWithPatternArea) {
 TEST_F(KernelCosts, SadSearchNeverBeatsTheSubabs4Bound) {
     // Two .L units, one SUBABS4 (4 abs-differences) each per cycle: at most
     // 8 abs-differences per cycle, the rate of IMG_mad_8x8's inner loop
-    // (hardware-facts.md section 1).
+    // (docs/hardware-facts.md section 1).
     const std::pair<int, int> sizes[] = {{8, 8}, {16, 16}, {40, 40}, {96, 96}, {1024, 64}};
     for (auto [w, h] : sizes) {
         const uint64_t positions = 500;

@@ -3,7 +3,7 @@
 // against the scene's closed-form ground truth (model/scene/sequence.h):
 // detection delay after the first motion, box centre against the centre of
 // the ball's image ellipse, X / Y against the ball's centre and depth
-// against the mean depth of its VISIBLE surface (DESIGN.md, "Default rig").
+// against the mean depth of its VISIBLE surface (docs/design-brief.md, "Default rig").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,15 +12,15 @@
 #include <vector>
 
 #include "model/scene/sequence.h"
+#include "tb/platform/host/stereo_runner.h"
 #include "tb/platform/scoring/error_metrics.h"
 #include "tests/support/host/scenarios.h"
-#include "tb/platform/host/stereo_runner.h"
 
 namespace {
 
 // Thresholds (see each test for why).
 constexpr int max_detection_delay = 3;            // frames after the first motion (the brief)
-constexpr double max_depth_error_pct = 2.0;       // DESIGN.md: 2 % depth at 1-3 m
+constexpr double max_depth_error_pct = 2.0;       // docs/design-brief.md: 2 % depth at 1-3 m
 constexpr double max_box_error_diameters = 0.25;  // box centre within a quarter diameter
 // X and Y against the ball's CENTRE: a quarter of the ball's 100 mm
 // diameter, the box-centre criterion in space. Part of it is by design: the
@@ -42,7 +42,8 @@ run_result run(const scene::scenario& scenario, int frames) {
     host::stereo_runner runner(scenario, platform::controller_config_for(scenario.scene.rig));
     run_result r;
     r.records = runner.run(0, frames);
-    r.summary = platform::summarize(r.records, platform::first_motion_frame(runner.sequence(), frames));
+    r.summary =
+        platform::summarize(r.records, platform::first_motion_frame(runner.sequence(), frames));
     return r;
 }
 

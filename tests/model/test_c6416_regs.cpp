@@ -1,5 +1,5 @@
 // The C6416 register map (dsp/c6416_regs.h) against the numbers of its
-// sources, typed here from them (hardware-facts.md sections 1, 3, 4; TI CSL
+// sources, typed here from them (docs/hardware-facts.md sections 1, 3, 4; TI CSL
 // csl_edmahal.h / csl_irqhal.h / csl_timerhal.h; DSK6416.gel), and the plain
 // C++ parts of the model that interpret it: the interrupt selector, the
 // EDMA channel controller (events, enables, PaRAM update, link, chaining,

@@ -1,5 +1,5 @@
 // The EMIF engine's async cycle, counted in ECLK edges against the closed
-// form of the CECTL fields (hardware-facts.md section 3): CECTL decoding of
+// form of the CECTL fields (docs/hardware-facts.md section 3): CECTL decoding of
 // the DSK values, setup/strobe/hold at the pins, RS + RST + RH per read and
 // WS + WST + WH per write, TA between directions and between CE spaces,
 // back-to-back words, at 0x22A28A22 (DSK v1), 0x23228C22 (v2/v3), a value
@@ -113,7 +113,8 @@ void expect_checker_clean(const emif_checker& c) {
 }  // namespace
 
 TEST(emif_cectl, decodes_the_dsk_values_as_the_fact_sheet_lists_them) {
-    // hardware-facts.md section 3: 0x22A28A22 = WS=2 WST=10 WH=2 RS=2 TA=2 RST=10 ASYNC32 RH=2.
+    // docs/hardware-facts.md section 3: 0x22A28A22 = WS=2 WST=10 WH=2 RS=2 TA=2 RST=10 ASYNC32
+    // RH=2.
     const async_timing v1 = decode_cectl(cectl_dsk_v1);
     EXPECT_EQ(v1.write_setup, 2u);
     EXPECT_EQ(v1.write_strobe, 10u);
@@ -282,7 +283,7 @@ INSTANTIATE_TEST_SUITE_P(cectl, emif_cycle_counts,
 
 TEST(emif_engine, one_vga_frame_over_the_dsk_v1_setting_takes_10_752_ms) {
     // 640 x 480 8-bit pixels = 76,800 words from the left pixel port (fixed
-    // address), one EDMA burst: 76,800 x 14 ECLK at 100 MHz (DESIGN.md: ~10.8 ms).
+    // address), one EDMA burst: 76,800 x 14 ECLK at 100 MHz (docs/design-brief.md: ~10.8 ms).
     bus b(cectl_dsk_v1);
     constexpr uint32_t words = 640 * 480 / 4;
     std::vector<uint8_t> frame(4 * words);

@@ -1,5 +1,5 @@
-// The named timing profiles: each one's sourced numbers (hardware-facts.md
-// section 6, DESIGN.md) hold, and a sensor running it shows them on its pins:
+// The named timing profiles: each one's sourced numbers (docs/hardware-facts.md
+// section 6, docs/design-brief.md) hold, and a sensor running it shows them on its pins:
 // HREF width and period, HREF pulses per frame, VSYNC width, frame period.
 #include <gtest/gtest.h>
 

@@ -48,7 +48,7 @@ bool is_slot(uint64_t k, simtime::ticks start, const sensor_profile& p) {
     return -fn <= d && d < fn;
 }
 
-// Timing half of DESIGN.md's in-step rule (pair_in_step without the scene
+// Timing half of docs/design-brief.md's in-step rule (pair_in_step without the scene
 // frame check): complete, no timing fault, first and last active pixels less
 // than one pixel clock apart.
 bool in_step_by_timing(const frame_truth& a, const frame_truth& b, simtime::rational_ticks pclk) {

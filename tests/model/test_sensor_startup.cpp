@@ -1,4 +1,4 @@
-// Start-up after OE (DESIGN.md): a fixed latency, plus with probability 0.25
+// Start-up after OE (docs/design-brief.md): a fixed latency, plus with probability 0.25
 // an extra delay of 1 pclk .. 2 lines, seeded. Measured from the pins over
 // thousands of starts; two sensors on one master clock are in step exactly
 // when their draws agree, and the timing truth says so.

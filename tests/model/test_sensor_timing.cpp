@@ -85,7 +85,7 @@ TEST(SensorTiming, SmallProfileLayoutOnThePins) {
     check_layout(small_profile(), 3);
 }
 
-// DESIGN.md: 800 clocks per line (656 with HREF: 16 dark + 640 active), 525
+// docs/design-brief.md: 800 clocks per line (656 with HREF: 16 dark + 640 active), 525
 // lines, 488 readout rows, frame = 420,000 clocks = 441,000,000 ticks = 24.5 ms.
 TEST(SensorTiming, DefaultProfileIsExactly24p5Milliseconds) {
     const sensor_profile p = default_profile();

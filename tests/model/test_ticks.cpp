@@ -35,7 +35,7 @@ TEST(Ticks, ClockPeriodsFromFrequencies) {
     const rational_ticks xtal = period_of_hz(27000000);
     EXPECT_EQ(xtal.num, 2000);
     EXPECT_EQ(xtal.den, 3);
-    // DESIGN.md: edges of the 120/7 MHz pixel clock and the 100 MHz EMIF meet
+    // docs/design-brief.md: edges of the 120/7 MHz pixel clock and the 100 MHz EMIF meet
     // every 350 ns = 6300 ticks = lcm(1050, 180).
     EXPECT_EQ(1050 * 180 / gcd_i64(1050, 180), 6300);
     EXPECT_EQ(to_fs(6300), 350000000);

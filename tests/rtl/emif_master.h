@@ -3,7 +3,7 @@
 // It is stepped at every ECLKOUT rising edge with the card's outputs as they
 // were just before that edge, and then drives its pins for the next cycle.
 //
-// Timing per access, in ECLK cycles, from the CECTL fields (hardware-facts.md
+// Timing per access, in ECLK cycles, from the CECTL fields (docs/hardware-facts.md
 // section 3): setup RS (CE, EA, BE and, for reads, AOE asserted), strobe RST
 // (ARE or AWE low), hold RH (strobe high, the rest held). Back-to-back
 // accesses of the same direction to the same CE follow each other directly

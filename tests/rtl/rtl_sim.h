@@ -1,5 +1,5 @@
 // Shared plumbing of the rtl tests: two unrelated clocks on the integer tick
-// time base (1 tick = 1/18 ns, DESIGN.md "Time"), coverage dumps for
+// time base (1 tick = 1/18 ns, docs/design-brief.md "Time"), coverage dumps for
 // `make coverage-rtl`, and a way to mute Verilator's own printing.
 #pragma once
 
@@ -19,7 +19,7 @@
 
 namespace rtl_test {
 
-// Clock periods in ticks of 1/18 ns (DESIGN.md): every edge is exact.
+// Clock periods in ticks of 1/18 ns (docs/design-brief.md): every edge is exact.
 constexpr uint64_t ticks_pclk_default = 1050;  // 120/7 MHz master pixel clock
 constexpr uint64_t ticks_eclk_v1 = 180;        // 100 MHz ECLKOUT, DSK v1
 constexpr uint64_t ticks_eclk_v2 = 150;        // 120 MHz, DSK v2

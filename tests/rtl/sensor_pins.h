@@ -41,7 +41,7 @@ struct sensor_layout {
     int words_per_frame() const { return words_per_line() * active_rows; }
 };
 
-// DESIGN.md default profile, as model/sensor's default_profile() lays it out:
+// docs/design-brief.md default profile, as model/sensor's default_profile() lays it out:
 // 800 x 525 pclk, 16 dark columns then 640 active, VSYNC 2 lines, first
 // readout row at line 27, 8 dark rows then 480 active.
 inline sensor_layout vga_layout() {

@@ -36,7 +36,7 @@ struct bus_setting {
     int ardy_lead;
 };
 
-// The DSK's own values (v1 100 MHz, v2 120 MHz; hardware-facts.md section 3),
+// The DSK's own values (v1 100 MHz, v2 120 MHz; docs/hardware-facts.md section 3),
 // the fastest encodable async access at 125 MHz (all fields 1: the strobe is
 // stretched by ARDY), a 1-cycle strobe with ARDY sampled two edges before the
 // strobe end (then the card needs RS + RST >= 3 to be heard, docs/card.md),

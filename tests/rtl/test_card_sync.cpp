@@ -324,7 +324,7 @@ TEST(CardSync, OneSensorNeverStartingIsAMismatchBothSilentIsAStartTimeout) {
     }
 }
 
-// DESIGN.md's start-up model: each sensor starts after a fixed latency plus,
+// docs/design-brief.md's start-up model: each sensor starts after a fixed latency plus,
 // with probability 0.25, an extra 1 pclk .. 2 lines. Over many starts the
 // verdict of the first frame must be "in step" exactly when both sensors
 // drew the same extra delay: no false alarm, no missed skew.

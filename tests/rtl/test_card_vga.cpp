@@ -1,10 +1,10 @@
 // The card as the platform uses it (rtl_card: default parameters, 2^17-word
-// FIFOs, reset values = DESIGN.md's default VGA profile) with VGA sensors on
+// FIFOs, reset values = docs/design-brief.md's default VGA profile) with VGA sensors on
 // the real clocks (120/7 MHz pixel clock, 100 MHz ECLK, CECTL 0x22A28A22):
 // the DSP model reads each pair after FRAME_READY, 14 ECLK per word back to
 // back, and every word is checked.
 //
-// Buffering (DESIGN.md "Buffering"): reading L and R interleaved line by line
+// Buffering (docs/design-brief.md "Buffering"): reading L and R interleaved line by line
 // keeps the peak FIFO occupancy near one frame (76,800 words); reading all of
 // L, then all of R lets R gather ~30k words of the next frame on top of a
 // full frame, more than a 384 KB (98,304-word) FIFO holds. Both peaks are read
@@ -86,7 +86,7 @@ TEST(CardVga, PeakOccupancyUnderTheDocumentedReadOrderStaysInsideTheFifo) {
     EXPECT_GE(r.peak_l, 76800u) << "a whole frame waits for its verdict";
     EXPECT_LT(r.peak_l, 76800u + 2 * 160u) << "interleaved draining keeps it near one frame";
     EXPECT_LT(r.peak_r, 76800u + 2 * 160u);
-    // 153,600 words at 14 ECLK = 21.5 ms (DESIGN.md), inside the 24.5 ms frame.
+    // 153,600 words at 14 ECLK = 21.5 ms (docs/design-brief.md), inside the 24.5 ms frame.
     EXPECT_NEAR(r.pair_read_ms, 21.5, 0.1);
     RecordProperty("peak_words_interleaved", std::to_string(std::max(r.peak_l, r.peak_r)));
 }
@@ -99,7 +99,7 @@ TEST(CardVga, ReadingAllOfLeftThenRightNeedsMoreThanA384KbFifo) {
         r.peak_l, r.peak_r, r.depth, r.peak_r / 76800.0, r.pair_read_ms, r.seconds);
     EXPECT_EQ(r.overflows, 0u) << "1.7 frames of FIFO still hold it";
     EXPECT_EQ(r.bad_words, 0u);
-    EXPECT_GT(r.peak_r, 98304u) << "R gathers more than a 384 KB FIFO holds (DESIGN.md)";
+    EXPECT_GT(r.peak_r, 98304u) << "R gathers more than a 384 KB FIFO holds (docs/design-brief.md)";
     EXPECT_LT(r.peak_r, r.depth);
     RecordProperty("peak_words_left_then_right", std::to_string(r.peak_r));
 }

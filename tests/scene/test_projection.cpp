@@ -14,7 +14,7 @@ namespace {
 using scene::vec3;
 
 constexpr double pi = 3.14159265358979323846;
-// DESIGN.md default rig: 6 mm lens / 7.6 um pitch, 120 mm baseline, VGA.
+// docs/design-brief.md default rig: 6 mm lens / 7.6 um pitch, 120 mm baseline, VGA.
 constexpr double f_px = 0.006 / 7.6e-6;
 constexpr double baseline = 0.120;
 

@@ -1,7 +1,7 @@
 // Mean depth of the visible ball surface: the library's quadrature over the
 // image ellipse against an independent integration over the sphere's
 // surface written here, against the rendered sub-samples, and its relation
-// to the centre depth (DESIGN.md: on average ~2/3 of the radius nearer).
+// to the centre depth (docs/design-brief.md: on average ~2/3 of the radius nearer).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -77,7 +77,7 @@ TEST(VisibleDepth, AboutTwoThirdsOfTheRadiusNearerThanTheCentre) {
     // in front of the centre ALONG THE LINE OF SIGHT, so in Z it is 2/3 r
     // cos(b), b the angle off the optical axis; perspective (the visible cap
     // is smaller than a hemisphere and near parts project larger) adds about
-    // r / (2 D) at distance D. The DESIGN.md figure (~2/3) holds within 0.05
+    // r / (2 D) at distance D. The docs/design-brief.md figure (~2/3) holds within 0.05
     // for the 5 cm ball at 1-3 m.
     const scene::stereo_rig rig;
     double worst_model = 0.0;

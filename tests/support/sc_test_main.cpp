@@ -10,7 +10,8 @@ namespace {
 
 void report_to_gtest(const sc_core::sc_report& report, const sc_core::sc_actions& actions) {
     if (report.get_severity() >= sc_core::SC_WARNING) {
-        ADD_FAILURE() << "SystemC " << (report.get_severity() == sc_core::SC_WARNING ? "warning" : "error")
+        ADD_FAILURE() << "SystemC "
+                      << (report.get_severity() == sc_core::SC_WARNING ? "warning" : "error")
                       << " [" << report.get_msg_type() << "] " << report.get_msg() << " at "
                       << report.get_file_name() << ":" << report.get_line_number();
     }
@@ -22,7 +23,7 @@ void report_to_gtest(const sc_core::sc_report& report, const sc_core::sc_actions
 
 int sc_main(int argc, char* argv[]) {
     // One time resolution everywhere, before any sc_time exists: 1 fs, the
-    // precision of the RTL's `timescale 1ns / 1fs` (DESIGN.md, "Time").
+    // precision of the RTL's `timescale 1ns / 1fs` (docs/design-brief.md, "Time").
     sc_core::sc_set_time_resolution(1, sc_core::SC_FS);
     sc_core::sc_report_handler::set_handler(report_to_gtest);
     // Errors must stop the offending test, not the process: throw, caught by gtest.

@@ -1,4 +1,4 @@
-// The fast arrangement is cycle-accurate (DESIGN.md "How it is clocked";
+// The fast arrangement is cycle-accurate (docs/design-brief.md "How it is clocked";
 // docs/arrangements.md): the same run in the literal pin-level arrangement
 // (sensor_sc, verilator --sc card, emif_pins_sc, wired with sc_signals)
 // gives the same pins and the same report.

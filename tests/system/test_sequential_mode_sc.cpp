@@ -1,4 +1,4 @@
-// Sequential mode at the default settings (DESIGN.md: "with the paper's
+// Sequential mode at the default settings (docs/design-brief.md: "with the paper's
 // figures only overlapped mode can fit, and the tool should show exactly
 // that"): the pair is read (~22.5 ms), then processed (~10-16 ms), so the
 // next pair is ready while the CPU still works on this one and is dropped.

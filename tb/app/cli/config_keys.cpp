@@ -98,7 +98,7 @@ std::vector<config_key> scenario_keys() {
         number("scenario.speed", scenario_field(&scenario_params::speed), 0.0, 8.0,
                "time scale of the path: 1 nominal, 2 twice as fast, 0 at rest"),
         number("scenario.ball_radius_mm", scenario_field(&scenario_params::ball_radius_mm), 5.0,
-               300.0, "ball radius, mm (DESIGN.md default 50)"),
+               300.0, "ball radius, mm (docs/design-brief.md default 50)"),
         choice("scenario.light", scenario_field(&scenario_params::light), {"none", "step", "ramp"},
                "a global lighting change: none, a step, or a linear ramp"),
         integer("scenario.light_frame", scenario_field(&scenario_params::light_frame), 0, 100000,
@@ -116,11 +116,11 @@ std::vector<config_key> scenario_keys() {
 std::vector<config_key> hardware_keys() {
     return {
         number("rig.baseline_mm", setup_field(&run_setup::baseline_mm), 10.0, 2000.0,
-               "stereo baseline s, mm (DESIGN.md default rig: 120)"),
+               "stereo baseline s, mm (docs/design-brief.md default rig: 120)"),
         number("rig.focal_length_mm", setup_field(&run_setup::focal_length_mm), 1.0, 100.0,
                "lens focal length, mm (default 6)"),
         number("rig.pixel_pitch_um", setup_field(&run_setup::pixel_pitch_um), 1.0, 50.0,
-               "sensor pixel pitch, um (OV7620: 7.6, hardware-facts.md section 6)"),
+               "sensor pixel pitch, um (OV7620: 7.6, docs/hardware-facts.md section 6)"),
         choice("sensor.profile", setup_field(&run_setup::sensor_profile),
                {"default", "ov7620", "mt9v011", "mt9v012", "pas302"},
                "sensor timing profile (docs/sensor.md)"),
@@ -505,7 +505,7 @@ bool validate_setup(const run_setup& setup, std::string* error) {
         return false;
     }
     if (setup.effective_eclk_mhz() > setup.effective_cpu_mhz() / 2.0) {
-        // The C64x EMIF clock is at most CPU/4 or CPU/6 on the DSKs (hardware-facts.md
+        // The C64x EMIF clock is at most CPU/4 or CPU/6 on the DSKs (docs/hardware-facts.md
         // section 2); half the CPU clock is the bound the model is sure to handle.
         *error = "dsk.eclk_mhz " + format_number(setup.effective_eclk_mhz()) +
                  " is more than half of dsk.cpu_mhz " + format_number(setup.effective_cpu_mhz());

@@ -34,7 +34,7 @@ const std::vector<std::pair<std::string, std::string>>& frame_csv_columns();
 // values are empty cells, booleans 1 / 0, numbers as in the JSON.
 std::string frames_csv(const nlohmann::json& report);
 
-// The stage names of DESIGN.md in order (dsp::stage_name).
+// The stage names of docs/design-brief.md in order (dsp::stage_name).
 std::vector<std::string> stage_names();
 
 }  // namespace cli

@@ -20,7 +20,7 @@ struct scenario_params {
     std::string path = "bounce";   // bounce | circle | line | still
     double depth_m = 2.6;          // the ball's starting depth (circle: the plane's depth)
     double speed = 1.0;            // 1 = the path's nominal speed; a time scale
-    double ball_radius_mm = 50.0;  // DESIGN.md default ball radius 5 cm
+    double ball_radius_mm = 50.0;  // docs/design-brief.md default ball radius 5 cm
     std::string light = "none";    // none | step | ramp
     int light_frame = 6;           // frame of the step / start of the ramp
     double light_gain = 0.6;       // global gain after the change
@@ -31,8 +31,8 @@ struct scenario_params {
 struct run_setup {
     scenario_params scenario;
 
-    // DESIGN.md default rig: baseline 120 mm, 6 mm lenses, 7.6 um pitch (OV7620,
-    // hardware-facts.md section 6) -> f = 789.5 px.
+    // docs/design-brief.md default rig: baseline 120 mm, 6 mm lenses, 7.6 um pitch (OV7620,
+    // docs/hardware-facts.md section 6) -> f = 789.5 px.
     double baseline_mm = 120.0;
     double focal_length_mm = 6.0;
     double pixel_pitch_um = 7.6;
@@ -43,7 +43,7 @@ struct run_setup {
     int window_cols = 0;
     int window_rows = 0;
 
-    // DSK version 1..3 (hardware-facts.md section 2); a clock of 0 means the
+    // DSK version 1..3 (docs/hardware-facts.md section 2); a clock of 0 means the
     // version's own (v1 600/100, v2 720/120, v3 1000/125 MHz).
     int dsk_version = 1;
     double cpu_mhz = 0.0;

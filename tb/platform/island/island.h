@@ -1,4 +1,4 @@
-// The cycle-accurate island (DESIGN.md "How it is clocked"; docs/platform.md,
+// The cycle-accurate island (docs/design-brief.md "How it is clocked"; docs/platform.md,
 // docs/arrangements.md): both sensors, the daughter card's RTL and the EMIF
 // engine, clocked from tick counts (1/18 ns), beside the C6416 model. Two
 // arrangements step the same cores (tb/platform/arrangements/): fast (plain

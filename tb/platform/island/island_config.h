@@ -15,7 +15,7 @@
 
 namespace platform {
 
-// DESIGN.md: one sensor frame = one sync period = 24.5 ms = 441,000,000 ticks.
+// docs/design-brief.md: one sensor frame = one sync period = 24.5 ms = 441,000,000 ticks.
 inline constexpr simtime::ticks period_24_5_ms = 441000000;
 
 // Words in each of the card's FIFOs: rtl_card is card_top with its default

@@ -8,7 +8,7 @@ using f = trace_format;
 
 // Widths: sensor DATA[7:0] (docs/sensor.md); FIFO levels AW + 1 = 18 bits
 // (card_top FIFO_AW = 17, docs/card.md); EA = AEA[21:2], 20 bits, BE 4, ED 32
-// (hardware-facts.md section 3); the card's registers are word indices
+// (docs/hardware-facts.md section 3); the card's registers are word indices
 // EA[7:2] on CE2 (docs/card-registers.md).
 const trace_signal table[trace_pin_count] = {
     {"sensor_L", "PCLK", 1, f::bits},

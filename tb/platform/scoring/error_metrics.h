@@ -1,5 +1,5 @@
 // Scoring the firmware's per-frame output against the scene's ground truth
-// (DESIGN.md, "Default rig"): X and Y against the ball's CENTRE, depth
+// (docs/design-brief.md, "Default rig"): X and Y against the ball's CENTRE, depth
 // against the mean depth of the ball's VISIBLE SURFACE in the right image
 // (stereo sees the surface, ~2/3 r nearer than the centre). The box centre is
 // scored against the centre of the ball's image ellipse (its area centroid).
@@ -51,7 +51,7 @@ struct run_summary {
 run_summary summarize(const std::vector<frame_record>& records, int first_motion_frame);
 
 // Cycles to milliseconds at a CPU clock (the C6416 runs at 600 MHz by
-// default, hardware-facts.md section 1).
+// default, docs/hardware-facts.md section 1).
 inline double cycles_to_ms(uint64_t cycles, double cpu_hz = 600e6) {
     return 1e3 * static_cast<double>(cycles) / cpu_hz;
 }

@@ -15,7 +15,7 @@ scene::scenario one_ball_scenario(const scene::trajectory& path, int frames,
     s.scene.background =
         scene::background_desc::procedural_plane(scene::procedural_texture_params{}, 5.0);
     scene::ball_desc ball;
-    ball.radius_m = radius_m;  // DESIGN.md default ball: 0.05
+    ball.radius_m = radius_m;  // docs/design-brief.md default ball: 0.05
     ball.path = path;
     s.scene.balls.push_back(ball);
     s.frame_count = frames;

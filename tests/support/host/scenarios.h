@@ -16,7 +16,7 @@ scene::scenario static_scenario(int frames = 40);
 // (model/scene/ball_paths.h, also `stereosim run --scenario near / far`): in
 // the plane Z = depth_m around the optical axis, radius 0.15 * depth_m (118 px
 // in the image) at 0.41 * depth_m m/s (8 px per frame at any depth). With
-// depth_m at 1 and 3 it puts the ball at both ends of DESIGN.md's 1-3 m
+// depth_m at 1 and 3 it puts the ball at both ends of docs/design-brief.md's 1-3 m
 // accuracy range.
 scene::scenario circling_scenario(double depth_m, int still_frames = 4, int frames = 40);
 

@@ -1,4 +1,4 @@
-// The fast arrangement of the cycle-accurate island (DESIGN.md "How it is
+// The fast arrangement of the cycle-accurate island (docs/design-brief.md "How it is
 // clocked"; docs/platform.md): both sensor cores, the verilated card
 // (verilator --cc) and the EMIF cycle engine, stepped edge by edge from
 // plain C++ inside ONE SystemC thread.

@@ -1,4 +1,4 @@
-// The literal pin-level arrangement (DESIGN.md "How it is clocked";
+// The literal pin-level arrangement (docs/design-brief.md "How it is clocked";
 // docs/arrangements.md): the same cores as the fast island, each in its
 // SystemC pin wrapper, wired with sc_signals, as a SystemC user would build
 // it first:
