@@ -41,10 +41,7 @@ void print_scenarios() {
 void print_config_keys(bool markdown) {
     const cli::run_setup defaults;
     if (markdown) {
-        std::printf("| key | type / range | default | what |\n|---|---|---|---|\n");
-        for (const cli::config_key& k : cli::config_keys())
-            std::printf("| `%s` | %s | `%s` | %s |\n", k.name.c_str(), k.range_text().c_str(),
-                        k.get(defaults).dump().c_str(), k.doc.c_str());
+        std::fputs(cli::config_table_markdown().c_str(), stdout);
         return;
     }
     for (const cli::config_key& k : cli::config_keys())

@@ -31,9 +31,15 @@ std::string overrun::describe() const {
         std::snprintf(text, sizeof text,
                       "fifo over budget in period %d: a card FIFO overflowed (stage %s)", period,
                       dsp::stage_name(stage));
+    } else if (period >= 0 && value_ms >= limit_ms) {
+        // Busy the whole period: the work runs on into the next one.
+        std::snprintf(text, sizeof text,
+                      "%s over budget in period %d (stage %s): busy the whole %.3f ms period, "
+                      "its work carried into the next",
+                      resource_name(what), period, dsp::stage_name(stage), limit_ms);
     } else if (period >= 0) {
         std::snprintf(text, sizeof text,
-                      "%s over budget in period %d (stage %s): %.3f ms of %.3f ms",
+                      "%s over budget in period %d (stage %s): %.3f ms of the %.3f ms budget",
                       resource_name(what), period, dsp::stage_name(stage), value_ms, limit_ms);
     } else {
         std::snprintf(text, sizeof text, "%s over budget for pair %u (stage %s): %.3f ms > %.3f ms",
@@ -283,6 +289,13 @@ budget_report check_budget(const platform_top& top, const scoreboard_report& sco
     for (int s = 0; s < dsp::stage_count; ++s) {
         if (sums.processed > 0) b.stage_ms_mean[s] = sums.stage_ms[s] / sums.processed;
         b.stage_cycles_total[s] = run.probe.stage_cycles(static_cast<dsp::stage>(s));
+    }
+    for (int s = 0; s < dsp::stage_count; ++s) {
+        const dsp::stage st = static_cast<dsp::stage>(s);
+        const dsp::stereo_method m = top.config().stereo_method;
+        const bool configured = (st != dsp::stage::stereo_sad || m != dsp::stereo_method::edge) &&
+                                (st != dsp::stage::stereo_edge || m != dsp::stereo_method::sad);
+        if (configured && b.stage_cycles_total[s] == 0) b.stages_not_run.push_back(st);
     }
     b.fits = b.judged_periods > 0 && b.overruns.empty();
     return b;

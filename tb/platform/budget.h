@@ -1,4 +1,4 @@
-// The budget checker (DESIGN.md "What the budget means"; docs/budget.md):
+// The budget checker (docs/design-brief.md "What the budget means"; docs/budget.md):
 // per 24.5 ms sync period the CPU's and the EMIF's busy time, the card's
 // FIFO peaks and overflows, the pairs dropped and each stage's modelled
 // time; per pair its capture time on the bus, its processing time on the
@@ -83,6 +83,9 @@ struct budget_report {
     double stage_ms_mean[dsp::stage_count] = {};         // per processed pair
     uint64_t stage_cycles_total[dsp::stage_count] = {};  // whole run, as charged
     double latency_ms_max = 0.0;
+    // The firmware's stages of the configured pipeline (the stereo method's
+    // only) that never ran: the budget says nothing about them.
+    std::vector<dsp::stage> stages_not_run;
 
     // The first overrun of a resource, or nullptr.
     const overrun* first(resource r) const;

@@ -32,6 +32,19 @@ std::set<std::string> doc_keys() {
     return keys;
 }
 
+// docs/config.md's table is what `stereosim config --markdown` prints.
+TEST(cli_config, docs_table_is_the_generated_one) {
+    std::ifstream in(std::string(STEREOSIM_SOURCE_DIR) + "/docs/config.md");
+    std::string docs, line;
+    bool in_table = false;
+    while (std::getline(in, line)) {
+        in_table = in_table || line.rfind("| key | type / range |", 0) == 0;
+        if (in_table && line.rfind("|", 0) != 0) break;
+        if (in_table) docs += line + "\n";
+    }
+    EXPECT_EQ(docs, cli::config_table_markdown());
+}
+
 TEST(cli_config, docs_list_exactly_the_table_keys) {
     std::set<std::string> table;
     for (const cli::config_key& k : cli::config_keys()) {

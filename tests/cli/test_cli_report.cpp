@@ -189,8 +189,15 @@ TEST(cli_report, schema_csv_verdict_and_reproducibility) {
     ASSERT_TRUE(fs::exists(b + "/report.json")) << second.err;
     const json report = json::parse(read_file(a + "/report.json"));
 
-    // ---- exit status = verdict
+    // ---- exit status = verdict; 5 periods are too short for the detector's
+    // three frames, the tracker, the SAD stereo and the 3D stage to run: the
+    // budget judged them not
+    // ("not judged", the frames to ask for)
     EXPECT_EQ(first.status, report["verdict"] == "within_budget" ? 0 : 1);
+    EXPECT_FALSE(report["judged"].get<bool>());
+    EXPECT_EQ(report["not_judged"],
+              "not judged: detect, track, stereo_sad, xyz never ran in 5 periods; ask for --frames 9 "
+              "or more");
     EXPECT_EQ(second.status, first.status);
     // Off a terminal, --quiet: nothing on stderr at all (no SystemC banner).
     EXPECT_EQ(first.err.find("SystemC"), std::string::npos) << first.err;
@@ -302,7 +309,7 @@ TEST(cli_report, schema_csv_verdict_and_reproducibility) {
         }
     }
     EXPECT_EQ(rows, report["frames"].size());
-    // Every stage column present (DESIGN.md stage names).
+    // Every stage column present (docs/design-brief.md stage names).
     for (const char* stage :
          {"capture", "preprocess", "detect", "track", "stereo_sad", "stereo_edge", "xyz"})
         EXPECT_NE(std::find(header.begin(), header.end(), std::string("stage_") + stage + "_ms"),
@@ -345,3 +352,25 @@ TEST(cli_report, schema_csv_verdict_and_reproducibility) {
 }
 
 }  // namespace
+
+// No figure over an empty set: the `near` scenario's ball is nearer than
+// 1 m, so no scored depth is in the paper's 1-3 m range; the maximum there is
+// null ("none in range"), and the one over every scored point is given.
+TEST(cli_report, a_maximum_over_no_frame_is_null) {
+    const std::string dir = testing::TempDir() + "cli_report_near";
+    fs::remove_all(dir);
+    const run_output r = run_binary("run --scenario near --frames 12 --quiet --out " + dir);
+    ASSERT_TRUE(fs::exists(dir + "/report.json")) << r.err;
+    const json accuracy = json::parse(read_file(dir + "/report.json"))["summary"]["accuracy"];
+    ASSERT_GT(accuracy["points_scored"].get<int>(), 0) << accuracy.dump();
+    EXPECT_EQ(accuracy["depth_scored_1_3m"], 0) << accuracy.dump();
+    EXPECT_TRUE(accuracy["depth_err_pct_max"].is_null()) << accuracy.dump();
+    ASSERT_TRUE(accuracy["depth_err_pct_max_all"].is_number()) << accuracy.dump();
+    EXPECT_GT(accuracy["depth_err_pct_max_all"].get<double>(), 0.0);
+    const std::string text = read_file(dir + "/report.txt");
+    EXPECT_NE(text.find("depth at 1-3 m none in range; all scored depths " +
+                        accuracy["points_scored"].dump() + ", max "),
+              std::string::npos)
+        << text.substr(text.find("-- track:"), 300);
+    fs::remove_all(dir);
+}

@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -99,6 +100,20 @@ TEST(FaultCli, AFaultIsReportedWithItsOnsetAndOutcome) {
         "0x%02x, outcome %s\n",
         f["onset_ms"].get<double>(), f["detect_ms"].get<double>(), f["frames_to_detect"].get<int>(),
         causes, f["outcome"].get<std::string>().c_str());
+}
+
+// A run that breaks the fault contract says so in its exit status and in one
+// line on stderr, --quiet or not: here a skew whose recovery was not yet due
+// when the run of 5 frames ended (rule 9, pending).
+TEST(FaultCli, ABrokenContractIsInTheExitStatus) {
+    const fs::path out = scratch("short");
+    const command_result r =
+        run("run --quiet --frames 5 --fault skew:sensor=R,lines=3@frame=4 --out " + out.string());
+    EXPECT_EQ(r.exit_code, 4) << r.output;
+    EXPECT_EQ(r.output.rfind("stereosim: fault contract broken (", 0), 0u) << r.output;
+    EXPECT_NE(r.output.find("rule 9: pending"), std::string::npos) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_FALSE(read_json(out / "report.json")["fault_run"]["contract_ok"].get<bool>());
 }
 
 // A slice of the smoke campaign keeps the contract with the firmware as it

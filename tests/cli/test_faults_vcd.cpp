@@ -94,12 +94,14 @@ void expect_declared(const vcd_file& v, const std::string& initial) {
 }  // namespace
 
 // A skew of sensor R at frame 2 (onset near 2 x 24.5 ms + start-up) inside
-// the window 24.5..25.5 ms, a dropped line of sensor L at frame 3 after it.
+// the window 24.3..25.5 ms, a dropped line of sensor L at frame 3 after it.
 TEST(faults_vcd, onset_in_the_window_is_one_change_at_the_onset_tick) {
     const fault_run r = run_with(
         "--fault skew:sensor=R,lines=3@frame=2 --fault drop-line:sensor=L,line=100@frame=3",
-        "--vcd-from 24.5 --vcd-to 25.5");
-    ASSERT_LE(r.exit_code, 1) << r.output;  // 0 within budget, 1 over: both finished runs
+        "--vcd-from 24.3 --vcd-to 25.5");
+    // 0 within budget, 1 over, 4 the contract broken (these runs are too short
+    // for the recovery to be due): all finished runs.
+    ASSERT_TRUE(r.exit_code <= 1 || r.exit_code == 4) << r.output;
     ASSERT_TRUE(r.report.is_object()) << r.output;
     ASSERT_EQ(r.report["faults"].size(), 2u);
     const nlohmann::json& skew = r.report["faults"][0];
@@ -109,7 +111,7 @@ TEST(faults_vcd, onset_in_the_window_is_one_change_at_the_onset_tick) {
     const double onset_ms = skew["onset_ms"].get<double>();
     const double drop_ms = drop["onset_ms"].get<double>();
     // The window was chosen from the frame timing; say so if that moved.
-    ASSERT_GT(onset_ms, 24.5);
+    ASSERT_GT(onset_ms, 24.3);
     ASSERT_LT(onset_ms, 25.5);
     ASSERT_GE(drop_ms, 25.5);  // outside the window: no change for it
 
@@ -123,25 +125,29 @@ TEST(faults_vcd, onset_in_the_window_is_one_change_at_the_onset_tick) {
     EXPECT_EQ(h[0].value, skew_code);
     EXPECT_EQ(static_cast<int>(faults::fault_type::skew) + 1, 1);
 
-    // The faulted sensor's pins: PCLK rises at the onset (the clock edge the
-    // truth calls the frame's start) and VSYNC rises within that clock.
+    // The marker is where the skew first acts on a pin: the frame of both
+    // sensors was due at the onset, and sensor L's VSYNC rises within that
+    // clock, while R's idle clocks (3 lines = 2,400 pclk) hold its VSYNC back.
     const sensor::sensor_profile profile = sensor::default_profile();
     const ticks pclk = profile.pclk_period().num / profile.pclk_period().den;
-    bool pclk_rises = false;
-    for (const vcd_change& c : v.of("platform.sensor_R.PCLK"))
-        pclk_rises = pclk_rises || (tick_of_fs(c.fs) == onset && c.value == "1");
-    EXPECT_TRUE(pclk_rises) << "sensor_R.PCLK does not rise at the onset";
-    ticks vsync_rise = -1;
-    for (const vcd_change& c : v.of("platform.sensor_R.VSYNC"))
-        if (c.value == "1" && tick_of_fs(c.fs) >= onset) {
-            vsync_rise = tick_of_fs(c.fs);
-            break;
-        }
-    ASSERT_GE(vsync_rise, onset);
-    EXPECT_LT(vsync_rise - onset, pclk);
+    const auto first_rise = [&](const std::string& signal) {
+        for (const vcd_change& c : v.of(signal))
+            if (c.value == "1" && tick_of_fs(c.fs) >= onset) return tick_of_fs(c.fs);
+        return ticks{-1};
+    };
+    const ticks l_vsync = first_rise("platform.sensor_L.VSYNC");
+    const ticks r_vsync = first_rise("platform.sensor_R.VSYNC");
+    ASSERT_GE(l_vsync, onset);
+    EXPECT_LT(l_vsync - onset, pclk);
+    ASSERT_GE(r_vsync, onset);
+    EXPECT_EQ((r_vsync - l_vsync + pclk / 2) / pclk, 3 * profile.line_pclks);
 
-    // The save file shows it through the filter that names the kinds.
+    // The save file shows it through the filter that names the kinds, and
+    // opens 2 us before it.
     const std::string gtkw = read_text(r.dir + "/waves/default.gtkw");
+    EXPECT_NE(gtkw.find("[timestart] " + std::to_string(simtime::to_fs(onset - 2 * 18000)) + "\n"),
+              std::string::npos)
+        << gtkw.substr(0, 400);
     EXPECT_NE(gtkw.find("\n-faults\n@2024\n^"), std::string::npos);
     EXPECT_NE(gtkw.find(" fault_kind.txt\nplatform.faults.kind[7:0]\n"), std::string::npos);
     const std::string kinds = read_text(r.dir + "/waves/fault_kind.txt");
@@ -153,17 +159,18 @@ TEST(faults_vcd, onset_in_the_window_is_one_change_at_the_onset_tick) {
         << "waves/fault_kind.txt differs from what a run writes";
     std::printf(
         "skew onset %.6f ms (report) = tick %lld = %lld fs; VCD marker change at %lld fs to %s "
-        "(1 change); sensor_R VSYNC rises %lld ticks later (PCLK %lld ticks); drop-line onset "
-        "%.6f ms outside the window: no change\n",
+        "(1 change); sensor_L VSYNC %lld ticks after it, sensor_R's %lld (PCLK %lld ticks); "
+        "drop-line onset %.6f ms outside the window: no change\n",
         onset_ms, static_cast<long long>(onset), static_cast<long long>(simtime::to_fs(onset)),
         static_cast<long long>(h[0].fs), h[0].value.c_str(),
-        static_cast<long long>(vsync_rise - onset), static_cast<long long>(pclk), drop_ms);
+        static_cast<long long>(l_vsync - onset), static_cast<long long>(r_vsync - onset),
+        static_cast<long long>(pclk), drop_ms);
 }
 
 // Without --fault the marker is declared and stays 0.
 TEST(faults_vcd, clean_run_marker_stays_zero) {
     const fault_run r = run_with("", "--vcd-from 24.5 --vcd-to 25.5");
-    ASSERT_LE(r.exit_code, 1) << r.output;
+    ASSERT_TRUE(r.exit_code <= 1 || r.exit_code == 4) << r.output;
     ASSERT_TRUE(r.report.is_object()) << r.output;
     EXPECT_TRUE(r.report["faults"].empty());
     expect_declared(r.vcd, "0");
@@ -177,7 +184,7 @@ TEST(faults_vcd, clean_run_marker_stays_zero) {
 TEST(faults_vcd, onset_before_the_window_is_no_change) {
     const fault_run r = run_with("--fault skew:sensor=R,lines=3@frame=2",
                                  "--vcd-from 30 --vcd-to 30.2 --vcd-scope card");
-    ASSERT_LE(r.exit_code, 1) << r.output;
+    ASSERT_TRUE(r.exit_code <= 1 || r.exit_code == 4) << r.output;
     ASSERT_TRUE(r.report.is_object()) << r.output;
     ASSERT_EQ(r.report["faults"].size(), 1u);
     const double onset_ms = r.report["faults"][0]["onset_ms"].get<double>();

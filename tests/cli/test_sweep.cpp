@@ -160,6 +160,32 @@ TEST(Sweep, PointsAreTheirRunsAndTheClosedFormAgrees) {
     EXPECT_FALSE(testsupport::file_exists(dir + "/points"));
 }
 
+// Points too short for the tracker to run judged nothing of it: 6 periods of
+// the default scenario (the tracker starts after period 7) are "not_judged",
+// never a fit in the map, the frontier or the summary; 9 are judged.
+TEST(Sweep, APointThatJudgedNothingIsNoFit) {
+    const std::string dir = testsupport::temp_dir("sweep-short");
+    const auto r = stereosim("sweep --grid dsk.cpu_mhz=300,600 --frames 6 --jobs 2 --out " + dir);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const json sweep = read_json(dir + "/sweep.json");
+    for (const json& p : sweep["points"]) {
+        EXPECT_EQ(p["verdict"], "not_judged") << p.dump();
+        EXPECT_NE(p["not_judged"].get<std::string>().find("track"), std::string::npos);
+        EXPECT_NE(p["not_judged"].get<std::string>().find("ask for --frames 9 or more"),
+                  std::string::npos);
+    }
+    EXPECT_EQ(sweep["summary"]["not_judged"], 2);
+    EXPECT_EQ(sweep["summary"]["within"], 0);
+    // The frontier names no fitting clock; the map marks the cells.
+    const std::string frontier = read_text(dir + "/frontier.csv");
+    EXPECT_EQ(frontier, "smallest_fitting_dsk.cpu_mhz,slack_ms,source,points\n,,,2\n");
+    EXPECT_NE(read_text(dir + "/fitmap.dat").find("\"not judged\""), std::string::npos);
+    EXPECT_NE(r.output.find("2 not judged"), std::string::npos) << r.output;
+    const auto judged = stereosim("sweep --grid dsk.cpu_mhz=600 --frames 9 --out " + dir + "/9");
+    ASSERT_EQ(judged.exit_code, 0) << judged.output;
+    EXPECT_EQ(read_json(dir + "/9/sweep.json")["points"][0]["verdict"], "within");
+}
+
 TEST(Sweep, ShardsMergeIntoTheUnshardedSweep) {
     const std::string dir = testsupport::temp_dir("sweep-shards");
     const std::string grid =

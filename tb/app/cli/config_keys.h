@@ -41,6 +41,10 @@ struct config_key {
 };
 
 const std::vector<config_key>& config_keys();
+
+// The keys as docs/config.md's table (`stereosim config --markdown`): key,
+// type / range, default, what; a `|` inside a cell escaped.
+std::string config_table_markdown();
 const config_key* find_key(const std::string& name);
 
 // The one-line error for an unknown key, with the nearest key name:

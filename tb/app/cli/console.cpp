@@ -77,10 +77,16 @@ void print_summary(std::FILE* out, const json& report, const std::vector<std::st
                  config.at("firmware").at("mode").get<std::string>().c_str(),
                  static_cast<long long>(config.at("run").at("seed").get<int64_t>()));
     const bool fits = report.at("verdict") == "within_budget";
+    const bool judged = report.at("judged").get<bool>();
     std::fprintf(out,
                  "\nVERDICT  %s: %d of %d judged frames over the %.1f ms budget, %zu overruns\n",
-                 fits ? "within budget" : "OVER BUDGET", timing.at("frames_over_budget").get<int>(),
-                 timing.at("judged_periods").get<int>(), budget_ms, report.at("overruns").size());
+                 !fits     ? "OVER BUDGET"
+                 : !judged ? "NOT JUDGED, within budget for the stages that ran"
+                           : "within budget",
+                 timing.at("frames_over_budget").get<int>(), timing.at("judged_periods").get<int>(),
+                 budget_ms, report.at("overruns").size());
+    if (report.at("not_judged").is_string())
+        std::fprintf(out, "         %s\n", report.at("not_judged").get<std::string>().c_str());
     const json& overruns = report.at("overruns");
     for (size_t i = 0; i < std::min<size_t>(overruns.size(), 3); ++i)
         std::fprintf(out, "         %s\n", overruns[i].at("text").get<std::string>().c_str());
@@ -125,12 +131,23 @@ void print_summary(std::FILE* out, const json& report, const std::vector<std::st
         std::fprintf(out, ", RMSE X %.1f Y %.1f Z %.1f mm over %d points\n",
                      number_or(rmse.at("x"), 0), number_or(rmse.at("y"), 0),
                      number_or(rmse.at("z"), 0), accuracy.at("points_scored").get<int>());
+    if (!rmse.at("x").is_null()) {
+        const json& near = accuracy.at("depth_err_pct_max");
+        char in_range[64] = "none in range";
+        if (!near.is_null())
+            std::snprintf(in_range, sizeof in_range, "max %.2f %% over %d", near.get<double>(),
+                          accuracy.at("depth_scored_1_3m").get<int>());
+        std::fprintf(out, "          depth error: max %.2f %% over every scored point; 1-3 m: %s\n",
+                     number_or(accuracy.at("depth_err_pct_max_all"), 0), in_range);
+    }
     std::fprintf(out, "sim       %.1f ms simulated in %.2f s wall (%.4f x real time)\n",
                  1e3 * sim.at("simulated_s").get<double>(), sim.at("wall_s").get<double>(),
                  sim.at("ratio").get<double>());
+    // The extensions' verdicts (faults) belong to the result, before the files.
+    if (!extra_lines.empty()) std::fprintf(out, "\n");
+    for (const std::string& line : extra_lines) std::fprintf(out, "%s\n", line.c_str());
     for (size_t i = 0; i < written.size(); ++i)
         std::fprintf(out, "%s%s\n", i == 0 ? "\nwrote     " : "          ", written[i].c_str());
-    for (const std::string& line : extra_lines) std::fprintf(out, "%s\n", line.c_str());
 }
 
 }  // namespace cli

@@ -80,11 +80,14 @@ run_command::run_command(CLI::App& app, std::vector<std::unique_ptr<run_extensio
                                             "config file (JSON, version 1, docs/config.md); a "
                                             "report.json replays its run");
     scenario->excludes(config);
-    m_run->add_option("--frames", o.frames, "sync periods of 24.5 ms to simulate (run.frames)");
-    m_run->add_option("--seed", o.seed, "seed (run.seed)");
-    m_run->add_option("--dsk", o.dsk, "DSK version v1|v2|v3 (dsk.version)");
-    m_run->add_option("--cpu-mhz", o.cpu_mhz, "CPU clock, MHz (dsk.cpu_mhz)");
-    m_run->add_option("--mode", o.mode, "sequential|overlapped (firmware.mode)");
+    // Kept as text (the config keys check them), shown as what they take.
+    m_run->add_option("--frames", o.frames, "sync periods of 24.5 ms to simulate (run.frames)")
+        ->type_name("INT");
+    m_run->add_option("--seed", o.seed, "seed (run.seed)")->type_name("INT");
+    m_run->add_option("--dsk", o.dsk, "DSK version v1|v2|v3 (dsk.version)")->type_name("v1|v2|v3");
+    m_run->add_option("--cpu-mhz", o.cpu_mhz, "CPU clock, MHz (dsk.cpu_mhz)")->type_name("FLOAT");
+    m_run->add_option("--mode", o.mode, "sequential|overlapped (firmware.mode)")
+        ->type_name("sequential|overlapped");
     m_run->add_option("--replay", o.replay, "replay manifest (scenario.replay)");
     m_run->add_option("--set", o.sets,
                       "key=value for any config key (repeatable; stereosim config --list)");
@@ -189,6 +192,13 @@ int run_command::run_and_report(platform::platform_top& top, const run_setup& se
         for (auto& e : m_extensions)
             for (const std::string& text : e->summary_lines(result)) extra.push_back(text);
         print_summary(stdout, report, files.committed(), extra);
+    }
+    std::string broken;
+    for (auto& e : m_extensions)
+        if (broken.empty()) broken = e->broken_verdict(result);
+    if (!broken.empty()) {
+        std::fprintf(stderr, "stereosim: %s\n", broken.c_str());
+        return exit_contract_broken;
     }
     return budget.fits ? exit_within_budget : exit_over_budget;
 }

@@ -22,7 +22,8 @@ enum exit_code : int {
     exit_within_budget = 0,
     exit_over_budget = 1,
     exit_bad_input = 2,
-    exit_run_failed = 3
+    exit_run_failed = 3,
+    exit_contract_broken = 4  // a run with faults broke the fault contract: a result
 };
 
 struct run_options {

@@ -22,6 +22,8 @@
 //                                  leaves nothing half written
 //   7. summary_lines(run)          extra lines for the end summary (e.g. the
 //                                  command that opens the waveform)
+//   8. broken_verdict(run)         a verdict of the extension the run broke:
+//                                  exit status 4 and one line on stderr
 //
 // Adding one: a class deriving from run_extension in your own file, and one
 // line in app::make_run_extensions() (tb/app/run_extensions.cpp), which the
@@ -80,6 +82,10 @@ class run_extension {
         return true;
     }
     virtual std::vector<std::string> summary_lines(const run_result& /*run*/) { return {}; }
+    // A verdict of this extension the run broke (the fault contract), one
+    // line; empty if none. The run then exits with exit_contract_broken and
+    // says so on stderr, --quiet or not.
+    virtual std::string broken_verdict(const run_result& /*run*/) { return ""; }
 };
 
 }  // namespace cli

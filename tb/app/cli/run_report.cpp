@@ -240,21 +240,27 @@ json timing_summary_json(const platform::budget_report& budget, size_t frames_ov
 json accuracy_summary_json(const platform::scoreboard_report& score) {
     const platform::run_summary& s = score.summary;
     const bool scored = s.point_scored_frames > 0;
-    return {{"frames_tracked", s.tracked_frames},
-            {"first_motion_frame",
-             score.first_motion_frame >= 0 ? json(score.first_motion_frame) : json(nullptr)},
-            {"detection_frame",
-             score.detection_frame >= 0 ? json(score.detection_frame) : json(nullptr)},
-            {"detect_latency_frames", score.first_motion_frame >= 0 && score.detection_frame >= 0
-                                          ? json(score.detection_frame - score.first_motion_frame)
-                                          : json(nullptr)},
-            {"points_scored", s.point_scored_frames},
-            {"rmse_mm",
-             {{"x", scored ? json(round6(s.rmse_x_mm)) : json(nullptr)},
-              {"y", scored ? json(round6(s.rmse_y_mm)) : json(nullptr)},
-              {"z", scored ? json(round6(s.rmse_z_mm)) : json(nullptr)}}},
-            {"box_err_px_max", round6(score.max_box_err_px)},
-            {"depth_err_pct_max", round6(score.max_depth_err_pct)}};
+    return {
+        {"frames_tracked", s.tracked_frames},
+        {"first_motion_frame",
+         score.first_motion_frame >= 0 ? json(score.first_motion_frame) : json(nullptr)},
+        {"detection_frame",
+         score.detection_frame >= 0 ? json(score.detection_frame) : json(nullptr)},
+        {"detect_latency_frames", score.first_motion_frame >= 0 && score.detection_frame >= 0
+                                      ? json(score.detection_frame - score.first_motion_frame)
+                                      : json(nullptr)},
+        {"points_scored", s.point_scored_frames},
+        {"rmse_mm",
+         {{"x", scored ? json(round6(s.rmse_x_mm)) : json(nullptr)},
+          {"y", scored ? json(round6(s.rmse_y_mm)) : json(nullptr)},
+          {"z", scored ? json(round6(s.rmse_z_mm)) : json(nullptr)}}},
+        // A maximum over no frame is null, not 0.
+        {"box_err_px_max",
+         s.box_scored_frames > 0 ? json(round6(score.max_box_err_px)) : json(nullptr)},
+        {"depth_scored_1_3m", score.depth_scored_1_3m},
+        {"depth_err_pct_max",
+         score.depth_scored_1_3m > 0 ? json(round6(score.max_depth_err_pct)) : json(nullptr)},
+        {"depth_err_pct_max_all", scored ? json(round6(s.max_abs_depth_err_pct)) : json(nullptr)}};
 }
 
 json summary_json(const platform::platform_top& top, const platform::scoreboard_report& score,
@@ -285,6 +291,23 @@ std::vector<std::string> stage_names() {
     return names;
 }
 
+// Why a run judged only part of the budget, and how long a run would judge
+// all of it: the detector needs three frames with motion, tracking starts on
+// the pair after the detection, and a first start out of step (about 44 % of
+// seeds) costs a period: the first motion frame + 6.
+std::string not_judged_text(const platform::budget_report& budget,
+                            const platform::scoreboard_report& score, int frames) {
+    std::string stages;
+    for (dsp::stage s : budget.stages_not_run)
+        stages += (stages.empty() ? "" : ", ") + std::string(dsp::stage_name(s));
+    std::string text =
+        "not judged: " + stages + " never ran in " + std::to_string(frames) + " periods; ";
+    if (score.first_motion_frame < 0)
+        return text + "the scene has no motion in them, nothing for the tracker to follow";
+    const int need = std::max(frames + 1, score.first_motion_frame + 6);
+    return text + "ask for --frames " + std::to_string(need) + " or more";
+}
+
 json build_report(const run_setup& setup, const platform::platform_top& top,
                   const platform::scoreboard_report& score, const platform::budget_report& budget) {
     std::set<int> over;
@@ -295,6 +318,11 @@ json build_report(const run_setup& setup, const platform::platform_top& top,
     report["tool"] = {{"name", "stereosim"}, {"cost_model", dsp::cost::model().id()}};
     report["config"] = config_json(setup);
     report["verdict"] = budget.fits ? "within_budget" : "over_budget";
+    // A run too short for a stage to run judged only part of the budget.
+    report["judged"] = budget.stages_not_run.empty();
+    report["not_judged"] = budget.stages_not_run.empty()
+                               ? json(nullptr)
+                               : json(not_judged_text(budget, score, top.config().frames));
     report["overruns"] = overruns;
     report["summary"] = summary_json(top, score, budget, over.size());
 

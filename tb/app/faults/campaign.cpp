@@ -2,7 +2,9 @@
 
 #include <sys/stat.h>
 #include <sys/wait.h>
+
 #include <unistd.h>
+#include <csignal>
 
 #include <algorithm>
 #include <chrono>
@@ -16,6 +18,7 @@
 #include <sstream>
 
 #include "tb/app/cli/child_run.h"
+#include "tb/app/cli/interrupt.h"
 #include "tb/app/faults/campaign_files.h"
 #include "tb/app/faults/child_exit.h"
 #include "tb/platform/platform_config.h"
@@ -80,6 +83,14 @@ void collect(campaign_row& row, const std::string& dir, int status) {
             return;
         }
         row.ran = true;
+        if (report.value("not_judged", json()).is_string()) {
+            const std::string text = report["not_judged"].get<std::string>();
+            const std::string prefix = "not judged: ";
+            row.not_judged = text.rfind(prefix, 0) == 0 ? text.substr(prefix.size()) : text;
+        }
+        for (const verdict& v : row.result.verdicts)
+            for (const std::string& why : v.not_judged)
+                row.not_judged += (row.not_judged.empty() ? "" : "; ") + why;
     } catch (const std::exception& e) {
         row.error = std::string("unreadable report.json: ") + e.what();
     }
@@ -140,6 +151,7 @@ json row_json(const campaign_row& r) {
     j["violations"] = violations;
     j["mode"] = run.mode;
     j["dsk"] = run.dsk_version;
+    j["not_judged"] = r.not_judged.empty() ? json(nullptr) : json(r.not_judged);
     json faults = json::array();
     for (size_t i = 0; i < r.result.specs.size() && i < run.faults.size(); ++i) {
         const fault_spec& s = r.result.specs[i];
@@ -234,8 +246,10 @@ pid_t start_group(const campaign_options& o, const std::vector<campaign_run>& pl
                            snapshot_trigger_of(specs_of(plan[i]), period)});
     std::fflush(nullptr);
     const pid_t pid = fork();
-    if (pid == 0)
+    if (pid == 0) {
+        cli::untie_forked_child();
         exit_child(o.run_group(members, o.binary, run_dir(u.runs[0]) + "/leader.txt", tokens));
+    }
     if (pid < 0) *error = std::string("cannot fork a snapshot group: ") + std::strerror(errno);
     return pid;
 }
@@ -255,8 +269,20 @@ int member_status(const std::string& dir, int leader_status, double* wall, doubl
 // processes computing at a time (job_tokens.h: a spawned run holds a token
 // until it is reaped, a snapshot group's leader until its fault-free run
 // ends, each of its forked runs while it runs); fills rows[i] as run i ends.
+// Stops the runs under way (their children: a leader's forked runs end with
+// it, cli::untie_forked_child) and reaps them.
+void stop_running(const std::map<pid_t, size_t>& running) {
+    for (const auto& [pid, unit_index] : running) kill(pid, SIGTERM);
+    for (const auto& [pid, unit_index] : running) {
+        int status = 0;
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+        }
+    }
+}
+
 void run_plan(const campaign_options& o, const std::vector<campaign_run>& plan,
-              std::vector<campaign_row>& rows, std::FILE* log) {
+              std::vector<campaign_row>& rows, std::FILE* log,
+              const cli::interrupt_catcher& interrupt) {
     std::error_code ec;
     const std::vector<unit> units = units_of(o, plan);
     job_tokens tokens = job_tokens::make(o.jobs);
@@ -268,6 +294,7 @@ void run_plan(const campaign_options& o, const std::vector<campaign_run>& plan,
     size_t next = 0, done = 0;
     const auto finish = [&](size_t i, int status, double wall) {
         campaign_row& row = rows[i];
+        row.finished = true;
         row.wall_s = wall;
         collect(row, run_dir(i), status);
         if (!o.keep_runs && row.ran) fs::remove_all(run_dir(i), ec);
@@ -275,10 +302,13 @@ void run_plan(const campaign_options& o, const std::vector<campaign_run>& plan,
         if (log) log_row(log, done, plan.size(), row);
     };
     if (!tokens.valid()) {
-        for (size_t i = 0; i < plan.size(); ++i) rows[i].error = "cannot create the job pipe";
+        for (size_t i = 0; i < plan.size(); ++i) {
+            rows[i].error = "cannot create the job pipe";
+            rows[i].finished = true;
+        }
         return;
     }
-    while (done < plan.size()) {
+    while (done < plan.size() && !interrupt.caught()) {
         while (next < units.size() && tokens.try_take()) {
             const unit& u = units[next];
             for (size_t i : u.runs) {
@@ -292,7 +322,10 @@ void run_plan(const campaign_options& o, const std::vector<campaign_run>& plan,
                                   : spawn_run(o, plan[u.runs[0]], run_dir(u.runs[0]), &spawn_error);
             if (pid < 0) {
                 tokens.put();
-                for (size_t i : u.runs) rows[i].error = spawn_error;
+                for (size_t i : u.runs) {
+                    rows[i].error = spawn_error;
+                    rows[i].finished = true;
+                }
                 done += u.runs.size();
             } else {
                 running[pid] = next;
@@ -334,17 +367,67 @@ void run_plan(const campaign_options& o, const std::vector<campaign_run>& plan,
             finish(i, member, member_wall);
         }
     }
+    if (interrupt.caught()) {
+        stop_running(running);
+        // A stopped group's runs that had finished wrote their status.
+        for (const auto& [pid, unit_index] : running) {
+            if (!units[unit_index].group) continue;
+            for (size_t i : units[unit_index].runs) {
+                if (!fs::exists(run_dir(i) + "/status")) continue;
+                double member_wall = 0;
+                const int member = member_status(run_dir(i), 0, &member_wall, &rows[i].snapshot_ms);
+                finish(i, member, member_wall);
+            }
+        }
+    }
     tokens.close_fds();
 }
 
 }  // namespace
 
+namespace {
+
+// The rows of out_dir's campaign.json that ran, by index, if it is the same
+// campaign (name, seeds, shard, match); false and *error if not.
+bool rows_to_keep(const campaign_options& o, std::map<int, json>* kept, std::string* error) {
+    const std::string path = o.out_dir + "/campaign.json";
+    std::ifstream in(path);
+    if (!in) {
+        *error = "--resume: " + path + " not found (the folder of an interrupted campaign)";
+        return false;
+    }
+    json previous;
+    try {
+        previous = json::parse(in);
+    } catch (const std::exception& e) {
+        *error = "--resume: " + path + " is unreadable: " + e.what();
+        return false;
+    }
+    const std::string shard = std::to_string(o.shard) + "/" + std::to_string(o.shards);
+    if (previous.value("campaign", std::string()) != o.name ||
+        previous.value("seeds", -1) != o.seeds || previous.value("shard", std::string()) != shard ||
+        previous.value("match", std::string()) != o.match) {
+        *error = "--resume: " + path + " is not this campaign (campaign, seeds, shard or match " +
+                 "differ)";
+        return false;
+    }
+    for (const json& row : previous.value("rows", json::array()))
+        if (row.value("ran", false)) (*kept)[row.at("index").get<int>()] = row;
+    return true;
+}
+
+}  // namespace
+
 std::vector<campaign_row> run_campaign(const campaign_options& given, std::FILE* log,
-                                       std::string* error, json* document) {
+                                       std::string* error, json* document, int* interrupted) {
     campaign_options o = given;
     if (o.binary.empty()) o.binary = this_program();
     if (o.out_dir.empty()) o.out_dir = "campaign-" + o.name;
-    const std::vector<campaign_run> plan = selected_runs(o);
+    std::map<int, json> kept;  // rows of an interrupted run that ran
+    if (o.resume && !rows_to_keep(o, &kept, error)) return {};
+    std::vector<campaign_run> plan;
+    for (const campaign_run& r : selected_runs(o))
+        if (!kept.count(r.index)) plan.push_back(r);
     std::vector<campaign_row> rows(plan.size());
     std::error_code ec;
     fs::create_directories(o.out_dir + "/runs", ec);
@@ -352,16 +435,24 @@ std::vector<campaign_row> run_campaign(const campaign_options& given, std::FILE*
         *error = "cannot create " + o.out_dir + "/runs: " + ec.message();
         return {};
     }
+    const cli::interrupt_catcher interrupt;
     const auto t0 = std::chrono::steady_clock::now();
-    run_plan(o, plan, rows, log);
+    run_plan(o, plan, rows, log, interrupt);
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    for (const campaign_row& r : rows)
+        if (r.finished) kept[r.run.index] = row_json(r);
     json all = json::array();
-    for (const campaign_row& r : rows) all.push_back(row_json(r));
+    for (auto& [index, row] : kept) all.push_back(std::move(row));
     json doc = campaign_document(o.name, std::to_string(o.shard) + "/" + std::to_string(o.shards),
                                  o.seeds, o.jobs, o.snapshots, wall, std::move(all));
+    doc["match"] = o.match;
+    const int signo = interrupt.caught();
+    doc["complete"] = signo == 0;
+    if (signo != 0) doc["interrupted_by"] = cli::signal_name(signo);
     if (!write_campaign_files(o.out_dir, doc, error)) return {};
     if (document) *document = std::move(doc);
+    if (interrupted) *interrupted = signo;
     return rows;
 }
 

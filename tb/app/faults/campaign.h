@@ -54,6 +54,9 @@ struct campaign_options {
     // run extensions); without it, or with another binary, every run is
     // spawned.
     bool snapshots = true;
+    // Keep the rows that ran in out_dir's campaign.json (an interrupted
+    // campaign's) and run only the others.
+    bool resume = false;
     std::function<int(const std::vector<snapshot_member>& members, const std::string& binary,
                       const std::string& leader_log, const job_tokens& tokens)>
         run_group;
@@ -61,19 +64,26 @@ struct campaign_options {
 
 struct campaign_row {
     campaign_run run;
-    bool ran = false;  // the child wrote a report.json we could read
+    bool finished = false;  // its child ended (false: not started, or stopped by an interrupt)
+    bool ran = false;       // the child wrote a report.json we could read
     int exit_code = -1;
     double wall_s = 0;
     double snapshot_ms = -1;  // forked from a snapshot at this simulated time; -1: from the start
     std::string error;        // why it did not run
+    // What the run was too short to judge: its report's not_judged (a stage
+    // that never ran) and the contract's rules, "; "-joined; empty: all.
+    std::string not_judged;
     fault_run_result result;
     bool ok() const { return ran && result.contract_ok(); }
 };
 
 // Runs the campaign; returns the rows (in plan order) and writes the files
 // (campaign_files.h), *document = campaign.json's content if given.
-// Progress lines go to `log` (may be null).
+// Progress lines go to `log` (may be null). SIGINT or SIGTERM meanwhile
+// stops the runs under way and writes the rows that finished, the document
+// marked incomplete; *interrupted = the signal (else 0).
 std::vector<campaign_row> run_campaign(const campaign_options& options, std::FILE* log,
-                                       std::string* error, nlohmann::json* document = nullptr);
+                                       std::string* error, nlohmann::json* document = nullptr,
+                                       int* interrupted = nullptr);
 
 }  // namespace faults

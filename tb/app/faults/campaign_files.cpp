@@ -121,6 +121,8 @@ std::string table_row(const json& r) {
     std::string out = line;
     for (const json& why : r.at("violations"))
         out += "       violation: " + why.get<std::string>() + "\n";
+    if (r.value("not_judged", json()).is_string())
+        out += "       not judged: " + r["not_judged"].get<std::string>() + "\n";
     return out;
 }
 
@@ -185,6 +187,14 @@ std::string campaign_table(const json& campaign) {
            "firmware's overrun policy, unsy = unsynced pairs used, miss = out-of-step pairs "
            "forwarded, fals = false "
            "alarms\n";
+    if (!campaign.value("complete", true)) {
+        std::snprintf(line, sizeof line,
+                      "INCOMPLETE: interrupted by %s; the %zu runs above finished, the others "
+                      "did not run (`stereosim faults ... --resume DIR` runs only them)\n",
+                      campaign.value("interrupted_by", std::string("a signal")).c_str(),
+                      campaign.at("rows").size());
+        out << line;
+    }
     out << coverage_text(campaign);
     return out.str();
 }
@@ -236,6 +246,10 @@ bool merge_campaign_shards(const std::vector<json>& shards, json* merged, std::s
     for (auto& [index, row] : rows) all.push_back(std::move(row));
     *merged = campaign_document(first.at("campaign"), "1/1", first.at("seeds"), first.at("jobs"),
                                 first.at("snapshots"), wall, std::move(all));
+    bool complete = true;
+    for (const json& s : shards) complete = complete && s.value("complete", true);
+    (*merged)["match"] = first.value("match", std::string());
+    (*merged)["complete"] = complete;
     return true;
 }
 

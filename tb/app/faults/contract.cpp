@@ -372,6 +372,16 @@ verdict check_clean(const run_observation& run) {
         v.violations.push_back("rule 4: hard_error on a clean run");
     }
     // A run of a few periods with nothing processed is a dead system, not a clean one.
+    if (run.frames < 4)
+        v.not_judged.push_back(
+            "rule 5: processing is required from 4 frames on: ask for "
+            "--frames 4 or more");
+    else if (run.frames < clean_frames_to_track)
+        v.not_judged.push_back("rule 5: 3D points are required from " +
+                               std::to_string(clean_frames_to_track) +
+                               " frames on: ask for "
+                               "--frames " +
+                               std::to_string(clean_frames_to_track) + " or more");
     if (run.frames >= 4 && run.pairs_processed == 0) {
         v.ok = false;
         v.violations.push_back("rule 5: no pair processed in a clean run of " +

@@ -91,6 +91,9 @@ struct verdict {
     std::string expected_text;                  // allowed outcomes joined by '|'
     bool ok = true;
     std::vector<std::string> violations;  // one line each
+    // Rules the run was too short to judge, one line each with the length
+    // that would (a clean run: rule 5's processing and 3D points).
+    std::vector<std::string> not_judged;
 };
 
 // Counts the faults whose only allowed outcome is hard_error into

@@ -2,13 +2,33 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <string>
+#include <utility>
 
+#include "dsp/card_regs.h"
 #include "tb/app/faults/fault_report.h"
 #include "tb/app/faults/fault_spec.h"
 
 namespace faults {
 
 namespace {
+
+// VERDICT's cause bits by their names in docs/card-registers.md.
+std::string cause_names(uint32_t causes) {
+    using namespace dsp::card_regs;
+    const std::pair<uint32_t, const char*> names[] = {{verdict_l_window_mask, "L_WINDOW"},
+                                                      {verdict_r_window_mask, "R_WINDOW"},
+                                                      {verdict_l_dark_mask, "L_DARK"},
+                                                      {verdict_r_dark_mask, "R_DARK"},
+                                                      {verdict_l_vsync_mask, "L_VSYNC"},
+                                                      {verdict_r_vsync_mask, "R_VSYNC"},
+                                                      {verdict_start_timeout_mask, "START_TIMEOUT"},
+                                                      {verdict_overflow_mask, "OVERFLOW"}};
+    std::string out;
+    for (const auto& [mask, name] : names)
+        if (causes & mask) out += (out.empty() ? "" : "|") + std::string(name);
+    return out;
+}
 
 class fault_extension final : public cli::run_extension {
   public:
@@ -61,11 +81,14 @@ class fault_extension final : public cli::run_extension {
             const fault_observation& f = m_result.run.faults[i];
             const verdict& v = m_result.verdicts[i];
             char line[512];
+            const std::string detected = !f.detected ? std::string("no")
+                                         : f.causes != 0
+                                             ? f.detected_by + " (" + cause_names(f.causes) + ")"
+                                             : f.detected_by;
             std::snprintf(line, sizeof line,
                           "fault %s: %s (contract %s) onset %.3f ms, detected %s, %s",
                           f.spec.c_str(), outcome_name(v.actual), v.expected_text.c_str(),
-                          f.onset_ms, f.detected ? f.detected_by.c_str() : "no",
-                          v.ok ? "contract kept" : "CONTRACT BROKEN");
+                          f.onset_ms, detected.c_str(), v.ok ? "contract kept" : "CONTRACT BROKEN");
             lines.push_back(line);
             for (const std::string& why : v.violations) lines.push_back("  violation: " + why);
         }
@@ -73,6 +96,19 @@ class fault_extension final : public cli::run_extension {
             for (const std::string& why : m_result.verdicts[0].violations)
                 lines.push_back("violation: " + why);
         return lines;
+    }
+
+    std::string broken_verdict(const cli::run_result& /*run*/) override {
+        if (m_specs.empty() || m_result.contract_ok()) return "";
+        int lines = 0;
+        std::string first;
+        for (const verdict& v : m_result.verdicts)
+            for (const std::string& why : v.violations) {
+                if (first.empty()) first = why;
+                ++lines;
+            }
+        return "fault contract broken (" + std::to_string(lines) + " violation(s), " +
+               "report.json fault_run.violations): " + first;
     }
 
   private:

@@ -80,7 +80,8 @@ std::vector<kind_info> make_kinds() {
     k.push_back({fault_type::emif_wait,
                  "emif-wait",
                  "emif::ardy_fault",
-                 "the card holds ARDY low `cycles` extra ECLK on every access to its CE space",
+                 "the board glue between the card's ARDY and the DSP's holds the DSP's ARDY low "
+                 "`cycles` extra ECLK on every access to the CE space",
                  {{"cycles", nullptr, 1, 1000, false, nullptr, "extra wait states per access"},
                   {"ce", nullptr, 2, 3, false, "3", "CE space: 2 registers, 3 pixel ports"}}});
     k.push_back({fault_type::cpu_slow,

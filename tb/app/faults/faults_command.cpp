@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "tb/app/cli/interrupt.h"
 #include "tb/app/faults/campaign.h"
 #include "tb/app/faults/campaign_files.h"
 #include "tb/app/faults/fault_spec.h"
@@ -28,6 +29,9 @@ faults_command::faults_command(CLI::App& app, extensions_factory make_extensions
     m_app->add_option("--jobs", m_jobs, "runs in parallel (default 2)");
     m_app->add_option("--shard", m_shard, "K/M: run the K-th of M deterministic slices");
     m_app->add_option("--out", m_out, "folder for campaign.json/.csv/.txt (default campaign-NAME)");
+    m_app->add_option("--resume", m_resume,
+                      "DIR of an interrupted campaign: keep its finished runs, run the others "
+                      "(the same --campaign, --seeds, --shard and --match)");
     m_app->add_flag("--keep-runs", m_keep_runs, "keep each run's report.json under OUT/runs");
     m_app->add_option("--binary", m_binary, "the stereosim to run (default: this program)");
     m_app->add_flag("--no-snapshots", m_no_snapshots,
@@ -85,6 +89,12 @@ int faults_command::execute() {
     o.shard = k;
     o.shards = m;
     o.out_dir = m_out;
+    if (!m_resume.empty()) {
+        if (!m_out.empty() && m_out != m_resume)
+            return bad_input("--resume DIR writes into DIR: no other --out");
+        o.out_dir = m_resume;
+        o.resume = true;
+    }
     o.keep_runs = m_keep_runs;
     o.binary = m_binary;
     o.match = m_match;
@@ -99,13 +109,22 @@ int faults_command::execute() {
     if (!cli::check_slurm_options(m_slurm, &error)) return bad_input(error);
     if (m_slurm.emit) return emit_slurm(o);
     nlohmann::json document;
-    const std::vector<campaign_row> rows = run_campaign(o, stderr, &error, &document);
+    int interrupted = 0;
+    run_campaign(o, stderr, &error, &document, &interrupted);
     if (!error.empty()) return bad_input(error);
     if (o.out_dir.empty()) o.out_dir = "campaign-" + o.name;
     std::fputs(campaign_table(document).c_str(), stdout);
     std::printf("written: %s/campaign.json, campaign.csv, campaign.txt\n", o.out_dir.c_str());
-    for (const campaign_row& r : rows)
-        if (!r.ok()) return 1;
+    if (interrupted) {
+        std::fprintf(stderr,
+                     "stereosim: faults: interrupted by %s: %zu runs finished, written to "
+                     "%s/campaign.json (incomplete); --resume %s runs the others\n",
+                     cli::signal_name(interrupted).c_str(), document.at("rows").size(),
+                     o.out_dir.c_str(), o.out_dir.c_str());
+        return 128 + interrupted;
+    }
+    for (const nlohmann::json& r : document.at("rows"))
+        if (!r.value("contract_ok", false)) return 1;
     return 0;
 }
 

@@ -38,6 +38,7 @@ class faults_command {
     int m_jobs = 2;
     std::string m_shard = "1/1";
     std::string m_out;
+    std::string m_resume;  // --resume DIR
     std::string m_binary;
     std::string m_match;
     cli::slurm_options m_slurm;

@@ -65,8 +65,17 @@ bool find_onset(const platform::platform_top& top, const fault_spec& s, simtime:
         const sensor::frame_truth& t = truth[i];
         if (!(t.faults & bit)) continue;
         if (s.when.kind == trigger_spec::by::frame && t.index < s.when.frame) continue;
-        // A pixel fault by time acts from its trigger inside the frame.
+        // Where it first acts on the sensor's pins: a skew's idle clocks come
+        // before its frame, a dropped line is the readout line's missing
+        // HREF, a pixel fault by time acts from its trigger inside the frame.
         *tick = std::max(t.start_tick, trigger);
+        const sensor::sensor_profile& p = top.config().profile;
+        const simtime::rational_ticks pclk = p.mclk_period;
+        if (s.type == fault_type::skew) *tick -= t.skew_before_pclks * pclk.num / pclk.den;
+        if (s.type == fault_type::drop_line)
+            *tick += (static_cast<int64_t>(std::max(s.line, p.first_row_line)) * p.line_pclks +
+                      p.href_start) *
+                     pclk.num / pclk.den;
         *frame = static_cast<int64_t>(i);
         return *tick < end;
     }

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <numeric>
 
+#include "tb/app/cli/interrupt.h"
 #include "tb/app/cli/run_command.h"
 #include "tb/app/faults/child_exit.h"
 #include "tb/app/faults/job_tokens.h"
@@ -92,6 +93,7 @@ pid_t fork_member(const snapshot_member& m, platform::platform_top* top, const s
     std::fflush(nullptr);
     const pid_t pid = fork();
     if (pid != 0) return pid;
+    cli::untie_forked_child();
     tokens.take();
     redirect_output(m.dir + "/log.txt");
     if (top) {

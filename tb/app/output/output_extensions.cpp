@@ -129,21 +129,32 @@ class waveform_output final : public cli::run_extension {
         if (!markers.empty() &&
             !add_fault_markers(m_waves->path(), m_format, m_window, markers, &added, error))
             return false;
+        // The staged file is renamed into --out DIR after every writer ran.
+        m_bytes = file_size(m_waves->path());
         m_gtkw = run.out_dir + "/waves/" + m_name + ".gtkw";
-        // The view opens on the window's first 10 us (or the whole window).
-        const ticks span = std::min<ticks>(m_window.to - m_window.from, 10 * 18000);
+        // The view opens on 10 us of the window (or the whole window): from 2 us
+        // before the first fault marker in it, else from its start.
+        ticks first = m_window.to;
+        for (const fault_marker& m : markers)
+            if (m.tick >= m_window.from && m.tick < first) first = m.tick;
+        const ticks view =
+            first < m_window.to ? std::max<ticks>(m_window.from, first - 2 * 18000) : m_window.from;
+        const ticks span = std::min<ticks>(m_window.to - view, 10 * 18000);
         return write_gtkw(
             [&files](const std::string& f) { return files.staged_path("waves/" + f); }, m_name,
-            file_name(), m_waves->signals(), m_window.from, span, error);
+            file_name(), m_waves->signals(), view, span, error);
     }
 
     std::vector<std::string> summary_lines(const cli::run_result& run) override {
         if (!m_waves || run.out_dir.empty()) return {};
-        char line[160];
-        std::snprintf(line, sizeof line, "waveform (%s): %.3f..%.3f ms, %.1f MB",
+        char line[160], size[32];
+        if (m_bytes >= 1000000)
+            std::snprintf(size, sizeof size, "%.1f MB", static_cast<double>(m_bytes) / 1e6);
+        else
+            std::snprintf(size, sizeof size, "%.0f kB", static_cast<double>(m_bytes) / 1e3);
+        std::snprintf(line, sizeof line, "waveform (%s): %.3f..%.3f ms, %s",
                       waves_extension(m_format), static_cast<double>(m_window.from) / 18e6,
-                      static_cast<double>(m_window.to) / 18e6,
-                      static_cast<double>(file_size(m_waves->path())) / 1e6);
+                      static_cast<double>(m_window.to) / 18e6, size);
         return {line, "open it with: gtkwave " + m_gtkw};
     }
 
@@ -210,6 +221,7 @@ class waveform_output final : public cli::run_extension {
     platform::tick_window m_window;
     std::string m_name;
     std::string m_gtkw;
+    uint64_t m_bytes = 0;  // the waveform's size as written
     std::unique_ptr<waves_writer> m_waves;
 };
 

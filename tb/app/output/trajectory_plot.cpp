@@ -64,10 +64,18 @@ std::string trajectory_gnuplot_script(bool with_truth, bool with_estimates) {
                    ", data using (t(0)):(column('true_z_visible_mm')) with lines lw 2 dt 2 lc "
                    "rgb tru title 'true, visible surface'",
                " data using (t(0)):(column('est_z_mm'))" + est_style);
-    s += "set xlabel 'X (mm)'\n"
-         "set ylabel 'Z (mm)'\n"
-         "set zlabel 'Y (mm)'\n"
-         "set view 60, 30\n";
+    // The 3D panel: the whole box drawn, its floor at the lowest point (the
+    // default floats it below), Y pointing down as in the camera frame.
+    s += "set xlabel 'X (mm)' offset 0,-1\n"
+         "set ylabel 'Z (mm)' offset 1,0\n"
+         "set zlabel 'Y (mm), down' rotate parallel\n"
+         "set xyplane relative 0\n"
+         "set border 4095\n"
+         "set zrange [*:*] reverse\n"
+         "set format x '%.0f'\n"
+         "set format y '%.0f'\n"
+         "set format z '%.0f'\n"
+         "set view 62, 32\n";
     s += panel(
         "splot",
         "data using (column('true_x_mm')):(column('true_z_mm')):(column('true_y_mm'))" + tru_style,

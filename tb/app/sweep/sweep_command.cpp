@@ -4,7 +4,9 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 
+#include "tb/app/cli/interrupt.h"
 #include "tb/app/sweep/sweep_files.h"
 #include "tb/app/sweep/sweep_plan.h"
 #include "tb/app/sweep/sweep_runner.h"
@@ -40,10 +42,10 @@ std::vector<std::string> task_command(const sweep_options& o) {
 }
 
 void print_summary(const json& summary, const std::string& dir) {
-    std::printf("sweep: %zu points, %d co-simulated: %d within, %d over, %d failed",
+    std::printf("sweep: %zu points, %d co-simulated: %d within, %d over, %d not judged, %d failed",
                 summary["points"].get<size_t>(), summary["simulated"].get<int>(),
                 summary["within"].get<int>(), summary["over"].get<int>(),
-                summary["failed"].get<int>());
+                summary.value("not_judged", 0), summary["failed"].get<int>());
     const json& cf = summary["closed_form_only"];
     if (cf["within"].get<int>() + cf["over"].get<int>() > 0)
         std::printf("; closed form only: %d within, %d over", cf["within"].get<int>(),
@@ -52,8 +54,42 @@ void print_summary(const json& summary, const std::string& dir) {
                 summary["closed_form_agrees"].get<int>(), summary["closed_form_disagrees"].size(),
                 summary["closed_form_disagrees"].empty() ? "" : " (points");
     for (const json& i : summary["closed_form_disagrees"]) std::printf(" %zu", i.get<size_t>());
-    std::printf("%s\nwritten: %s/sweep.json, sweep.csv, frontier.csv, fitmap.png\n",
-                summary["closed_form_disagrees"].empty() ? "" : ")", dir.c_str());
+    if (!summary["closed_form_disagrees"].empty()) std::printf(")");
+    if (summary.value("not_judged", 0) > 0)
+        std::printf(
+            "\nnot judged: a run too short for every stage to run counts as no fit "
+            "(sweep.json's not_judged says which stage and how many frames to ask for)");
+    std::printf("\nwritten: %s/sweep.json, sweep.csv, frontier.csv, fitmap.png\n", dir.c_str());
+}
+
+// --resume: the points DIR's sweep.json ran, in place of the plan's, if it is
+// the same sweep (grid, base settings, shard, screening).
+bool keep_finished_points(const sweep_options& o, sweep_plan* plan, std::string* error) {
+    const std::string path = o.out_dir + "/sweep.json";
+    std::ifstream in(path);
+    if (!in) {
+        *error = "--resume: " + path + " not found (the folder of an interrupted sweep)";
+        return false;
+    }
+    json previous;
+    try {
+        previous = json::parse(in);
+    } catch (const std::exception& e) {
+        *error = "--resume: " + path + " is unreadable: " + e.what();
+        return false;
+    }
+    const json header = sweep_header(o, *plan);
+    for (const char* key : {"grid", "base", "shard", "screen", "points_total"})
+        if (previous.value(key, json()) != header.at(key)) {
+            *error = "--resume: " + path + " is another sweep (its " + key + " differs)";
+            return false;
+        }
+    for (const json& p : previous.value("points", json::array())) {
+        if (!p.value("ran", false)) continue;
+        for (json& mine : plan->points)
+            if (mine.at("index") == p.at("index")) mine = p;
+    }
+    return true;
 }
 
 }  // namespace
@@ -80,11 +116,19 @@ sweep_command::sweep_command(CLI::App& app) {
                       "with --screen: closed-form slack within this of 0 is near (0.25 ms)");
     m_app->add_flag("--force", o.force, "run a grid of more than 10,000 points");
     m_app->add_flag("--keep-runs", o.keep_runs, "keep every point's run folder under OUT/points");
+    m_app->add_option("--resume", o.resume,
+                      "DIR of an interrupted sweep: keep the points it ran, run the others (the "
+                      "same grid and settings)");
     cli::add_slurm_options(m_app, &o.slurm);
 }
 
 int sweep_command::execute() {
-    const sweep_options& o = m_options;
+    sweep_options& o = m_options;
+    if (!o.resume.empty()) {
+        if (!o.out_dir.empty() && o.out_dir != o.resume)
+            return bad_input("--resume DIR writes into DIR: no other --out");
+        o.out_dir = o.resume;
+    }
     sweep_plan plan;
     std::string error;
     if (!check_sweep(o, &plan, &error)) return bad_input(error);
@@ -118,8 +162,12 @@ int sweep_command::execute() {
     request.out_dir = o.out_dir;
     request.jobs = o.jobs;
     request.keep_runs = o.keep_runs;
-    const int failed = run_points(request, plan.points, stderr);
+    if (!o.resume.empty() && !keep_finished_points(o, &plan, &error)) return bad_input(error);
+    int interrupted = 0;
+    const int failed = run_points(request, plan.points, stderr, &interrupted);
     json sweep = sweep_header(o, plan);
+    sweep["complete"] = interrupted == 0;
+    if (interrupted) sweep["interrupted_by"] = cli::signal_name(interrupted);
     sweep["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     sweep["summary"] = sweep_summary(plan.points);
     sweep["points"] = plan.points;
@@ -128,6 +176,13 @@ int sweep_command::execute() {
     if (!warning.empty()) std::fprintf(stderr, "stereosim: warning: %s\n", warning.c_str());
     print_summary(sweep["summary"], o.out_dir);
     if (!o.keep_runs) std::filesystem::remove(o.out_dir + "/points", ec);
+    if (interrupted) {
+        std::fprintf(stderr,
+                     "stereosim: sweep: interrupted by %s: written to %s/sweep.json (incomplete: "
+                     "the points under way have no figures); --resume %s runs them\n",
+                     cli::signal_name(interrupted).c_str(), o.out_dir.c_str(), o.out_dir.c_str());
+        return 128 + interrupted;
+    }
     return failed > 0 ? 3 : 0;
 }
 

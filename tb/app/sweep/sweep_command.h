@@ -33,6 +33,7 @@ struct sweep_options {
     double screen_margin_ms = 0.25;  // closed-form slack this close to 0 is "near"
     bool force = false;              // more than 10,000 points
     bool keep_runs = false;
+    std::string resume;  // DIR of an interrupted sweep: run only the points it lacks
     cli::slurm_options slurm;
 };
 

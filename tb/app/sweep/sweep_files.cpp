@@ -99,7 +99,7 @@ void write_frontier(std::ostream& out, const json& sweep) {
         const json* best = nullptr;
         for (const json* p : groups[others]) {
             const point_outcome o = outcome_of(*p);
-            if (!o.known || !o.fits) continue;
+            if (!o.known || !o.judged || !o.fits) continue;
             const json& v = p->at("keys").at(first);
             if (!best || (v.is_number() && v < best->at("keys").at(first))) best = p;
         }
@@ -120,6 +120,7 @@ point_outcome outcome_of(const json& point) {
     point_outcome o;
     if (point.value("ran", false) && point.value("verdict", json()).is_string()) {
         o.known = true;
+        o.judged = point["verdict"] != "not_judged";
         o.fits = point["verdict"] == "within";
         const json& slack = point.value("min_slack_ms", json());
         const json& overrun = point.value("overrun_ms_max", json());

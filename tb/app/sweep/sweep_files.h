@@ -26,6 +26,7 @@ bool write_sweep_files(const std::string& dir, const nlohmann::json& sweep, std:
 // the binding figure); "source" says which.
 struct point_outcome {
     bool known = false;
+    bool judged = true;  // false: the run was too short for a stage to run (never fits)
     bool fits = false;
     double slack_ms = 0.0;
     const char* source = "";  // "cosim" or "closed_form"

@@ -71,7 +71,7 @@ bool write_fitmap(const std::string& dir, const json& sweep, std::string* warnin
     double extent = 1.0;
     for (const json& p : sweep.at("points")) {
         const point_outcome o = outcome_of(p);
-        if (o.known) extent = std::max(extent, std::fabs(o.slack_ms));
+        if (o.known && o.judged) extent = std::max(extent, std::fabs(o.slack_ms));
     }
     std::ofstream dat(dir + "/fitmap.dat");
     for (const std::string& title : order) {
@@ -84,10 +84,11 @@ bool write_fitmap(const std::string& dir, const json& sweep, std::string* warnin
                 grid.size() > 1
                     ? value_index(y_axis, p->at("keys").at(y_axis.at("key").get<std::string>()))
                     : 0;
-            std::string mark = !o.known ? "?" : o.fits ? "fits" : "OVER";
+            std::string mark = !o.known ? "?" : !o.judged ? "not judged" : o.fits ? "fits" : "OVER";
             if (o.known && std::string(o.source) == "closed_form") mark = "(" + mark + ")";
-            // NaN: no colour (gnuplot skips the cell), the "?" stays.
-            dat << x << " " << y << " " << (o.known ? std::to_string(o.slack_ms) : "NaN") << " "
+            // NaN: no colour (gnuplot skips the cell), the mark stays.
+            const bool coloured = o.known && o.judged;
+            dat << x << " " << y << " " << (coloured ? std::to_string(o.slack_ms) : "NaN") << " "
                 << gp_quote(mark) << "\n";
         }
         dat << "\n\n";

@@ -160,7 +160,8 @@ json sweep_header(const sweep_options& o, const sweep_plan& plan) {
 }
 
 json sweep_summary(const std::vector<json>& points) {
-    int simulated = 0, within = 0, over = 0, failed = 0, cf_within = 0, cf_over = 0, agree = 0;
+    int simulated = 0, within = 0, over = 0, not_judged = 0, failed = 0, cf_within = 0, cf_over = 0,
+        agree = 0;
     json disagree = json::array();
     for (const json& p : points) {
         const json& cf = p.value("closed_form", json::object());
@@ -176,6 +177,7 @@ json sweep_summary(const std::vector<json>& points) {
         }
         within += p["verdict"] == "within";
         over += p["verdict"] == "over";
+        not_judged += p["verdict"] == "not_judged";
         const json& agrees = p.value("closed_form_agrees", json());
         if (agrees == true) ++agree;
         if (agrees == false) disagree.push_back(p["index"]);
@@ -184,6 +186,7 @@ json sweep_summary(const std::vector<json>& points) {
             {"simulated", simulated},
             {"within", within},
             {"over", over},
+            {"not_judged", not_judged},
             {"failed", failed},
             {"closed_form_only", {{"within", cf_within}, {"over", cf_over}}},
             {"closed_form_agrees", agree},

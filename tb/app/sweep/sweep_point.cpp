@@ -73,8 +73,11 @@ bool read_point_report(const json& report, json* point, std::string* error) {
     try {
         const json& timing = report.at("summary").at("timing");
         json& p = *point;
-        p["verdict"] =
-            report.at("verdict").get<std::string>() == "within_budget" ? "within" : "over";
+        // A run that fits but never ran a stage judged nothing of it: no fit.
+        const bool within = report.at("verdict").get<std::string>() == "within_budget";
+        const bool judged = report.value("judged", true);
+        p["verdict"] = !within ? "over" : judged ? "within" : "not_judged";
+        p["not_judged"] = report.value("not_judged", json(nullptr));
         const json& overruns = report.at("overruns");
         p["first_overrun"] = json(nullptr);
         double worst = 0.0;  // the largest overrun: value over its limit
@@ -144,7 +147,8 @@ void mark_agreement(json* point) {
     const json& cf = p.value("closed_form", json::object());
     const bool both =
         p.value("verdict", json()).is_string() && cf.value("verdict", json()).is_string();
-    p["closed_form_agrees"] = both ? json(p["verdict"] == cf["verdict"]) : json(nullptr);
+    const bool judged = p.value("verdict", json()) != "not_judged";
+    p["closed_form_agrees"] = both && judged ? json(p["verdict"] == cf["verdict"]) : json(nullptr);
 }
 
 }  // namespace sweep

@@ -3,13 +3,16 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
 
 #include "tb/app/cli/child_run.h"
+#include "tb/app/cli/interrupt.h"
 #include "tb/app/sweep/sweep_grid.h"
 #include "tb/app/sweep/sweep_point.h"
 
@@ -84,15 +87,17 @@ std::string this_program() {
     return ec ? std::string("stereosim") : p.string();
 }
 
-int run_points(const run_request& request, std::vector<json>& points, std::FILE* log) {
+int run_points(const run_request& request, std::vector<json>& points, std::FILE* log,
+               int* interrupted) {
     std::vector<size_t> todo;
     for (size_t i = 0; i < points.size(); ++i)
-        if (points[i].value("simulate", false)) todo.push_back(i);
+        if (points[i].value("simulate", false) && !points[i].value("ran", false)) todo.push_back(i);
+    const cli::interrupt_catcher interrupt;
     std::map<pid_t, std::pair<size_t, clock_type::time_point>> running;
     size_t next = 0, done = 0;
     int failed = 0, over = 0;
     const auto t0 = clock_type::now();
-    while (next < todo.size() || !running.empty()) {
+    while ((next < todo.size() || !running.empty()) && !interrupt.caught()) {
         while (next < todo.size() && static_cast<int>(running.size()) < request.jobs) {
             json& point = points[todo[next++]];
             const std::string dir = point_dir(request, point);
@@ -112,6 +117,7 @@ int run_points(const run_request& request, std::vector<json>& points, std::FILE*
         if (running.empty()) continue;
         int status = 0;
         const pid_t pid = waitpid(-1, &status, 0);
+        if (pid < 0) continue;  // EINTR: an interrupt, looked at above
         const auto it = running.find(pid);
         if (it == running.end()) continue;
         json& point = points[it->second.first];
@@ -124,6 +130,15 @@ int run_points(const run_request& request, std::vector<json>& points, std::FILE*
         running.erase(it);
         progress(log, ++done, todo.size(), over, failed, t0);
     }
+    // Interrupted: the points under way stop and are not counted.
+    for (const auto& [pid, started] : running) kill(pid, SIGTERM);
+    for (const auto& [pid, started] : running) {
+        int status = 0;
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+        }
+        points[started.first].erase("ran");
+    }
+    if (interrupted) *interrupted = interrupt.caught();
     return failed;
 }
 

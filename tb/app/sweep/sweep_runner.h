@@ -21,10 +21,14 @@ struct run_request {
     bool keep_runs = false;  // keep DIR/points/NNNNNN (report.json, frames.csv, ...)
 };
 
-// Runs every point of `points` whose "simulate" is true; fills its figures
-// (read_point_report), "exit_code", "wall_s", or "error". Returns the number
-// of points that failed to run (no report.json: exit 2 or 3, a signal).
-int run_points(const run_request& request, std::vector<nlohmann::json>& points, std::FILE* log);
+// Runs every point of `points` whose "simulate" is true and that has not
+// run yet (a resumed sweep's); fills its figures (read_point_report),
+// "exit_code", "wall_s", or "error". Returns the number of points that failed
+// to run (no report.json: exit 2 or 3, a signal). On SIGINT or SIGTERM it
+// stops the points under way and returns; *interrupted = the signal (else 0),
+// the points it did not finish keep no "ran".
+int run_points(const run_request& request, std::vector<nlohmann::json>& points, std::FILE* log,
+               int* interrupted = nullptr);
 
 // This program's path (/proc/self/exe).
 std::string this_program();
