@@ -11,6 +11,7 @@
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
+#define STBI_ONLY_JPEG
 #define STB_IMAGE_WRITE_STATIC
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #pragma GCC diagnostic push
@@ -41,6 +42,22 @@ void check_png_file(const std::string& path) {
         fail(path, "not a PNG file (bad signature)");
 }
 
+[[noreturn]] void fail_image(const std::string& path, const std::string& what) {
+    throw std::runtime_error("image '" + path + "': " + what);
+}
+
+// A replay's image: a PNG, or a baseline or progressive JPEG (by signature).
+void check_image_file(const std::string& path) {
+    std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
+    if (!f) fail_image(path, std::string("cannot open: ") + std::strerror(errno));
+    unsigned char head[8] = {};
+    const size_t n = std::fread(head, 1, 8, f.get());
+    static constexpr unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    const bool is_png = n == 8 && std::memcmp(head, png, 8) == 0;
+    const bool is_jpeg = n >= 3 && head[0] == 0xFF && head[1] == 0xD8 && head[2] == 0xFF;
+    if (!is_png && !is_jpeg) fail_image(path, "neither a PNG nor a JPEG file (bad signature)");
+}
+
 struct stbi_deleter {
     void operator()(stbi_uc* p) const { stbi_image_free(p); }
 };
@@ -64,6 +81,25 @@ png_info read_png_info(const std::string& path) {
         fail(path, std::string("cannot read header: ") + stbi_failure_reason());
     if (stbi_is_16_bit(path.c_str())) fail(path, "16-bit PNG (only 8-bit is supported)");
     return info;
+}
+
+png_info read_image_info(const std::string& path) {
+    check_image_file(path);
+    png_info info;
+    if (!stbi_info(path.c_str(), &info.width, &info.height, &info.channels))
+        fail_image(path, std::string("cannot read header: ") + stbi_failure_reason());
+    if (stbi_is_16_bit(path.c_str())) fail_image(path, "16-bit PNG (only 8-bit is supported)");
+    return info;
+}
+
+rgb_image read_image_rgb(const std::string& path) {
+    const png_info info = read_image_info(path);
+    int w = 0, h = 0, n = 0;
+    std::unique_ptr<stbi_uc, stbi_deleter> pixels(stbi_load(path.c_str(), &w, &h, &n, 3));
+    if (!pixels) fail_image(path, std::string("cannot decode: ") + stbi_failure_reason());
+    rgb_image out(info.width, info.height);
+    std::memcpy(out.pixels.data(), pixels.get(), out.pixels.size() * sizeof(dsp::rgb8));
+    return out;
 }
 
 rgb_image read_png_rgb(const std::string& path) {

@@ -1,6 +1,6 @@
-// PNG files <-> scene images (stb_image / stb_image_write from Debian's
-// libstb-dev; no OpenCV in the libraries). Errors throw std::runtime_error
-// naming the file and what is wrong.
+// PNG files <-> scene images, and JPEG files -> scene images (stb_image /
+// stb_image_write from Debian's libstb-dev; no OpenCV in the libraries). Errors throw
+// std::runtime_error naming the file and what is wrong.
 #pragma once
 
 #include <string>
@@ -27,6 +27,11 @@ rgb_image read_png_rgb(const std::string& path);
 // 8-bit PNG as gray: only 1-channel (or gray+alpha) files; an RGB file is an
 // error, not converted (the conversion would be a choice of weights).
 gray_image read_png_gray(const std::string& path);
+
+// A replay's frame: a PNG (as read_png_rgb) or a JPEG (8-bit, baseline or
+// progressive, gray replicated to RGB), told apart by the file's signature.
+png_info read_image_info(const std::string& path);
+rgb_image read_image_rgb(const std::string& path);
 
 void write_png(const std::string& path, const rgb_image& image);
 void write_png(const std::string& path, const gray_image& image);

@@ -49,6 +49,7 @@ std::vector<std::string> split_ws(const std::string& s) {
 }  // namespace
 
 std::string replay::name_pattern::format(int number) const {
+    if (fixed) return prefix;
     std::string digits = std::to_string(number);
     if (static_cast<int>(digits.size()) < zero_pad)
         digits.insert(0, static_cast<size_t>(zero_pad) - digits.size(), '0');
@@ -57,11 +58,16 @@ std::string replay::name_pattern::format(int number) const {
 
 namespace {
 
-// A file pattern with exactly one %d or %0Nd (N = 1..9).
+// A file pattern with exactly one %d or %0Nd (N = 1..9), or none: one file
+// for every frame (a pair held).
 template <typename Pattern>
 bool parse_pattern(const std::string& text, Pattern* out) {
     const auto pct = text.find('%');
-    if (pct == std::string::npos) return false;
+    if (pct == std::string::npos) {
+        out->prefix = text;
+        out->fixed = true;
+        return true;
+    }
     size_t i = pct + 1;
     int width = 0;
     if (i < text.size() && text[i] == '0') {
@@ -107,6 +113,7 @@ namespace {
 struct file_pattern {
     std::string prefix, suffix;
     int zero_pad = 0;
+    bool fixed = false;
 };
 
 // What the manifest says, before the image files are checked.
@@ -195,7 +202,8 @@ void apply_key(const manifest_line& l, const std::filesystem::path& folder, mani
         if (l.rest.empty()) l.fail("'" + l.key + "' needs a file pattern");
         file_pattern p;
         if (!parse_pattern(l.rest, &p))
-            l.fail("file pattern '" + l.rest + "' needs exactly one %d or %0Nd");
+            l.fail("file pattern '" + l.rest +
+                   "' has more than one %d, or a % that is no %d or %0Nd");
         p.prefix = resolve(folder, p.prefix);
         m->patterns[l.key == "left" ? 0 : 1] = p;
     } else if (l.key == "first_number") {
@@ -259,7 +267,7 @@ void check_frame_files(const std::string& manifest, const manifest_values& m, in
         const std::string file = file_of(f);
         const png_info info = [&] {
             try {
-                return read_png_info(file);
+                return read_image_info(file);
             } catch (const std::runtime_error& e) {
                 manifest_error(manifest, 0,
                                side_name + " frame " + std::to_string(f) + ": " + e.what());
@@ -368,7 +376,7 @@ replay::replay(const std::string& manifest_path, int expected_width, int expecte
                            std::to_string(expected_width) + "x" + std::to_string(expected_height));
     for (int side = 0; side < 2; ++side) {
         const file_pattern& p = m.patterns[side];
-        m_pattern[side] = name_pattern{p.prefix, p.suffix, p.zero_pad};
+        m_pattern[side] = name_pattern{p.prefix, p.suffix, p.zero_pad, p.fixed};
         check_frame_files(manifest_path, m, side, [&](int frame) {
             return m_pattern[side].format(m_first_number + frame);
         });
@@ -446,7 +454,7 @@ const rgb_image& replay::frame(camera_id id, uint64_t index) {
     const int i = resolve_index(index);
     if (m_cached_index[side] != i) {
         const std::string file = path(id, index);
-        rgb_image img = read_png_rgb(file);
+        rgb_image img = read_image_rgb(file);
         if (img.width != m_width || img.height != m_height)
             throw std::runtime_error("replay '" + m_manifest_path + "': '" + file + "' is " +
                                      std::to_string(img.width) + "x" + std::to_string(img.height) +

@@ -9,7 +9,8 @@
 //   size 640 480                      # image size, required
 //   frames 12                         # number of frames, required
 //   left  left/frame_%04d.png         # file pattern per camera, required: one
-//   right right/frame_%04d.png        #   %d or %0Nd, replaced by the number
+//   right right/frame_%04d.png        #   %d or %0Nd, replaced by the number, or
+//                                     #   none: that one file for every frame
 //   first_number 0                    # number of frame 0's files (default 0)
 //   focal_px 789.5                    # calibration, required
 //   baseline_m 0.12
@@ -115,7 +116,8 @@ class replay {
     // A file pattern split at its %d / %0Nd, resolved against the manifest folder.
     struct name_pattern {
         std::string prefix, suffix;
-        int zero_pad = 0;  // digits, 0 = none
+        int zero_pad = 0;    // digits, 0 = none
+        bool fixed = false;  // no %d: the same file for every frame
         std::string format(int number) const;
     };
 

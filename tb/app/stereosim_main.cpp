@@ -12,6 +12,7 @@
 #include <systemc>
 
 #include "tb/app/cli/config_keys.h"
+#include "tb/app/cli/replay_init.h"
 #include "tb/app/cli/run_command.h"
 #include "tb/app/cli/scenarios.h"
 #include "tb/app/faults/faults_command.h"
@@ -74,6 +75,7 @@ int sc_main(int argc, char* argv[]) {
     faults::faults_command faults(app, ::app::make_run_extensions);
     sweep::sweep_command sweep(app);
     sweep::merge_command merge(app);
+    cli::replay_command replay(app);
 
     try {
         app.parse(argc, argv);
@@ -95,6 +97,7 @@ int sc_main(int argc, char* argv[]) {
     if (*faults.subcommand()) return faults.execute();
     if (*sweep.subcommand()) return sweep.execute();
     if (*merge.subcommand()) return merge.execute();
+    if (*replay.subcommand()) return replay.execute();
     if (*config) {
         print_config_keys(markdown);
         return 0;

@@ -67,10 +67,14 @@ platform::frame_record record_of(const platform_top& top, uint64_t scene_frame,
     record.time_s = top.source().scene_time_s(1, scene_frame);
     record.out = out;
     scene::replay_object_truth replayed;
-    if (top.replay() && top.replay()->object_truth(static_cast<int>(scene_frame), &replayed)) {
-        record.has_truth = true;
-        record.truth_has_point = replayed.has_point;
-        record.truth = replayed.ball;
+    if (top.replay()) {
+        // A replay's truth is its CSV's alone: the scenario's rendered ball is
+        // not what the sensors saw.
+        if (top.replay()->object_truth(static_cast<int>(scene_frame), &replayed)) {
+            record.has_truth = true;
+            record.truth_has_point = replayed.has_point;
+            record.truth = replayed.ball;
+        }
     } else if (!scenario.scene.balls.empty() && record.time_s >= 0.0) {
         record.has_truth = true;
         record.truth =

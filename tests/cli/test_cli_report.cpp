@@ -195,9 +195,10 @@ TEST(cli_report, schema_csv_verdict_and_reproducibility) {
     // ("not judged", the frames to ask for)
     EXPECT_EQ(first.status, report["verdict"] == "within_budget" ? 0 : 1);
     EXPECT_FALSE(report["judged"].get<bool>());
-    EXPECT_EQ(report["not_judged"],
-              "not judged: detect, track, stereo_sad, xyz never ran in 5 periods; ask for --frames 9 "
-              "or more");
+    EXPECT_EQ(
+        report["not_judged"],
+        "not judged: detect, track, stereo_sad, xyz never ran in 5 periods; ask for --frames 9 "
+        "or more");
     EXPECT_EQ(second.status, first.status);
     // Off a terminal, --quiet: nothing on stderr at all (no SystemC banner).
     EXPECT_EQ(first.err.find("SystemC"), std::string::npos) << first.err;

@@ -42,22 +42,53 @@ std::string one_decimal(double v) {
 
 TEST(DocsFigures, TheReadmeQuotesTheDemo) {
     const std::string dir = testsupport::temp_dir("stereosim-test-readme");
-    const testsupport::command_result r = testsupport::run_command(
-        "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 " STEREOSIM_BINARY
-        " run --scenario default --quiet --out " +
-        dir);
+    const testsupport::command_result r =
+        testsupport::run_command("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 " STEREOSIM_BINARY
+                                 " run --scenario default --quiet --out " +
+                                 dir);
     ASSERT_LE(r.exit_code, 1) << r.output;
     const json timing = json::parse(read_text(dir + "/report.json"))["summary"]["timing"];
     const std::string readme = flat(read_text(std::string(STEREOSIM_SOURCE_DIR) + "/README.md"));
     std::smatch m;
     ASSERT_TRUE(std::regex_search(
         readme, m,
-        std::regex(R"(capture ([0-9.]+) ms per pair on the bus, the CPU busy at most ([0-9.]+) ms)")))
+        std::regex(
+            R"(capture ([0-9.]+) ms per pair on the bus, the CPU busy at most ([0-9.]+) ms)")))
         << "the README no longer quotes the demo's capture and CPU figures";
     EXPECT_EQ(m[1].str(), one_decimal(timing["capture_ms"]["max"].get<double>()))
         << "README.md: the demo's capture per pair";
     EXPECT_EQ(m[2].str(), one_decimal(timing["cpu_busy_ms_max"].get<double>()))
         << "README.md: the demo's busiest CPU period";
+    fs::remove_all(dir);
+}
+
+// docs/faults.md: each sensor counts its own frames across OE restarts; with
+// seed 3 the left sensor's frame 5 and the right one's start at the times it
+// quotes (the timeline's VSYNC rises of each sensor, frame n the n-th after
+// power-on, from 0).
+TEST(DocsFigures, TheFaultsDocQuotesTheFrameNumbering) {
+    const std::string dir = testsupport::temp_dir("stereosim-test-frames");
+    const testsupport::command_result r =
+        testsupport::run_command("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 " STEREOSIM_BINARY
+                                 " run --frames 6 --seed 3 --quiet --out " +
+                                 dir);
+    ASSERT_LE(r.exit_code, 1) << r.output;
+    const json timeline = json::parse(read_text(dir + "/timeline.json"));
+    std::vector<double> vsync[2];
+    for (const json& e : timeline["traceEvents"]) {
+        const std::string name = e.value("name", "");
+        if (name == "VSYNC L" || name == "VSYNC R")
+            vsync[name == "VSYNC R"].push_back(e["ts"].get<double>() / 1000.0);
+    }
+    ASSERT_GT(vsync[0].size(), 5u);
+    ASSERT_GT(vsync[1].size(), 5u);
+    char quoted[160];
+    std::snprintf(quoted, sizeof quoted,
+                  "the left sensor's frame 5 starts at %.2f ms (the fifth after the restart), "
+                  "the right one's at %.2f ms",
+                  vsync[0][5], vsync[1][5]);
+    const std::string doc = flat(read_text(std::string(STEREOSIM_SOURCE_DIR) + "/docs/faults.md"));
+    EXPECT_NE(doc.find(quoted), std::string::npos) << "docs/faults.md should say: " << quoted;
     fs::remove_all(dir);
 }
 
@@ -72,7 +103,8 @@ TEST(DocsFigures, TheWaveformDocCountsTheSignals) {
     std::ifstream vcd(dir + "/waves/default.vcd");
     int card = 0, all = 0, marker = 0;
     std::vector<std::string> scopes;
-    for (std::string line; std::getline(vcd, line) && line.find("$enddefinitions") == std::string::npos;) {
+    for (std::string line;
+         std::getline(vcd, line) && line.find("$enddefinitions") == std::string::npos;) {
         std::istringstream words(line);
         std::string word, name;
         words >> word;
@@ -94,10 +126,9 @@ TEST(DocsFigures, TheWaveformDocCountsTheSignals) {
     const std::string quoted = "(" + std::to_string(card) + " signals in the default build; " +
                                std::to_string(all) + " in the file with the pin trace's " +
                                std::to_string(all - card - marker) + " and the fault marker)";
-    EXPECT_NE(doc.find(quoted), std::string::npos)
-        << "docs/waveforms.md should say " << quoted;
-    std::printf("waveform: %d signals, %d of the card, %d of the pin trace, %d marker\n", all,
-                card, all - card - marker, marker);
+    EXPECT_NE(doc.find(quoted), std::string::npos) << "docs/waveforms.md should say " << quoted;
+    std::printf("waveform: %d signals, %d of the card, %d of the pin trace, %d marker\n", all, card,
+                all - card - marker, marker);
     fs::remove_all(dir);
 }
 

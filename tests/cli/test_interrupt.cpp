@@ -123,7 +123,12 @@ fs::path scratch(const std::string& name) {
 // stopped after the first finished, resumed, and run whole for comparison.
 TEST(Interrupt, ACampaignStopsItsRunsAndResumes) {
     const std::vector<std::string> slice = {
-        "faults", "--campaign", "smoke", "--jobs", "1", "--match",
+        "faults",
+        "--campaign",
+        "smoke",
+        "--jobs",
+        "1",
+        "--match",
         "dark-leak:sensor=L,level=8|skew:sensor=L,pixels=1@frame=2|drop-frame:sensor=R@frame=4"};
     const fs::path cut = scratch("cut"), whole = scratch("whole");
     std::vector<std::string> args = slice;
@@ -152,7 +157,8 @@ TEST(Interrupt, ACampaignStopsItsRunsAndResumes) {
     args.insert(args.end(), {"--out", whole.string()});
     child w = start(args);
     EXPECT_EQ(finish(w), 0) << w.seen;
-    const json resumed = read_json(cut / "campaign.json"), uncut = read_json(whole / "campaign.json");
+    const json resumed = read_json(cut / "campaign.json"),
+               uncut = read_json(whole / "campaign.json");
     EXPECT_TRUE(resumed["complete"].get<bool>());
     EXPECT_EQ(without_host_figures(resumed["rows"]), without_host_figures(uncut["rows"]));
     EXPECT_EQ(resumed["contract_broken"], uncut["contract_broken"]);
@@ -161,8 +167,8 @@ TEST(Interrupt, ACampaignStopsItsRunsAndResumes) {
 
 // A sweep of three points of 4 frames, one point at a time.
 TEST(Interrupt, ASweepStopsItsPointsAndResumes) {
-    const std::vector<std::string> sweep = {"sweep", "--grid", "firmware.search_radius=8,16,24",
-                                            "--frames", "4", "--jobs", "1"};
+    const std::vector<std::string> sweep = {
+        "sweep", "--grid", "firmware.search_radius=8,16,24", "--frames", "4", "--jobs", "1"};
     const fs::path cut = scratch("sweep-cut"), whole = scratch("sweep-whole");
     std::vector<std::string> args = sweep;
     args.insert(args.end(), {"--out", cut.string()});

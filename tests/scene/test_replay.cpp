@@ -207,28 +207,41 @@ TEST(Replay, ErrorCasesGiveClearErrors) {
     expect_error(manifest("missing.txt", head + "left a%d.png\nright a%d.png\nfocal_px 700\n"
                                                 "principal_left 1 1\nprincipal_right 1 1\n"),
                  "missing required key 'baseline_m'");
+    // A file with no %d is that file for every frame (a pair held): here missing.
     expect_error(manifest("pattern.txt", head + "left a.png\nright a%d.png\n" + calibration_lines),
-                 "pattern.txt:4: file pattern 'a.png' needs exactly one %d or %0Nd");
+                 "left frame 0: image '" + (dir / "a.png") + "': cannot open");
     expect_error(
         manifest("pattern2.txt", head + "left a%d_%d.png\nright a%d.png\n" + calibration_lines),
-        "needs exactly one %d");
+        "has more than one %d");
     // A missing image file: frames 4 but only 3 exist.
     expect_error(manifest("short.txt",
                           "stereosim_replay 1\nsize 16 12\nframes 4\nleft a%d.png\n"
                           "right a%d.png\n" +
                               std::string(calibration_lines)),
-                 "left frame 3: PNG '" + (dir / "a3.png") + "': cannot open: No such file");
+                 "left frame 3: image '" + (dir / "a3.png") + "': cannot open: No such file");
     // An image whose size is not the manifest's.
     expect_error(manifest("size.txt",
                           "stereosim_replay 1\nsize 16 12\nframes 1\nleft a%d.png\n"
                           "right small%d.png\n" +
                               std::string(calibration_lines)),
                  "right frame 0 '" + (dir / "small0.png") + "' is 20x10, the manifest says 16x12");
-    expect_error(manifest("jpeg.txt",
-                          "stereosim_replay 1\nsize 16 12\nframes 1\nleft jpeg%d.png\n"
+    // A JPEG is read whatever its name (told by its signature, as OpenCV
+    // wrote it: the same pixels within the codec's loss); a text file is none.
+    {
+        scene::replay jpeg(manifest("jpeg.txt",
+                                    "stereosim_replay 1\nsize 16 12\nframes 1\n"
+                                    "left jpeg%d.png\nright a%d.png\n" +
+                                        std::string(calibration_lines)));
+        const scene::rgb_image& f = jpeg.frame(camera_id::left, 0);
+        EXPECT_NEAR(f.pixels[0].r, 7, 2);  // cv::Scalar is B, G, R
+        EXPECT_NEAR(f.pixels[0].b, 9, 2);
+    }
+    write_text(dir / "text0.png", "not an image");
+    expect_error(manifest("text.txt",
+                          "stereosim_replay 1\nsize 16 12\nframes 1\nleft text%d.png\n"
                           "right a%d.png\n" +
                               std::string(calibration_lines)),
-                 "not a PNG file");
+                 "neither a PNG nor a JPEG file");
     expect_error(manifest("deep.txt",
                           "stereosim_replay 1\nsize 16 12\nframes 1\nleft deep%d.png\n"
                           "right a%d.png\n" +

@@ -67,15 +67,18 @@ void print_summary(std::FILE* out, const json& report, const std::vector<std::st
     const double budget_ms = timing.at("budget_ms").get<double>();
     const int frames = config.at("run").at("frames").get<int>();
 
-    std::fprintf(out,
-                 "stereosim run: scenario %s, %d frames (%.1f ms), DSK v%d CPU %.0f MHz EMIF %.0f "
-                 "MHz, %s, seed %lld\n",
-                 config.at("scenario").at("name").get<std::string>().c_str(), frames,
-                 frames * budget_ms, config.at("dsk").at("version").get<int>(),
-                 config.at("dsk").at("cpu_mhz").get<double>(),
-                 config.at("dsk").at("eclk_mhz").get<double>(),
-                 config.at("firmware").at("mode").get<std::string>().c_str(),
-                 static_cast<long long>(config.at("run").at("seed").get<int64_t>()));
+    const std::string replay = config.at("scenario").value("replay", std::string());
+    const std::string scene =
+        replay.empty() ? "scenario " + config.at("scenario").at("name").get<std::string>()
+                       : "replay " + replay;
+    std::fprintf(
+        out,
+        "stereosim run: %s, %d frames (%.1f ms), DSK v%d CPU %.0f MHz EMIF %.0f "
+        "MHz, %s, seed %lld\n",
+        scene.c_str(), frames, frames * budget_ms, config.at("dsk").at("version").get<int>(),
+        config.at("dsk").at("cpu_mhz").get<double>(), config.at("dsk").at("eclk_mhz").get<double>(),
+        config.at("firmware").at("mode").get<std::string>().c_str(),
+        static_cast<long long>(config.at("run").at("seed").get<int64_t>()));
     const bool fits = report.at("verdict") == "within_budget";
     const bool judged = report.at("judged").get<bool>();
     std::fprintf(out,
@@ -119,10 +122,15 @@ void print_summary(std::FILE* out, const json& report, const std::vector<std::st
                  sync.at("mismatches_detected").get<int>(), sync.at("resyncs").get<int>(),
                  sync.at("unsynced_pairs_used").get<int>(), sync.at("pairs_forwarded").get<int>());
     const json& rmse = accuracy.at("rmse_mm");
-    std::string latency = accuracy.at("detect_latency_frames").is_null()
-                              ? std::string("no detection")
-                              : "detected " + accuracy.at("detect_latency_frames").dump() +
-                                    " frame(s) after the first motion";
+    // The same as report.json: a detection without truth of the first motion
+    // (a replay without truth) is still a detection.
+    const json& detected = accuracy.at("detection_frame");
+    std::string latency = !accuracy.at("detect_latency_frames").is_null()
+                              ? "detected " + accuracy.at("detect_latency_frames").dump() +
+                                    " frame(s) after the first motion"
+                          : detected.is_null() ? std::string("no detection")
+                                               : "detected at scene frame " + detected.dump() +
+                                                     " (no truth of the first motion)";
     std::fprintf(out, "accuracy  %d frames tracked, %s", accuracy.at("frames_tracked").get<int>(),
                  latency.c_str());
     if (rmse.at("x").is_null())

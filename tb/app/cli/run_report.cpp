@@ -1,9 +1,12 @@
 #include "tb/app/cli/run_report.h"
 
+#include "model/scene/replay.h"
+
 #include <algorithm>
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <set>
 
 #include "dsp/kernel_costs.h"
@@ -308,6 +311,29 @@ std::string not_judged_text(const platform::budget_report& budget,
     return text + "ask for --frames " + std::to_string(need) + " or more";
 }
 
+// A replay: its manifest by an absolute path, so that the report repeats the
+// run from any folder; the manifest's calibration is the rig, so the rig
+// keys, unused, are not shown as if they were (`replay.calibration`).
+void add_replay(json& report, const run_setup& setup, const platform::platform_top& top) {
+    std::error_code ec;
+    const std::string manifest =
+        std::filesystem::absolute(setup.scenario.replay, ec).lexically_normal().string();
+    report["config"]["scenario"]["replay"] = manifest;
+    report["config"].erase("rig");
+    const scene::replay* r = top.replay();
+    if (!r) return;
+    const scene::replay_calibration& c = r->calibration();
+    report["replay"] = {{"manifest", manifest},
+                        {"size", {r->width(), r->height()}},
+                        {"frames", r->frame_count()},
+                        {"truth", r->has_truth()},
+                        {"calibration",
+                         {{"focal_px", c.focal_px},
+                          {"baseline_mm", round6(c.baseline_m * 1000.0)},
+                          {"principal_left", {c.cx_left, c.cy_left}},
+                          {"principal_right", {c.cx_right, c.cy_right}}}}};
+}
+
 json build_report(const run_setup& setup, const platform::platform_top& top,
                   const platform::scoreboard_report& score, const platform::budget_report& budget) {
     std::set<int> over;
@@ -317,6 +343,7 @@ json build_report(const run_setup& setup, const platform::platform_top& top,
     report["schema_version"] = report_schema_version;
     report["tool"] = {{"name", "stereosim"}, {"cost_model", dsp::cost::model().id()}};
     report["config"] = config_json(setup);
+    if (!setup.scenario.replay.empty()) add_replay(report, setup, top);
     report["verdict"] = budget.fits ? "within_budget" : "over_budget";
     // A run too short for a stage to run judged only part of the budget.
     report["judged"] = budget.stages_not_run.empty();

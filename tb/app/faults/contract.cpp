@@ -389,7 +389,11 @@ verdict check_clean(const run_observation& run) {
     }
     // Working means right, too: against the scene's ground truth, with
     // margins over the system test's 3 px / 2 % (docs/platform.md).
-    if (run.frames >= clean_frames_to_track && run.points_scored == 0) {
+    if (!run.truth_available)
+        v.not_judged.push_back(
+            "rule 5: no ground truth (a replay without a truth CSV): "
+            "nothing to score the 3D points against");
+    if (run.truth_available && run.frames >= clean_frames_to_track && run.points_scored == 0) {
         v.ok = false;
         v.violations.push_back("rule 5: no 3D point in a clean run of " +
                                std::to_string(run.frames) + " frames");

@@ -198,6 +198,7 @@ json fault_run_json(const fault_run_result& r) {
         {"hard_error", run.hard_error},
         {"hard_error_ms", null_if(run.hard_error, run.hard_error_ms)},
         {"failed_checks_before_give_up", run.failed_checks_before_give_up},
+        {"truth_available", run.truth_available},
         {"boxes_scored", run.boxes_scored},
         {"points_scored", run.points_scored},
         {"max_box_err_px", run.max_box_err_px},
@@ -245,6 +246,7 @@ run_observation run_of(const json& j) {
     run.hard_error = j.value("hard_error", false);
     run.hard_error_ms = num(j, "hard_error_ms");
     run.failed_checks_before_give_up = integer(j, "failed_checks_before_give_up");
+    run.truth_available = j.value("truth_available", true);
     run.boxes_scored = integer(j, "boxes_scored");
     run.points_scored = integer(j, "points_scored");
     run.max_box_err_px = num(j, "max_box_err_px", 0);

@@ -141,6 +141,9 @@ struct run_observation {
     int failed_checks_before_give_up = 0;
     // The firmware's output against the scene's ground truth (scoreboard):
     // boxes and 3D points scored, and their worst errors.
+    // The scene's ground truth exists (a replay without a truth CSV has none:
+    // the output rules of a clean run cannot be judged).
+    bool truth_available = true;
     int boxes_scored = 0, points_scored = 0;
     double max_box_err_px = 0, max_depth_err_pct = 0;
     recovery_observation recovery;  // rule 11

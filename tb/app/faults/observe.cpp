@@ -522,6 +522,7 @@ run_observation observe(platform::platform_top& top, const platform::scoreboard_
     run_observation run;
     const simtime::ticks period = top.config().period;
     run.frames = top.config().frames;
+    run.truth_available = !(top.replay() && !top.replay()->has_truth());
     run.mode = dsp::pipeline_mode_name(top.config().mode);
     run.dsk_version = top.config().dsk.version;
     run.period_ms = to_ms(period);
