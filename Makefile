@@ -148,12 +148,14 @@ coverage: deps
 # MUTANT_JOBS mutants at a time (empty: the runner's default, 1).
 MUTANT_JOBS ?=
 MUTANTS_ARGS ?=
-# mutants-ci: a fixed slice the smoke campaign kills, three firmware mutants
-# of different kinds (hard-error path never taken, pair drops not counted,
-# the left frame processed twice) and one RTL mutant: MUTANTS_CI_RTL, or if
-# empty the first id the generator makes with seed MUTANTS_CI_RTL_SEED.
-MUTANTS_CI_FIRMWARE ?= fw-03-hard-error-never-taken,fw-09-pair-drops-not-counted,fw-15-left-frame-twice
-MUTANTS_CI_RTL ?=
+# mutants-ci: a fixed slice the smoke campaign kills, two firmware mutants
+# of different kinds (the left frame processed twice: pair identity; the
+# watchdog re-arming a healthy card every period: rule 11 over the clean soak
+# row) and one RTL mutant: MUTANTS_CI_RTL (the card counting every failed
+# check since ENABLE: rule 11 over the intermittent soak row), or if empty
+# the first id the generator makes with seed MUTANTS_CI_RTL_SEED.
+MUTANTS_CI_FIRMWARE ?= fw-15-left-frame-twice,fw-24-watchdog-progress-saved-first
+MUTANTS_CI_RTL ?= rt-01-oe-failures-never-cleared
 MUTANTS_CI_RTL_SEED ?= 1
 MUTANTS_CI_RTL_DIR ?= build-mutants/rtl-ci
 .PHONY: mutants mutants-ci
