@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <csignal>
+#include <fstream>
 
 namespace cli {
 
@@ -43,6 +44,23 @@ void untie_forked_child() {
     prctl(PR_SET_PDEATHSIG, SIGTERM);
     // The parent died before the request: nobody will reap this child's work.
     if (getppid() == 1) _exit(128 + SIGTERM);
+}
+
+bool read_resumed(const std::string& dir, const std::string& name, nlohmann::json* document,
+                  std::string* error) {
+    const std::string path = dir + "/" + name;
+    std::ifstream in(path);
+    if (!in) {
+        *error = "--resume: " + path + " not found (the folder of an interrupted run)";
+        return false;
+    }
+    try {
+        *document = nlohmann::json::parse(in);
+    } catch (const std::exception& e) {
+        *error = "--resume: " + path + " is unreadable: " + e.what();
+        return false;
+    }
+    return true;
 }
 
 std::string signal_name(int signo) {

@@ -7,6 +7,8 @@
 
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 namespace cli {
 
 class interrupt_catcher {
@@ -27,5 +29,10 @@ void untie_forked_child();
 
 // "SIGTERM", "SIGINT", else "signal N".
 std::string signal_name(int signo);
+
+// --resume DIR: the interrupted run's document DIR/NAME (campaign.json,
+// sweep.json); false and *error (one line) if it is missing or unreadable.
+bool read_resumed(const std::string& dir, const std::string& name, nlohmann::json* document,
+                  std::string* error);
 
 }  // namespace cli

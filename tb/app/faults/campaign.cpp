@@ -391,18 +391,8 @@ namespace {
 // campaign (name, seeds, shard, match); false and *error if not.
 bool rows_to_keep(const campaign_options& o, std::map<int, json>* kept, std::string* error) {
     const std::string path = o.out_dir + "/campaign.json";
-    std::ifstream in(path);
-    if (!in) {
-        *error = "--resume: " + path + " not found (the folder of an interrupted campaign)";
-        return false;
-    }
     json previous;
-    try {
-        previous = json::parse(in);
-    } catch (const std::exception& e) {
-        *error = "--resume: " + path + " is unreadable: " + e.what();
-        return false;
-    }
+    if (!cli::read_resumed(o.out_dir, "campaign.json", &previous, error)) return false;
     const std::string shard = std::to_string(o.shard) + "/" + std::to_string(o.shards);
     if (previous.value("campaign", std::string()) != o.name ||
         previous.value("seeds", -1) != o.seeds || previous.value("shard", std::string()) != shard ||

@@ -91,14 +91,16 @@ const plan_entry smoke_faults[] = {
 // one-frame faults on alternating sensors spaced by good frames (more than
 // RETRY_LIMIT 8: none may add up to a hard error), and a slow drift that
 // slips every few frames (+1 ppm: 0.41 clock a frame).
+constexpr const char* ten_intermittent_faults =
+    "skew:sensor=L,lines=3@frame=4 drop-line:sensor=R,line=100@frame=9 "
+    "drop-frame:sensor=L@frame=14 skew:sensor=R,pixels=1@frame=19 "
+    "drop-line:sensor=L,line=300@frame=24 drop-frame:sensor=R@frame=29 "
+    "skew:sensor=R,lines=2@frame=34 drop-line:sensor=R,line=20@frame=39 "
+    "skew:sensor=L,pixels=2@frame=44 drop-frame:sensor=L@frame=49";
+
 const plan_entry smoke_soak[] = {
     {nullptr, 64, 8},
-    {"skew:sensor=L,lines=3@frame=4 drop-line:sensor=R,line=100@frame=9 "
-     "drop-frame:sensor=L@frame=14 skew:sensor=R,pixels=1@frame=19 "
-     "drop-line:sensor=L,line=300@frame=24 drop-frame:sensor=R@frame=29 "
-     "skew:sensor=R,lines=2@frame=34 drop-line:sensor=R,line=20@frame=39 "
-     "skew:sensor=L,pixels=2@frame=44 drop-frame:sensor=L@frame=49",
-     54, 8},
+    {ten_intermittent_faults, 54, 8},
     {"drift:sensor=L,ppm=1", 64, 8},
 };
 const plan_entry full_faults[] = {
@@ -149,12 +151,7 @@ const plan_entry full_faults[] = {
 const plan_entry full_soak[] = {
     {nullptr, 64, 8},
     {nullptr, 100, 8},
-    {"skew:sensor=L,lines=3@frame=4 drop-line:sensor=R,line=100@frame=9 "
-     "drop-frame:sensor=L@frame=14 skew:sensor=R,pixels=1@frame=19 "
-     "drop-line:sensor=L,line=300@frame=24 drop-frame:sensor=R@frame=29 "
-     "skew:sensor=R,lines=2@frame=34 drop-line:sensor=R,line=20@frame=39 "
-     "skew:sensor=L,pixels=2@frame=44 drop-frame:sensor=L@frame=49",
-     54, 8},
+    {ten_intermittent_faults, 54, 8},
     {"skew:sensor=R,lines=3@frame=4 drop-line:sensor=L,line=100@frame=9 "
      "drop-frame:sensor=R@frame=14 skew:sensor=L,pixels=1@frame=19 "
      "drop-line:sensor=R,line=300@frame=24 drop-frame:sensor=L@frame=29 "

@@ -66,18 +66,8 @@ void print_summary(const json& summary, const std::string& dir) {
 // the same sweep (grid, base settings, shard, screening).
 bool keep_finished_points(const sweep_options& o, sweep_plan* plan, std::string* error) {
     const std::string path = o.out_dir + "/sweep.json";
-    std::ifstream in(path);
-    if (!in) {
-        *error = "--resume: " + path + " not found (the folder of an interrupted sweep)";
-        return false;
-    }
     json previous;
-    try {
-        previous = json::parse(in);
-    } catch (const std::exception& e) {
-        *error = "--resume: " + path + " is unreadable: " + e.what();
-        return false;
-    }
+    if (!cli::read_resumed(o.out_dir, "sweep.json", &previous, error)) return false;
     const json header = sweep_header(o, *plan);
     for (const char* key : {"grid", "base", "shard", "screen", "points_total"})
         if (previous.value(key, json()) != header.at(key)) {
