@@ -217,15 +217,21 @@ int first_moving_scene_frame(const platform_top& top) {
     const scene::scenario& scenario = top.config().scenario;
     if (scenario.scene.balls.empty()) return -1;
     const scene::ball_desc& ball = scenario.scene.balls[0];
-    for (uint64_t k = 1;; ++k) {
-        const double t0 = top.source().scene_time_s(1, k - 1);
-        const double t1 = top.source().scene_time_s(1, k);
-        if (t1 < 0.0) return -1;
-        if (t0 < 0.0) continue;
+    // A frame the right sensor never rendered (it dropped it) is the left
+    // one's; one neither rendered is skipped, not the end.
+    const auto time_of = [&top](uint64_t k) {
+        const double right = top.source().scene_time_s(1, k);
+        return right >= 0.0 ? right : top.source().scene_time_s(0, k);
+    };
+    const uint64_t last = static_cast<uint64_t>(top.config().frames) + 2;
+    for (uint64_t k = 1; k <= last; ++k) {
+        const double t0 = time_of(k - 1), t1 = time_of(k);
+        if (t0 < 0.0 || t1 < 0.0) continue;
         const scene::vec3 a = scene::ball_truth_at(scenario.scene.rig, ball, t0).centre_m;
         const scene::vec3 b = scene::ball_truth_at(scenario.scene.rig, ball, t1).centre_m;
         if (a.x != b.x || a.y != b.y || a.z != b.z) return static_cast<int>(k);
     }
+    return -1;
 }
 
 // Tracking and 3D after the first detection: box and depth accuracy.

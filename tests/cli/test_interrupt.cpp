@@ -95,12 +95,15 @@ json read_json(const fs::path& path) {
     return json::parse(in);
 }
 
-// Everything but what depends on the host's speed or the run's history.
+// Everything but what depends on the host's speed or the run's history (a
+// run forked from a snapshot before the interrupt may run from the start
+// when resumed, alone in its group).
 json without_host_figures(const json& j) {
     if (j.is_object()) {
         json out = json::object();
         for (auto it = j.begin(); it != j.end(); ++it)
-            if (it.key().find("wall") == std::string::npos && it.key() != "ratio")
+            if (it.key().find("wall") == std::string::npos && it.key() != "ratio" &&
+                it.key() != "snapshot_ms")
                 out[it.key()] = without_host_figures(it.value());
         return out;
     }

@@ -56,6 +56,41 @@ void progress_line::finish() {
     std::fflush(m_out);
 }
 
+namespace {
+
+// The accuracy lines: detection, RMSE, the depth errors.
+void print_accuracy(std::FILE* out, const json& accuracy) {
+    const json& rmse = accuracy.at("rmse_mm");
+    // The same as report.json: a detection without truth of the first motion
+    // (a replay without truth) is still a detection.
+    const json& detected = accuracy.at("detection_frame");
+    std::string latency = !accuracy.at("detect_latency_frames").is_null()
+                              ? "detected " + accuracy.at("detect_latency_frames").dump() +
+                                    " frame(s) after the first motion"
+                          : detected.is_null() ? std::string("no detection")
+                                               : "detected at scene frame " + detected.dump() +
+                                                     " (no truth of the first motion)";
+    std::fprintf(out, "accuracy  %d frames tracked, %s", accuracy.at("frames_tracked").get<int>(),
+                 latency.c_str());
+    if (rmse.at("x").is_null())
+        std::fprintf(out, ", no scored 3D points\n");
+    else
+        std::fprintf(out, ", RMSE X %.1f Y %.1f Z %.1f mm over %d points\n",
+                     number_or(rmse.at("x"), 0), number_or(rmse.at("y"), 0),
+                     number_or(rmse.at("z"), 0), accuracy.at("points_scored").get<int>());
+    if (!rmse.at("x").is_null()) {
+        const json& near = accuracy.at("depth_err_pct_max");
+        char in_range[64] = "none in range";
+        if (!near.is_null())
+            std::snprintf(in_range, sizeof in_range, "max %.2f %% over %d", near.get<double>(),
+                          accuracy.at("depth_scored_1_3m").get<int>());
+        std::fprintf(out, "          depth error: max %.2f %% over every scored point; 1-3 m: %s\n",
+                     number_or(accuracy.at("depth_err_pct_max_all"), 0), in_range);
+    }
+}
+
+}  // namespace
+
 void print_summary(std::FILE* out, const json& report, const std::vector<std::string>& written,
                    const std::vector<std::string>& extra_lines) {
     const json& config = report.at("config");
@@ -121,33 +156,7 @@ void print_summary(std::FILE* out, const json& report, const std::vector<std::st
                  "pairs forwarded\n",
                  sync.at("mismatches_detected").get<int>(), sync.at("resyncs").get<int>(),
                  sync.at("unsynced_pairs_used").get<int>(), sync.at("pairs_forwarded").get<int>());
-    const json& rmse = accuracy.at("rmse_mm");
-    // The same as report.json: a detection without truth of the first motion
-    // (a replay without truth) is still a detection.
-    const json& detected = accuracy.at("detection_frame");
-    std::string latency = !accuracy.at("detect_latency_frames").is_null()
-                              ? "detected " + accuracy.at("detect_latency_frames").dump() +
-                                    " frame(s) after the first motion"
-                          : detected.is_null() ? std::string("no detection")
-                                               : "detected at scene frame " + detected.dump() +
-                                                     " (no truth of the first motion)";
-    std::fprintf(out, "accuracy  %d frames tracked, %s", accuracy.at("frames_tracked").get<int>(),
-                 latency.c_str());
-    if (rmse.at("x").is_null())
-        std::fprintf(out, ", no scored 3D points\n");
-    else
-        std::fprintf(out, ", RMSE X %.1f Y %.1f Z %.1f mm over %d points\n",
-                     number_or(rmse.at("x"), 0), number_or(rmse.at("y"), 0),
-                     number_or(rmse.at("z"), 0), accuracy.at("points_scored").get<int>());
-    if (!rmse.at("x").is_null()) {
-        const json& near = accuracy.at("depth_err_pct_max");
-        char in_range[64] = "none in range";
-        if (!near.is_null())
-            std::snprintf(in_range, sizeof in_range, "max %.2f %% over %d", near.get<double>(),
-                          accuracy.at("depth_scored_1_3m").get<int>());
-        std::fprintf(out, "          depth error: max %.2f %% over every scored point; 1-3 m: %s\n",
-                     number_or(accuracy.at("depth_err_pct_max_all"), 0), in_range);
-    }
+    print_accuracy(out, accuracy);
     std::fprintf(out, "sim       %.1f ms simulated in %.2f s wall (%.4f x real time)\n",
                  1e3 * sim.at("simulated_s").get<double>(), sim.at("wall_s").get<double>(),
                  sim.at("ratio").get<double>());

@@ -269,119 +269,146 @@ int member_status(const std::string& dir, int leader_status, double* wall, doubl
 // processes computing at a time (job_tokens.h: a spawned run holds a token
 // until it is reaped, a snapshot group's leader until its fault-free run
 // ends, each of its forked runs while it runs); fills rows[i] as run i ends.
-// Stops the runs under way (their children: a leader's forked runs end with
-// it, cli::untie_forked_child) and reaps them.
-void stop_running(const std::map<pid_t, size_t>& running) {
-    for (const auto& [pid, unit_index] : running) kill(pid, SIGTERM);
-    for (const auto& [pid, unit_index] : running) {
-        int status = 0;
-        while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-        }
-    }
-}
+// An interrupt stops the runs under way: rows[i].finished stays false.
+class plan_runner {
+  public:
+    plan_runner(const campaign_options& o, const std::vector<campaign_run>& plan,
+                std::vector<campaign_row>& rows, std::FILE* log)
+        : m_o(o),
+          m_plan(plan),
+          m_rows(rows),
+          m_log(log),
+          m_units(units_of(o, plan)),
+          m_tokens(job_tokens::make(o.jobs)),
+          m_started(m_units.size()) {}
 
-void run_plan(const campaign_options& o, const std::vector<campaign_run>& plan,
-              std::vector<campaign_row>& rows, std::FILE* log,
-              const cli::interrupt_catcher& interrupt) {
-    std::error_code ec;
-    const std::vector<unit> units = units_of(o, plan);
-    job_tokens tokens = job_tokens::make(o.jobs);
-    std::map<pid_t, size_t> running;  // pid -> unit
-    std::vector<std::chrono::steady_clock::time_point> started(units.size());
-    const std::function<std::string(size_t)> run_dir = [&](size_t i) {
-        return o.out_dir + "/runs/" + std::to_string(plan[i].index);
-    };
-    size_t next = 0, done = 0;
-    const auto finish = [&](size_t i, int status, double wall) {
-        campaign_row& row = rows[i];
+    void run(const cli::interrupt_catcher& interrupt) {
+        if (!m_tokens.valid()) {
+            for (campaign_row& row : m_rows) {
+                row.error = "cannot create the job pipe";
+                row.finished = true;
+            }
+            return;
+        }
+        while (m_done < m_plan.size() && !interrupt.caught()) {
+            start_units();
+            if (!m_running.empty() && !reap_one()) break;
+        }
+        if (interrupt.caught()) stop();
+        m_tokens.close_fds();
+    }
+
+  private:
+    std::string run_dir(size_t i) const {
+        return m_o.out_dir + "/runs/" + std::to_string(m_plan[i].index);
+    }
+
+    void finish(size_t i, int status, double wall) {
+        campaign_row& row = m_rows[i];
         row.finished = true;
         row.wall_s = wall;
         collect(row, run_dir(i), status);
-        if (!o.keep_runs && row.ran) fs::remove_all(run_dir(i), ec);
-        ++done;
-        if (log) log_row(log, done, plan.size(), row);
-    };
-    if (!tokens.valid()) {
-        for (size_t i = 0; i < plan.size(); ++i) {
-            rows[i].error = "cannot create the job pipe";
-            rows[i].finished = true;
-        }
-        return;
+        std::error_code ec;
+        if (!m_o.keep_runs && row.ran) fs::remove_all(run_dir(i), ec);
+        ++m_done;
+        if (m_log) log_row(m_log, m_done, m_plan.size(), row);
     }
-    while (done < plan.size() && !interrupt.caught()) {
-        while (next < units.size() && tokens.try_take()) {
-            const unit& u = units[next];
+
+    // A group's runs as their leader's child statuses say.
+    void finish_group(const unit& u, int leader_status) {
+        for (size_t i : u.runs) {
+            double wall = 0;
+            const int status =
+                member_status(run_dir(i), leader_status, &wall, &m_rows[i].snapshot_ms);
+            finish(i, status, wall);
+        }
+    }
+
+    // Starts the units a free job token allows.
+    void start_units() {
+        std::error_code ec;
+        while (m_next < m_units.size() && m_tokens.try_take()) {
+            const unit& u = m_units[m_next];
             for (size_t i : u.runs) {
-                rows[i].run = plan[i];
+                m_rows[i].run = m_plan[i];
                 fs::remove_all(run_dir(i), ec);
                 fs::create_directories(run_dir(i), ec);
             }
-            std::string spawn_error;
-            const pid_t pid = u.group
-                                  ? start_group(o, plan, u, run_dir, tokens, &spawn_error)
-                                  : spawn_run(o, plan[u.runs[0]], run_dir(u.runs[0]), &spawn_error);
+            std::string error;
+            const std::function<std::string(size_t)> dir = [this](size_t i) { return run_dir(i); };
+            const pid_t pid = u.group ? start_group(m_o, m_plan, u, dir, m_tokens, &error)
+                                      : spawn_run(m_o, m_plan[u.runs[0]], dir(u.runs[0]), &error);
             if (pid < 0) {
-                tokens.put();
+                m_tokens.put();
                 for (size_t i : u.runs) {
-                    rows[i].error = spawn_error;
-                    rows[i].finished = true;
+                    m_rows[i].error = error;
+                    m_rows[i].finished = true;
                 }
-                done += u.runs.size();
+                m_done += u.runs.size();
             } else {
-                running[pid] = next;
-                started[next] = std::chrono::steady_clock::now();
+                m_running[pid] = m_next;
+                m_started[m_next] = std::chrono::steady_clock::now();
             }
-            ++next;
+            ++m_next;
         }
-        if (running.empty()) continue;
-        // With runs still to start, look for a free token now and then (a
-        // group's leader or forked run frees one without the campaign
-        // reaping anything); else wait for a child.
+    }
+
+    // With runs still to start, looks for a free token now and then (a
+    // group's leader or forked run frees one without the campaign reaping
+    // anything); else waits for a child. False when nothing can be waited for.
+    bool reap_one() {
         int status = 0;
-        const pid_t pid = waitpid(-1, &status, next < units.size() ? WNOHANG : 0);
+        const pid_t pid = waitpid(-1, &status, m_next < m_units.size() ? WNOHANG : 0);
         if (pid == 0) {
-            tokens.wait_free(100);
-            continue;
+            m_tokens.wait_free(100);
+            return true;
         }
-        if (pid < 0) {
-            if (errno == EINTR) continue;
-            break;
-        }
-        const auto it = running.find(pid);
-        if (it == running.end()) continue;
-        const unit& u = units[it->second];
+        if (pid < 0) return errno == EINTR;  // an interrupt is looked at by the caller
+        const auto it = m_running.find(pid);
+        if (it == m_running.end()) return true;
+        const unit& u = m_units[it->second];
         const double wall =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - started[it->second])
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - m_started[it->second])
                 .count();
-        running.erase(it);
+        m_running.erase(it);
         // A run's token comes back here; a leader gave its own back unless it was killed.
-        if (!u.group || WIFSIGNALED(status)) tokens.put();
-        if (!u.group) {
+        if (!u.group || WIFSIGNALED(status)) m_tokens.put();
+        if (u.group)
+            finish_group(u, status);
+        else
             finish(u.runs[0], status, wall);
-            continue;
-        }
-        for (size_t i : u.runs) {
-            double member_wall = 0;
-            const int member =
-                member_status(run_dir(i), status, &member_wall, &rows[i].snapshot_ms);
-            finish(i, member, member_wall);
-        }
+        return true;
     }
-    if (interrupt.caught()) {
-        stop_running(running);
-        // A stopped group's runs that had finished wrote their status.
-        for (const auto& [pid, unit_index] : running) {
-            if (!units[unit_index].group) continue;
-            for (size_t i : units[unit_index].runs) {
+
+    // Stops the runs under way (a leader's forked runs end with it,
+    // cli::untie_forked_child) and reaps them; a stopped group's runs that had
+    // finished wrote their status and count.
+    void stop() {
+        for (const auto& [pid, unit_index] : m_running) kill(pid, SIGTERM);
+        for (const auto& [pid, unit_index] : m_running) {
+            int status = 0;
+            while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+            }
+            if (!m_units[unit_index].group) continue;
+            for (size_t i : m_units[unit_index].runs) {
                 if (!fs::exists(run_dir(i) + "/status")) continue;
-                double member_wall = 0;
-                const int member = member_status(run_dir(i), 0, &member_wall, &rows[i].snapshot_ms);
-                finish(i, member, member_wall);
+                double wall = 0;
+                const int member = member_status(run_dir(i), 0, &wall, &m_rows[i].snapshot_ms);
+                finish(i, member, wall);
             }
         }
     }
-    tokens.close_fds();
-}
+
+    const campaign_options& m_o;
+    const std::vector<campaign_run>& m_plan;
+    std::vector<campaign_row>& m_rows;
+    std::FILE* m_log;
+    const std::vector<unit> m_units;
+    job_tokens m_tokens;
+    std::map<pid_t, size_t> m_running;  // pid -> unit
+    std::vector<std::chrono::steady_clock::time_point> m_started;
+    size_t m_next = 0, m_done = 0;
+};
 
 }  // namespace
 
@@ -427,7 +454,7 @@ std::vector<campaign_row> run_campaign(const campaign_options& given, std::FILE*
     }
     const cli::interrupt_catcher interrupt;
     const auto t0 = std::chrono::steady_clock::now();
-    run_plan(o, plan, rows, log, interrupt);
+    plan_runner(o, plan, rows, log).run(interrupt);
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     for (const campaign_row& r : rows)
