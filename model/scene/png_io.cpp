@@ -93,11 +93,11 @@ png_info read_image_info(const std::string& path) {
 }
 
 rgb_image read_image_rgb(const std::string& path) {
-    const png_info info = read_image_info(path);
+    read_image_info(path);  // its checks: format, depth
     int w = 0, h = 0, n = 0;
     std::unique_ptr<stbi_uc, stbi_deleter> pixels(stbi_load(path.c_str(), &w, &h, &n, 3));
     if (!pixels) fail_image(path, std::string("cannot decode: ") + stbi_failure_reason());
-    rgb_image out(info.width, info.height);
+    rgb_image out(w, h);  // the decoded size, whatever the header claimed
     std::memcpy(out.pixels.data(), pixels.get(), out.pixels.size() * sizeof(dsp::rgb8));
     return out;
 }

@@ -87,6 +87,13 @@ bool parse_pattern(const std::string& text, Pattern* out) {
 
 }  // namespace
 
+bool replay_file_name(const std::string& pattern, int number, std::string* name) {
+    replay::name_pattern parsed;
+    if (!parse_pattern(pattern, &parsed)) return false;
+    *name = parsed.format(number);
+    return true;
+}
+
 double replay_truth::value(int frame, const std::string& column) const {
     const auto row = rows.find(frame);
     if (row == rows.end())

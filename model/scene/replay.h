@@ -122,6 +122,7 @@ class replay {
     };
 
     name_pattern m_pattern[2];  // [camera_id]
+    friend bool replay_file_name(const std::string&, int, std::string*);
     replay_calibration m_calibration;
     after_last_policy m_after_last = after_last_policy::error;
     replay_truth m_truth;
@@ -129,5 +130,9 @@ class replay {
     rgb_image m_cache[2];
     int m_cached_index[2] = {-1, -1};
 };
+
+// The file a manifest's pattern names for `number` (the pattern itself when
+// it has no %), as a replay reads it; false if the pattern is no valid one.
+bool replay_file_name(const std::string& pattern, int number, std::string* name);
 
 }  // namespace scene

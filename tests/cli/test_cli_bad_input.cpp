@@ -4,6 +4,7 @@
 // ones runs (the negative control: the errors are not spurious).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -35,7 +36,8 @@ std::string temp(const std::string& name) {
 }
 
 run_output run_binary(const std::string& args) {
-    const std::string err = temp("stderr.txt");
+    // One file per test process: ctest -j runs this file's tests side by side.
+    const std::string err = temp("stderr_" + std::to_string(getpid()) + ".txt");
     const std::string command =
         std::string(STEREOSIM_BINARY) + " " + args + " 2>" + err + " >/dev/null";
     const int raw = std::system(command.c_str());
@@ -52,7 +54,7 @@ void write(const std::string& path, const std::string& text) {
 // Runs with --out into a fresh folder; expects exit 2, one line containing
 // `expected`, and nothing written.
 void expect_bad(const std::string& args, const std::string& expected) {
-    const std::string out = temp("out");
+    const std::string out = temp("out_" + std::to_string(getpid()));
     fs::remove_all(out);
     const run_output r = run_binary(args + " --out " + out);
     EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
@@ -179,6 +181,35 @@ TEST(cli_bad_input, unwritable_out_folder) {
     EXPECT_NE(r.err.find("cannot create output folder '" + out + "'"), std::string::npos) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     std::printf("unwritable --out -> exit %d: %s", r.status, r.err.c_str());
+}
+
+// --resume keeps only rows of this campaign's own plan: a row another
+// stereosim's plan ran under the same index is refused, not merged.
+TEST(cli_bad_input, resume_of_another_plan) {
+    const std::string dir = temp("resume");
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string document =
+        R"({"campaign":"smoke","seeds":0,"shard":"1/1","match":"","rows":[{"index":0,)"
+        R"("fault":"bogus","seed":3,"frames":8,"retry_limit":8,"ran":true}]})";
+    write(dir + "/campaign.json", document);
+    const struct {
+        std::string args, message;
+    } bad[] = {
+        {"faults --campaign smoke --resume " + dir,
+         "run 0 of " + dir + "/campaign.json is not this campaign's"},
+        {"faults --campaign smoke --resume " + dir + " --emit-slurm", "no --emit-slurm"},
+        {"sweep --grid dsk.eclk_mhz=100,133 --resume " + dir + " --emit-slurm", "no --emit-slurm"},
+        {"sweep --grid dsk.eclk_mhz=100,133 --resume " + dir, "sweep.json not found"},
+    };
+    for (const auto& b : bad) {
+        const run_output r = run_binary(b.args);
+        EXPECT_EQ(r.status, 2) << b.args << "\n" << r.err;
+        EXPECT_NE(r.err.find(b.message), std::string::npos) << b.args << "\n" << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_EQ(read_file(dir + "/campaign.json"), document) << "--resume changed the folder";
+    }
+    fs::remove_all(dir);
 }
 
 }  // namespace

@@ -39,6 +39,7 @@ child start(const std::vector<std::string>& args) {
         dup2(fds[1], STDOUT_FILENO);
         dup2(fds[1], STDERR_FILENO);
         close(fds[0]);
+        close(fds[1]);
         std::vector<char*> argv;
         std::vector<std::string> all = {STEREOSIM_BINARY};
         all.insert(all.end(), args.begin(), args.end());
@@ -76,17 +77,28 @@ int finish(child& c) {
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
-// Processes whose command line names `dir`: a run left behind.
+// Processes whose command line names `dir`: a run left behind. A stopped
+// child's /proc entry may linger a moment after its parent reaped it.
 int processes_naming(const std::string& dir) {
-    int found = 0;
-    DIR* proc = opendir("/proc");
-    for (dirent* e; proc && (e = readdir(proc)) != nullptr;) {
-        if (e->d_name[0] < '0' || e->d_name[0] > '9') continue;
-        std::ifstream in(std::string("/proc/") + e->d_name + "/cmdline");
-        std::string cmdline((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        found += cmdline.find(dir) != std::string::npos;
+    const auto count = [&] {
+        int found = 0;
+        DIR* proc = opendir("/proc");
+        for (dirent* e; proc && (e = readdir(proc)) != nullptr;) {
+            if (e->d_name[0] < '0' || e->d_name[0] > '9') continue;
+            std::ifstream in(std::string("/proc/") + e->d_name + "/cmdline");
+            std::string cmdline((std::istreambuf_iterator<char>(in)),
+                                std::istreambuf_iterator<char>());
+            found += cmdline.find(dir) != std::string::npos;
+        }
+        if (proc) closedir(proc);
+        return found;
+    };
+    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+    int found = count();
+    while (found > 0 && std::chrono::steady_clock::now() < end) {
+        usleep(100000);
+        found = count();
     }
-    if (proc) closedir(proc);
     return found;
 }
 
@@ -137,6 +149,7 @@ TEST(Interrupt, ACampaignStopsItsRunsAndResumes) {
     std::vector<std::string> args = slice;
     args.insert(args.end(), {"--out", cut.string()});
     child c = start(args);
+    ASSERT_GT(c.pid, 0);
     ASSERT_TRUE(wait_for(c, "[1/3]", 120)) << c.seen;
     kill(c.pid, SIGTERM);
     EXPECT_EQ(finish(c), 128 + SIGTERM) << c.seen;
@@ -150,6 +163,7 @@ TEST(Interrupt, ACampaignStopsItsRunsAndResumes) {
 
     child r = start({"faults", "--campaign", "smoke", "--jobs", "1", "--match", slice.back(),
                      "--resume", cut.string()});
+    ASSERT_GT(r.pid, 0);
     EXPECT_EQ(finish(r), 0) << r.seen;
     EXPECT_NE(r.seen.find("[" + std::to_string(3 - partial["rows"].size()) + "/" +
                           std::to_string(3 - partial["rows"].size()) + "]"),
@@ -159,6 +173,7 @@ TEST(Interrupt, ACampaignStopsItsRunsAndResumes) {
     args = slice;
     args.insert(args.end(), {"--out", whole.string()});
     child w = start(args);
+    ASSERT_GT(w.pid, 0);
     EXPECT_EQ(finish(w), 0) << w.seen;
     const json resumed = read_json(cut / "campaign.json"),
                uncut = read_json(whole / "campaign.json");
@@ -176,6 +191,7 @@ TEST(Interrupt, ASweepStopsItsPointsAndResumes) {
     std::vector<std::string> args = sweep;
     args.insert(args.end(), {"--out", cut.string()});
     child c = start(args);
+    ASSERT_GT(c.pid, 0);
     ASSERT_TRUE(wait_for(c, "sweep: 1/3 points", 120)) << c.seen;
     kill(c.pid, SIGINT);
     EXPECT_EQ(finish(c), 128 + SIGINT) << c.seen;
@@ -190,6 +206,7 @@ TEST(Interrupt, ASweepStopsItsPointsAndResumes) {
     args = sweep;
     args.insert(args.end(), {"--resume", cut.string()});
     child r = start(args);
+    ASSERT_GT(r.pid, 0);
     EXPECT_EQ(finish(r), 0) << r.seen;
     EXPECT_NE(r.seen.find("sweep: " + std::to_string(3 - ran) + "/" + std::to_string(3 - ran) +
                           " points"),
@@ -198,6 +215,7 @@ TEST(Interrupt, ASweepStopsItsPointsAndResumes) {
     args = sweep;
     args.insert(args.end(), {"--out", whole.string()});
     child w = start(args);
+    ASSERT_GT(w.pid, 0);
     EXPECT_EQ(finish(w), 0) << w.seen;
     const json resumed = read_json(cut / "sweep.json"), uncut = read_json(whole / "sweep.json");
     EXPECT_TRUE(resumed["complete"].get<bool>());

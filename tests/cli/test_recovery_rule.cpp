@@ -120,20 +120,29 @@ TEST(RecoveryRule, ARestartWhereHardErrorWasDueIsMissed) {
     EXPECT_EQ(r.longest_streak, 4);
 }
 
-// ENABLE 0 clears the card's count: a firmware re-arm after a HARD_ERROR
-// gives the card RETRY_LIMIT restarts again.
+// IDLE (ENABLE 0) clears the card's count: a firmware re-arm after a
+// HARD_ERROR gives the card RETRY_LIMIT restarts again.
 TEST(RecoveryRule, TheFirmwaresReArmStartsTheCountAgain) {
-    run_builder b;
-    ticks t = ms(0.1);
-    for (int i = 0; i < 2; ++i) t = b.fail(t, 1, card_state::oe_low) + ms(0.047);
-    t = b.fail(t, 1, card_state::hard_error);
-    b.enable(t + ms(0.01), 0);
-    b.enable(t + ms(0.02), 1);
-    b.start(t + ms(0.021));
-    t += ms(0.021);
-    for (int i = 0; i < 2; ++i) t = b.fail(t, 1, card_state::oe_low) + ms(0.047);
-    b.fail(t, 1, card_state::hard_error);
-    EXPECT_EQ(b.judge().broken(), 0) << first(b.judge());
+    for (const bool idle : {true, false}) {
+        run_builder b;
+        ticks t = ms(0.1);
+        for (int i = 0; i < 2; ++i) t = b.fail(t, 1, card_state::oe_low) + ms(0.047);
+        t = b.fail(t, 1, card_state::hard_error);
+        b.enable(t + ms(0.01), 0);
+        if (idle) b.state(t + ms(0.0101), card_state::idle);
+        b.enable(t + ms(0.02), 1);
+        b.start(t + ms(0.021));
+        t += ms(0.021);
+        for (int i = 0; i < 2; ++i) t = b.fail(t, 1, card_state::oe_low) + ms(0.047);
+        b.fail(t, 1, card_state::hard_error);
+        const recovery_observation r = b.judge();
+        // A card that never passed IDLE kept counting: its restarts were due
+        // as HARD_ERRORs.
+        EXPECT_EQ(r.hard_errors_missed, idle ? 0 : 2) << first(r);
+        if (idle) {
+            EXPECT_EQ(r.broken(), 0) << first(r);
+        }
+    }
 }
 
 TEST(RecoveryRule, TheCardActsOnlyOnAFailedCheckItPulses) {
@@ -233,6 +242,30 @@ TEST(RecoveryRule, ASilentCardMustBeActedOnWithinTwoPeriods) {
     EXPECT_EQ(r.missed_watchdogs, 1) << first(r);
     b.in.end = ms(220);  // the end came first
     EXPECT_EQ(b.judge().missed_watchdogs, 0);
+}
+
+// A give-up long after the silence began: the firmware's report ends the
+// judged time, the card's later pulses do not hide the silence before it.
+TEST(RecoveryRule, ALateGiveUpAfterALongSilenceMissedTheWatchdog) {
+    run_builder b;
+    b.in.watchdog = ms(50);
+    b.in.fault_onsets.push_back(0);
+    for (int k = 1; k < 4; ++k) b.in.frame_readies.push_back(ms(1.1) + k * frame);
+    b.in.give_up = ms(400);
+    for (int k = 0; k < 4; ++k) b.in.frame_readies.push_back(ms(450) + k * frame);
+    const recovery_observation r = b.judge();
+    EXPECT_EQ(r.missed_watchdogs, 1) << first(r);
+}
+
+// A CTRL write that keeps ENABLE 1 is no action on a silent card.
+TEST(RecoveryRule, AWriteThatKeepsEnableIsNoAction) {
+    run_builder b;
+    b.in.watchdog = ms(50);
+    b.in.fault_onsets.push_back(0);
+    for (int k = 1; k < 4; ++k) b.in.frame_readies.push_back(ms(1.1) + k * frame);
+    for (int k = 1; k < 10; ++k) b.enable(ms(74.6) + k * ms(50), 1);
+    const recovery_observation r = b.judge();
+    EXPECT_EQ(r.missed_watchdogs, 1) << first(r);
 }
 
 TEST(RecoveryRule, TheFinalStopIsNoAction) {

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <sstream>
 #include <string>
 
@@ -38,6 +39,7 @@ const std::string window = " --set sensor.window_cols=384 --set sensor.window_ro
 
 TEST(ReplayInit, APairOfYourOwnIsWrittenCheckedAndRun) {
     const std::string dir = testsupport::temp_dir("replay-init");
+    ASSERT_FALSE(dir.empty());
     const auto init = stereosim("replay init " + dir + "/png --left " + left_png + " --right " +
                                 right_png + " --focal-px 615 --baseline-mm 100");
     ASSERT_EQ(init.exit_code, 0) << init.output;
@@ -88,6 +90,7 @@ TEST(ReplayInit, APairOfYourOwnIsWrittenCheckedAndRun) {
 
 TEST(ReplayInit, JpegFilesAndNumberedPatterns) {
     const std::string dir = testsupport::temp_dir("replay-init-jpeg");
+    ASSERT_FALSE(dir.empty());
     fs::create_directories(dir + "/frames");
     const cv::Mat left = cv::imread(left_png), right = cv::imread(right_png);
     ASSERT_FALSE(left.empty());
@@ -105,6 +108,9 @@ TEST(ReplayInit, JpegFilesAndNumberedPatterns) {
     EXPECT_LE(run.exit_code, 1) << run.output;
     EXPECT_TRUE(fs::exists(dir + "/out/report.json"));
 
+    cv::Mat small;
+    cv::resize(right, small, cv::Size(192, 144));
+    cv::imwrite(dir + "/frames/small.png", small);
     // Bad input: one line, exit 2, nothing written.
     const struct {
         std::string args, message;
@@ -115,6 +121,11 @@ TEST(ReplayInit, JpegFilesAndNumberedPatterns) {
          "--left has 3 frames from number 1, --right 1 from number 0"},
         {"--left " + dir + "/frames/L_%s.jpg --right " + right_png, "one %d or %0Nd"},
         {"--left " + left_png + " --right " + right_png + " --principal-left 3", "expected X,Y"},
+        {"--left " + dir + "/frames/L_%5d.jpg --right " + right_png, "one %d or %0Nd"},
+        {"--left " + dir + "/frames/L_%d_%d.jpg --right " + right_png, "one %d or %0Nd"},
+        {"--left '" + dir + "/frames/L#1.jpg' --right " + right_png, "without '#'"},
+        // Checked as a run reads it: the pair's sizes differ.
+        {"--left " + left_png + " --right " + dir + "/frames/small.png", "small.png"},
     };
     for (const auto& b : bad) {
         const auto r = stereosim("replay init " + dir + "/bad " + b.args +
@@ -124,6 +135,17 @@ TEST(ReplayInit, JpegFilesAndNumberedPatterns) {
         EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
         EXPECT_FALSE(fs::exists(dir + "/bad")) << b.args;
     }
+    // A folder with a '%' in its name cannot be named by a manifest's pattern.
+    fs::create_directories(dir + "/100%/frames");
+    cv::imwrite(dir + "/100%/frames/L_0.png", left);
+    cv::imwrite(dir + "/100%/frames/R_0.png", right);
+    const auto percent = testsupport::run_command(
+        "cd '" + dir + "/100%' && " + STEREOSIM_BINARY +
+        " replay init out --left frames/L_%d.png --right frames/R_%d.png --focal-px 615 "
+        "--baseline-mm 100");
+    EXPECT_EQ(percent.exit_code, 2) << percent.output;
+    EXPECT_NE(percent.output.find("outside the pattern"), std::string::npos) << percent.output;
+    EXPECT_FALSE(fs::exists(dir + "/100%/out"));
     fs::remove_all(dir);
 }
 

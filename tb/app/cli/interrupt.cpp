@@ -1,10 +1,15 @@
 #include "tb/app/cli/interrupt.h"
 
 #include <sys/prctl.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <fstream>
+#include <thread>
 
 namespace cli {
 
@@ -38,12 +43,67 @@ int interrupt_catcher::caught() const {
     return g_caught;
 }
 
-void untie_forked_child() {
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
-    prctl(PR_SET_PDEATHSIG, SIGTERM);
-    // The parent died before the request: nobody will reap this child's work.
-    if (getppid() == 1) _exit(128 + SIGTERM);
+pid_t fork_untied() {
+    sigset_t held, previous;
+    sigemptyset(&held);
+    sigaddset(&held, SIGINT);
+    sigaddset(&held, SIGTERM);
+    sigprocmask(SIG_BLOCK, &held, &previous);
+    const pid_t parent = getpid();
+    const pid_t pid = fork();
+    if (pid == 0) {
+        std::signal(SIGINT, SIG_DFL);
+        std::signal(SIGTERM, SIG_DFL);
+        prctl(PR_SET_PDEATHSIG, SIGTERM);
+        // The parent died before the request: nobody will reap this child's work.
+        if (getppid() != parent) _exit(128 + SIGTERM);
+    }
+    sigprocmask(SIG_SETMASK, &previous, nullptr);
+    return pid;
+}
+
+pid_t wait_child(const interrupt_catcher& interrupt, int* status) {
+    for (;;) {
+        const pid_t pid = waitpid(-1, status, WNOHANG);
+        if (pid > 0) return pid;
+        if (pid < 0 && errno != EINTR) return -1;
+        if (interrupt.caught()) return 0;
+        // Polled: a child's end interrupts no sleep (SIGCHLD is ignored).
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+}
+
+void stop_children(const std::vector<pid_t>& children, double grace_s) {
+    for (pid_t pid : children) kill(pid, SIGTERM);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(grace_s);
+    std::vector<pid_t> left = children;
+    while (!left.empty() && std::chrono::steady_clock::now() < deadline) {
+        std::vector<pid_t> still;
+        for (pid_t pid : left) {
+            int status = 0;
+            const pid_t r = waitpid(pid, &status, WNOHANG);
+            if (r == 0 || (r < 0 && errno == EINTR)) still.push_back(pid);
+        }
+        left.swap(still);
+        if (!left.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    for (pid_t pid : left) {
+        kill(pid, SIGKILL);
+        int status = 0;
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+        }
+    }
+}
+
+void die_of(int signo) {
+    std::fflush(nullptr);
+    std::signal(signo, SIG_DFL);
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, signo);
+    sigprocmask(SIG_UNBLOCK, &set, nullptr);
+    raise(signo);
+    _exit(128 + signo);
 }
 
 bool read_resumed(const std::string& dir, const std::string& name, nlohmann::json* document,

@@ -17,12 +17,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A pattern's file of frame `number` (the pattern itself when it has no %).
+// A pattern's file of frame `number`, named as a replay will name it.
 std::string file_of(const std::string& pattern, int number) {
-    if (pattern.find('%') == std::string::npos) return pattern;
-    char name[4096];
-    std::snprintf(name, sizeof name, pattern.c_str(), number);
-    return name;
+    std::string name;
+    return scene::replay_file_name(pattern, number, &name) ? name : pattern;
 }
 
 // The frames of a pattern: the first number (0 or 1) and how many files
@@ -38,13 +36,13 @@ std::pair<int, int> frames_of(const std::string& pattern) {
     return {-1, 0};
 }
 
-// A printf pattern of one %d / %0Nd and nothing else with a %.
+// A pattern a manifest can hold: one %d or %0Nd (N 1..9) or none, no '#'
+// (a manifest comment) and no space at either end (a manifest trims it).
 bool pattern_ok(const std::string& pattern) {
-    const size_t at = pattern.find('%');
-    if (at == std::string::npos) return true;
-    size_t i = at + 1;
-    while (i < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[i]))) ++i;
-    return i < pattern.size() && pattern[i] == 'd' && pattern.find('%', i + 1) == std::string::npos;
+    std::string name;
+    return scene::replay_file_name(pattern, 0, &name) && pattern.find('#') == std::string::npos &&
+           !pattern.empty() && !std::isspace(static_cast<unsigned char>(pattern.front())) &&
+           !std::isspace(static_cast<unsigned char>(pattern.back()));
 }
 
 bool point_of(const std::string& text, double* x, double* y) {
@@ -67,8 +65,14 @@ std::string manifest_text(const replay_init_options& o, std::string* error, std:
     if (o.focal_px <= 0) return bad("--focal-px must be > 0 (the focal length in pixels)");
     if (o.baseline_mm <= 0) return bad("--baseline-mm must be > 0 (the cameras' distance)");
     if (!pattern_ok(o.left) || !pattern_ok(o.right))
-        return bad("--left / --right: a file, or a pattern with one %d or %0Nd for the number");
+        return bad(
+            "--left / --right: a file, or a pattern with one %d or %0Nd (N 1..9) for "
+            "the number, without '#' or a space at either end");
     const std::string left = absolute(o.left), right = absolute(o.right);
+    for (const std::string& path : {left, right})
+        if (!pattern_ok(path))
+            return bad("the path " + path +
+                       " has a '%' or '#' outside the pattern: " + "a manifest cannot name it");
     const auto [first, frames] = frames_of(left);
     const auto [first_r, frames_r] = frames_of(right);
     if (frames == 0) return bad("--left: no file " + file_of(left, 0) + " (nor from number 1)");
@@ -122,7 +126,10 @@ bool write_replay_manifest(const replay_init_options& o, std::string* summary, s
         fs::remove(staged, ec);
         if (made) fs::remove(o.dir, ec);
     };
-    if (!(std::ofstream(staged) << text)) {
+    std::ofstream out(staged);
+    out << text;
+    out.close();
+    if (!out) {
         *error = "cannot write " + staged;
         undo();
         return false;

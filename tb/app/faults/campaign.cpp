@@ -16,6 +16,7 @@
 #include <map>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 #include "tb/app/cli/child_run.h"
 #include "tb/app/cli/interrupt.h"
@@ -102,6 +103,7 @@ json row_json(const campaign_row& r) {
               {"seed", r.run.seed},
               {"frames", r.run.frames},
               {"retry_limit", r.run.retry_limit},
+              {"settings", r.run.settings},
               {"ran", r.ran},
               {"exit_code", r.exit_code},
               {"wall_s", r.wall_s},
@@ -245,9 +247,8 @@ pid_t start_group(const campaign_options& o, const std::vector<campaign_run>& pl
         members.push_back({run_args(plan[i], run_dir(i)), run_dir(i),
                            snapshot_trigger_of(specs_of(plan[i]), period)});
     std::fflush(nullptr);
-    const pid_t pid = fork();
+    const pid_t pid = cli::fork_untied();
     if (pid == 0) {
-        cli::untie_forked_child();
         exit_child(o.run_group(members, o.binary, run_dir(u.runs[0]) + "/leader.txt", tokens));
     }
     if (pid < 0) *error = std::string("cannot fork a snapshot group: ") + std::strerror(errno);
@@ -355,12 +356,16 @@ class plan_runner {
 
     // With runs still to start, looks for a free token now and then (a
     // group's leader or forked run frees one without the campaign reaping
-    // anything); else waits for a child. False when nothing can be waited for.
+    // anything); polls, so that an interrupt is never missed in a blocking
+    // wait. False when nothing can be waited for.
     bool reap_one() {
         int status = 0;
-        const pid_t pid = waitpid(-1, &status, m_next < m_units.size() ? WNOHANG : 0);
+        const pid_t pid = waitpid(-1, &status, WNOHANG);
         if (pid == 0) {
-            m_tokens.wait_free(100);
+            if (m_next < m_units.size())
+                m_tokens.wait_free(100);
+            else
+                std::this_thread::sleep_for(std::chrono::milliseconds(20));
             return true;
         }
         if (pid < 0) return errno == EINTR;  // an interrupt is looked at by the caller
@@ -381,14 +386,13 @@ class plan_runner {
     }
 
     // Stops the runs under way (a leader's forked runs end with it,
-    // cli::untie_forked_child) and reaps them; a stopped group's runs that had
+    // cli::fork_untied) and reaps them; a stopped group's runs that had
     // finished wrote their status and count.
     void stop() {
-        for (const auto& [pid, unit_index] : m_running) kill(pid, SIGTERM);
+        std::vector<pid_t> pids;
+        for (const auto& [pid, unit_index] : m_running) pids.push_back(pid);
+        cli::stop_children(pids);
         for (const auto& [pid, unit_index] : m_running) {
-            int status = 0;
-            while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-            }
             if (!m_units[unit_index].group) continue;
             for (size_t i : m_units[unit_index].runs) {
                 if (!fs::exists(run_dir(i) + "/status")) continue;
@@ -414,6 +418,14 @@ class plan_runner {
 
 namespace {
 
+// Whether an interrupted run's row is the plan's run of its index.
+bool same_run(const json& row, const campaign_run& r) {
+    return row.value("fault", std::string()) == (r.fault.empty() ? "clean" : r.fault) &&
+           row.value("seed", uint64_t{0}) == r.seed && row.value("frames", -1) == r.frames &&
+           row.value("retry_limit", -1) == static_cast<int>(r.retry_limit) &&
+           row.value("settings", std::vector<std::string>{}) == r.settings;
+}
+
 // The rows of out_dir's campaign.json that ran, by index, if it is the same
 // campaign (name, seeds, shard, match); false and *error if not.
 bool rows_to_keep(const campaign_options& o, std::map<int, json>* kept, std::string* error) {
@@ -428,8 +440,20 @@ bool rows_to_keep(const campaign_options& o, std::map<int, json>* kept, std::str
                  "differ)";
         return false;
     }
-    for (const json& row : previous.value("rows", json::array()))
-        if (row.value("ran", false)) (*kept)[row.at("index").get<int>()] = row;
+    std::map<int, campaign_run> planned;
+    for (const campaign_run& r : selected_runs(o)) planned[r.index] = r;
+    for (const json& row : previous.value("rows", json::array())) {
+        if (!row.value("ran", false)) continue;
+        const int index = row.value("index", -1);
+        const auto mine = planned.find(index);
+        if (mine == planned.end() || !same_run(row, mine->second)) {
+            *error = "--resume: run " + std::to_string(index) + " of " + path +
+                     " is not this campaign's (its fault, seed, frames, RETRY_LIMIT or settings "
+                     "differ: another stereosim's plan)";
+            return false;
+        }
+        (*kept)[index] = row;
+    }
     return true;
 }
 

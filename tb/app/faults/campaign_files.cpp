@@ -1,5 +1,6 @@
 #include "tb/app/faults/campaign_files.h"
 
+#include "tb/app/cli/staged_files.h"
 #include "tb/app/faults/campaign_coverage.h"
 
 #include <cstdio>
@@ -199,16 +200,24 @@ std::string campaign_table(const json& campaign) {
     return out.str();
 }
 
+// Staged and renamed into place: a second signal or a full disk never leaves
+// a half-written campaign.json for --resume to read.
 bool write_campaign_files(const std::string& dir, const json& campaign, std::string* error) {
-    std::ofstream j(dir + "/campaign.json"), csv(dir + "/campaign.csv"), txt(dir + "/campaign.txt");
+    cli::staged_files staged;
+    if (!staged.open(dir, error)) return false;
+    std::ofstream j(staged.staged_path("campaign.json")), csv(staged.staged_path("campaign.csv")),
+        txt(staged.staged_path("campaign.txt"));
     j << campaign.dump(2) << "\n";
     write_csv(csv, campaign.at("rows"));
     txt << campaign_table(campaign);
+    j.close();
+    csv.close();
+    txt.close();
     if (!j || !csv || !txt) {
         *error = "cannot write the campaign files into " + dir;
         return false;
     }
-    return true;
+    return staged.commit(error);
 }
 
 bool merge_campaign_shards(const std::vector<json>& shards, json* merged, std::string* error) {

@@ -554,9 +554,13 @@ verdict check(const fault_observation& f, const fault_spec& s, const contract_pa
         violate("rule 4: hard error " + std::to_string(run.hard_error_ms - f.onset_ms) +
                 " ms after the onset (bound " + std::to_string(bound) + " periods)");
     // Not before its re-arms either: the card's failed checks since the last
-    // good pair (none: a silent card, the watchdog's give-up).
+    // good pair (none: a silent card, the watchdog's give-up). A give-up with
+    // no cause on the pins after failed checks is held to it too.
     const int due_checks = static_cast<int>((p.hard_error_rearms + 1) * (p.retry_limit + 1));
-    if (v.actual == outcome::hard_error && run.recovery.give_up_cause == "hard_error" &&
+    const std::string& cause = run.recovery.give_up_cause;
+    const bool after_checks =
+        cause == "hard_error" || (cause == "none" && run.failed_checks_before_give_up > 0);
+    if (v.actual == outcome::hard_error && after_checks &&
         run.failed_checks_before_give_up < due_checks)
         violate("rule 4: the firmware gave up after " +
                 std::to_string(run.failed_checks_before_give_up) + " failed checks, before its " +

@@ -107,6 +107,7 @@ int faults_command::execute() {
     }
     std::string error;
     if (!cli::check_slurm_options(m_slurm, &error)) return bad_input(error);
+    if (m_slurm.emit && o.resume) return bad_input("--resume runs here: no --emit-slurm");
     if (m_slurm.emit) return emit_slurm(o);
     nlohmann::json document;
     int interrupted = 0;
@@ -121,7 +122,7 @@ int faults_command::execute() {
                      "%s/campaign.json (incomplete); --resume %s runs the others\n",
                      cli::signal_name(interrupted).c_str(), document.at("rows").size(),
                      o.out_dir.c_str(), o.out_dir.c_str());
-        return 128 + interrupted;
+        cli::die_of(interrupted);
     }
     for (const nlohmann::json& r : document.at("rows"))
         if (!r.value("contract_ok", false)) return 1;

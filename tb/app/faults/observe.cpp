@@ -44,6 +44,20 @@ sensor::fault_kind sensor_kind(const fault_spec& s) {
     }
 }
 
+// The line of frame t a dropped-line fault took: the first readout line at
+// or after its trigger (the sensor drops no blanking line: a trigger past
+// the last readout row takes the next frame's first).
+int64_t dropped_line(const sensor::sensor_profile& p, const fault_spec& s,
+                     const sensor::frame_truth& t, simtime::ticks trigger) {
+    const int64_t first = p.first_row_line, end = first + p.readout_rows();
+    if (s.when.kind == trigger_spec::by::frame)
+        return t.index == s.when.frame && s.line < end ? std::max<int64_t>(s.line, first) : first;
+    const simtime::ticks line_ticks = p.line_pclks * p.mclk_period.num / p.mclk_period.den;
+    if (trigger <= t.start_tick || line_ticks <= 0) return first;
+    const int64_t line = (trigger - t.start_tick + line_ticks - 1) / line_ticks;
+    return std::clamp(line, first, end - 1);
+}
+
 // The tick a fault took effect and the frame it hit, or false if it did not
 // act during the run.
 bool find_onset(const platform::platform_top& top, const fault_spec& s, simtime::ticks* tick,
@@ -73,9 +87,8 @@ bool find_onset(const platform::platform_top& top, const fault_spec& s, simtime:
         const simtime::rational_ticks pclk = p.mclk_period;
         if (s.type == fault_type::skew) *tick -= t.skew_before_pclks * pclk.num / pclk.den;
         if (s.type == fault_type::drop_line)
-            *tick += (static_cast<int64_t>(std::max(s.line, p.first_row_line)) * p.line_pclks +
-                      p.href_start) *
-                     pclk.num / pclk.den;
+            *tick = t.start_tick + (dropped_line(p, s, t, trigger) * p.line_pclks + p.href_start) *
+                                       pclk.num / pclk.den;
         *frame = static_cast<int64_t>(i);
         return *tick < end;
     }

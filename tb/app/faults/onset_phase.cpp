@@ -43,9 +43,8 @@ std::vector<std::string> onset_phases(const platform::platform_top& top, const f
     const platform::island& isl = top.cycle_island();
     const int camera = is_sensor_fault(s.type) ? s.camera : 0;
     const sensor::frame_truth* frame = frame_at(isl.sensor(camera).truth(), onset);
-    if (s.type == fault_type::drop_line) {
-        phases.push_back(line_phase(p, std::max<int64_t>(s.line, p.first_row_line)));
-    } else if (frame != nullptr && line_ticks > 0) {
+    // (A dropped line's onset is its line's HREF: find_onset in observe.cpp.)
+    if (frame != nullptr && line_ticks > 0) {
         phases.push_back(line_phase(p, (onset - frame->start_tick) / line_ticks));
     } else {
         phases.push_back("vertical_blanking");

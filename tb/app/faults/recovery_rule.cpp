@@ -79,9 +79,13 @@ class recovery_judge {
                2 * (t - *origin) > 3 * m_in.card_frame;
     }
 
-    bool enable_cleared_in(ticks after, ticks until) const {
-        for (const tick_value& w : m_in.enable_writes)
-            if (w.tick > after && w.tick <= until && (w.value & 1u) == 0) return true;
+    // Whether the card passed through IDLE in (after, until]: IDLE clears its
+    // count of failed checks (rtl/oe_control.v).
+    bool idle_in(ticks after, ticks until) const {
+        for (const tick_value& s : m_in.card_states)
+            if (s.tick > after && s.tick <= until &&
+                s.value == static_cast<uint32_t>(card_state::idle))
+                return true;
         return false;
     }
 
@@ -106,7 +110,7 @@ class recovery_judge {
         ticks previous = -1;
         for (ticks t : m_in.sync_errors) {
             ++m_r.failed_checks;
-            if (enable_cleared_in(previous, t) || passed_before(t)) streak = 0;
+            if (idle_in(previous, t) || passed_before(t)) streak = 0;
             previous = t;
             m_r.longest_streak = std::max(m_r.longest_streak, ++streak);
             action* reaction = nullptr;
@@ -237,12 +241,17 @@ class recovery_judge {
         enum class mark : uint8_t { event, enable_on, enable_off };
         std::vector<std::pair<ticks, mark>> marks;
         for (ticks t : m_events) marks.emplace_back(t, mark::event);
-        for (const tick_value& w : m_in.enable_writes)
-            marks.emplace_back(w.tick, (w.value & 1u) != 0 ? mark::enable_on : mark::enable_off);
-        std::stable_sort(marks.begin(), marks.end(),
-                         [](const auto& a, const auto& b) { return a.first < b.first; });
+        // Only ENABLE's changes: a CTRL write that keeps ENABLE 1 is no action.
+        bool written = false;
+        for (const tick_value& w : m_in.enable_writes) {
+            const bool on = (w.value & 1u) != 0;
+            if (on != written) marks.emplace_back(w.tick, on ? mark::enable_on : mark::enable_off);
+            written = on;
+        }
         const ticks stop = std::min(m_in.end, m_in.give_up);
         marks.emplace_back(stop, mark::enable_off);
+        std::stable_sort(marks.begin(), marks.end(),
+                         [](const auto& a, const auto& b) { return a.first < b.first; });
         const ticks bound = 2 * m_in.watchdog + m_in.service + watchdog_slack;
         bool enabled = false;
         ticks previous = -1;

@@ -91,9 +91,8 @@ due snapshot_due(const snapshot_trigger& t, const platform::platform_top& top, s
 pid_t fork_member(const snapshot_member& m, platform::platform_top* top, const std::string& binary,
                   const extensions_factory& make, const job_tokens& tokens) {
     std::fflush(nullptr);
-    const pid_t pid = fork();
+    const pid_t pid = cli::fork_untied();
     if (pid != 0) return pid;
-    cli::untie_forked_child();
     tokens.take();
     redirect_output(m.dir + "/log.txt");
     if (top) {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "tb/app/cli/interrupt.h"
 #include "tb/app/sweep/sweep_files.h"
@@ -64,20 +65,22 @@ void print_summary(const json& summary, const std::string& dir) {
 
 // --resume: the points DIR's sweep.json ran, in place of the plan's, if it is
 // the same sweep (grid, base settings, shard, screening).
-bool keep_finished_points(const sweep_options& o, sweep_plan* plan, std::string* error) {
+bool keep_finished_points(const sweep_options& o, const json& previous, sweep_plan* plan,
+                          std::string* error) {
     const std::string path = o.out_dir + "/sweep.json";
-    json previous;
-    if (!cli::read_resumed(o.out_dir, "sweep.json", &previous, error)) return false;
     const json header = sweep_header(o, *plan);
-    for (const char* key : {"grid", "base", "shard", "screen", "points_total"})
+    for (const char* key :
+         {"grid", "base", "shard", "screen", "screen_sample", "screen_margin_ms", "points_total"})
         if (previous.value(key, json()) != header.at(key)) {
             *error = "--resume: " + path + " is another sweep (its " + key + " differs)";
             return false;
         }
+    std::map<json, json*> mine;
+    for (json& p : plan->points) mine[p.at("index")] = &p;
     for (const json& p : previous.value("points", json::array())) {
         if (!p.value("ran", false)) continue;
-        for (json& mine : plan->points)
-            if (mine.at("index") == p.at("index")) mine = p;
+        const auto it = mine.find(p.value("index", json()));
+        if (it != mine.end()) *it->second = p;
     }
     return true;
 }
@@ -123,6 +126,7 @@ int sweep_command::execute() {
     std::string error;
     if (!check_sweep(o, &plan, &error)) return bad_input(error);
     if (o.slurm.emit) {
+        if (!o.resume.empty()) return bad_input("--resume runs here: no --emit-slurm");
         if (o.shard != "1/1")
             return bad_input("--emit-slurm: the array makes the shards; no --shard");
         const std::string sbatch =
@@ -136,6 +140,9 @@ int sweep_command::execute() {
             cli::absolute_path(o.out_dir).c_str());
         return 0;
     }
+    json resumed;  // read before the closed form's minutes: a wrong DIR fails at once
+    if (!o.resume.empty() && !cli::read_resumed(o.out_dir, "sweep.json", &resumed, &error))
+        return bad_input(error);
     std::error_code ec;
     std::filesystem::create_directories(o.out_dir, ec);
     if (ec) return bad_input("cannot create " + o.out_dir + ": " + ec.message());
@@ -152,8 +159,11 @@ int sweep_command::execute() {
     request.out_dir = o.out_dir;
     request.jobs = o.jobs;
     request.keep_runs = o.keep_runs;
-    if (!o.resume.empty() && !keep_finished_points(o, &plan, &error)) return bad_input(error);
+    if (!o.resume.empty() && !keep_finished_points(o, resumed, &plan, &error))
+        return bad_input(error);
     int interrupted = 0;
+    // Held until the files are written: a second signal does not cut them short.
+    const cli::interrupt_catcher held;
     const int failed = run_points(request, plan.points, stderr, &interrupted);
     json sweep = sweep_header(o, plan);
     sweep["complete"] = interrupted == 0;
@@ -171,7 +181,7 @@ int sweep_command::execute() {
                      "stereosim: sweep: interrupted by %s: written to %s/sweep.json (incomplete: "
                      "the points under way have no figures); --resume %s runs them\n",
                      cli::signal_name(interrupted).c_str(), o.out_dir.c_str(), o.out_dir.c_str());
-        return 128 + interrupted;
+        cli::die_of(interrupted);
     }
     return failed > 0 ? 3 : 0;
 }

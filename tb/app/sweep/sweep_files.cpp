@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "tb/app/cli/staged_files.h"
 #include "tb/app/sweep/sweep_grid.h"
 
 namespace sweep {
@@ -143,17 +144,25 @@ point_outcome outcome_of(const json& point) {
 
 bool write_fitmap(const std::string& dir, const json& sweep, std::string* warning);
 
+// Staged and renamed into place: a second signal or a full disk never leaves
+// a half-written sweep.json for --resume to read.
 bool write_sweep_files(const std::string& dir, const json& sweep, std::string* error,
                        std::string* warning) {
-    std::ofstream json_out(dir + "/sweep.json"), csv_out(dir + "/sweep.csv"),
-        frontier_out(dir + "/frontier.csv");
+    cli::staged_files staged;
+    if (!staged.open(dir, error)) return false;
+    std::ofstream json_out(staged.staged_path("sweep.json")),
+        csv_out(staged.staged_path("sweep.csv")), frontier_out(staged.staged_path("frontier.csv"));
+    json_out << sweep.dump(2) << "\n";
+    write_csv(csv_out, sweep);
+    write_frontier(frontier_out, sweep);
+    json_out.close();
+    csv_out.close();
+    frontier_out.close();
     if (!json_out || !csv_out || !frontier_out) {
         *error = "cannot write into " + dir;
         return false;
     }
-    json_out << sweep.dump(2) << "\n";
-    write_csv(csv_out, sweep);
-    write_frontier(frontier_out, sweep);
+    if (!staged.commit(error)) return false;
     write_fitmap(dir, sweep, warning);
     return true;
 }

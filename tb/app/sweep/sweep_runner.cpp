@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <vector>
 
 #include "tb/app/cli/child_run.h"
 #include "tb/app/cli/interrupt.h"
@@ -116,8 +117,17 @@ int run_points(const run_request& request, std::vector<json>& points, std::FILE*
         }
         if (running.empty()) continue;
         int status = 0;
-        const pid_t pid = waitpid(-1, &status, 0);
-        if (pid < 0) continue;  // EINTR: an interrupt, looked at above
+        const pid_t pid = cli::wait_child(interrupt, &status);
+        if (pid == 0) break;  // an interrupt
+        if (pid < 0) {        // no child left to wait for: the points under way are lost
+            for (const auto& [lost, started] : running) {
+                points[started.first]["ran"] = false;
+                points[started.first]["error"] = "its process could not be waited for";
+            }
+            failed += static_cast<int>(running.size());
+            running.clear();
+            continue;
+        }
         const auto it = running.find(pid);
         if (it == running.end()) continue;
         json& point = points[it->second.first];
@@ -131,13 +141,12 @@ int run_points(const run_request& request, std::vector<json>& points, std::FILE*
         progress(log, ++done, todo.size(), over, failed, t0);
     }
     // Interrupted: the points under way stop and are not counted.
-    for (const auto& [pid, started] : running) kill(pid, SIGTERM);
+    std::vector<pid_t> pids;
     for (const auto& [pid, started] : running) {
-        int status = 0;
-        while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-        }
+        pids.push_back(pid);
         points[started.first].erase("ran");
     }
+    cli::stop_children(pids);
     if (interrupted) *interrupted = interrupt.caught();
     return failed;
 }
