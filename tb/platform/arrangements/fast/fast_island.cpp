@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 
 #include "model/emif/ardy_glue.h"
 #include "model/sensor/sensor_core.h"
@@ -23,7 +24,6 @@ using sc_core::sc_time_stamp;
 #include "verilated_fst_c.h"
 #include "verilated_vcd_c.h"
 #ifdef STEREOSIM_COVERAGE_DIR
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <string>
@@ -226,7 +226,8 @@ fast_island<card_model>::fast_island(sc_core::sc_module_name name,
 // card's line, toggle and functional coverage of this run, a file per run so
 // that a campaign's forked runs each leave theirs.
 void write_card_coverage(VerilatedContext& context) {
-    ::mkdir(STEREOSIM_COVERAGE_DIR, 0755);
+    std::error_code ignored;  // a run that cannot write says so below
+    std::filesystem::create_directories(STEREOSIM_COVERAGE_DIR, ignored);
     static int runs = 0;
     const std::string path = std::string(STEREOSIM_COVERAGE_DIR) + "/card-" +
                              std::to_string(::getpid()) + "-" + std::to_string(runs++) + ".dat";
