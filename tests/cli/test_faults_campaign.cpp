@@ -13,10 +13,13 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "tests/support/host_figures.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+using testsupport::without_host_figures;
 
 struct command_result {
     int exit_code = -1;
@@ -133,28 +136,6 @@ TEST(FaultCampaign, SmokeSliceKeepsTheContract) {
     EXPECT_EQ(g["rows"][0]["unsynced_pairs_used"], 0);
     EXPECT_TRUE(fs::exists(good / "campaign.csv") && fs::exists(good / "campaign.txt"));
     fs::remove_all(good.parent_path());
-}
-
-// Everything of a report or campaign but what depends on the host's speed
-// (wall times, simulated / wall) and the snapshots switch itself.
-json without_host_figures(const json& j) {
-    if (j.is_object()) {
-        json out = json::object();
-        for (auto it = j.begin(); it != j.end(); ++it) {
-            const std::string& key = it.key();
-            if (key.find("wall") != std::string::npos || key == "ratio" ||
-                key.find("snapshot") != std::string::npos)
-                continue;
-            out[key] = without_host_figures(it.value());
-        }
-        return out;
-    }
-    if (j.is_array()) {
-        json out = json::array();
-        for (const json& x : j) out.push_back(without_host_figures(x));
-        return out;
-    }
-    return j;
 }
 
 // Runs of one seed and length whose faults start later are forked from one

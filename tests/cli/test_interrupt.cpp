@@ -18,10 +18,13 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/host_figures.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+using testsupport::without_host_figures;
 
 // stereosim with `args`, its stdout and stderr into one pipe.
 struct child {
@@ -105,26 +108,6 @@ int processes_naming(const std::string& dir) {
 json read_json(const fs::path& path) {
     std::ifstream in(path);
     return json::parse(in);
-}
-
-// Everything but what depends on the host's speed or the run's history (a
-// run forked from a snapshot before the interrupt may run from the start
-// when resumed, alone in its group).
-json without_host_figures(const json& j) {
-    if (j.is_object()) {
-        json out = json::object();
-        for (auto it = j.begin(); it != j.end(); ++it)
-            if (it.key().find("wall") == std::string::npos && it.key() != "ratio" &&
-                it.key() != "snapshot_ms")
-                out[it.key()] = without_host_figures(it.value());
-        return out;
-    }
-    if (j.is_array()) {
-        json out = json::array();
-        for (const json& x : j) out.push_back(without_host_figures(x));
-        return out;
-    }
-    return j;
 }
 
 fs::path scratch(const std::string& name) {
