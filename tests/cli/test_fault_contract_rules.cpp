@@ -92,6 +92,24 @@ TEST(FaultContractRules, TheFirmwareMustKeepWorking) {
     EXPECT_TRUE(has_violation(faults::check(idle, skew, params(), longer),
                               "processed no pair within 2 periods"));
 
+    // A CPU 20 times slower: the pair in hand and the next take 160 ms each,
+    // so processing resumes later than 2 periods after the card's recovery
+    // (300 ms measured); the bound grows by what the slowdown adds, no more.
+    faults::fault_observation slowed = good_skew();
+    slowed.pair_ms_min = 4.3;
+    slowed.slowed_ms_max = 164.2;
+    slowed.resumed_ms = slowed.recover_ms + 300;
+    faults::run_observation long_run = good_run();
+    long_run.end_ms = 700;
+    EXPECT_TRUE(faults::check(slowed, skew, params(), long_run).ok);
+    slowed.resumed_ms = slowed.recover_ms + 2 * 24.5 + 2 * (164.2 - 4.3) + 1;
+    EXPECT_TRUE(has_violation(faults::check(slowed, skew, params(), long_run),
+                              "within 2 periods and the slowed CPU's 319 ms"));
+    slowed.slowed_ms_max = 8.2;  // not slowed: 2 periods and 8 ms
+    slowed.resumed_ms = slowed.recover_ms + 2 * 24.5 + 9;
+    EXPECT_TRUE(has_violation(faults::check(slowed, skew, params(), long_run),
+                              "processed no pair within 2 periods"));
+
     faults::run_observation empty;
     empty.frames = 6;
     EXPECT_TRUE(has_violation(faults::check_clean(empty), "no pair processed"));
