@@ -158,6 +158,7 @@ void sensor_core::begin_frame_or_gap() {
         if (p.fired || p.f.kind != fault_kind::start_skew) continue;
         if (!frame_fault_reached(p.f, k, m_cycle)) continue;
         p.fired = true;
+        p.in_gap = true;
         skew += p.f.skew_pclks;
     }
     m_skew_pending = skew;
@@ -197,6 +198,7 @@ frame_truth sensor_core::new_frame_truth() {
     t.skew_before_pclks = m_skew_pending;
     if (m_skew_pending > 0) t.faults |= fault_bit(fault_kind::start_skew);
     m_skew_pending = 0;
+    for (pending& p : m_pending) p.in_gap = false;
 
     if (m_next_is_extra) {
         t.scene_frame = m_current_scene_frame;
@@ -313,6 +315,10 @@ void sensor_core::on_oe_edge(bool oe) {
     } else {
         if (m_effects.ignore_oe() && m_phase != phase::idle) return;
         if (m_phase == phase::frame) finish_frame(false);
+        for (pending& p : m_pending) {
+            if (p.in_gap) p.fired = false;
+            p.in_gap = false;
+        }
         m_skew_pending = 0;
         m_next_is_extra = false;
         m_output_since_start = false;

@@ -100,6 +100,9 @@ class sensor_core {
     struct pending {
         fault f;
         bool fired = false;
+        // A start skew whose idle clocks are running: an OE stop before its
+        // frame begins leaves it to the first frame after the restart.
+        bool in_gap = false;
     };
 
     pin_word step_slow(bool oe);

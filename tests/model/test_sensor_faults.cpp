@@ -105,6 +105,30 @@ TEST(SensorFaults, StartSkewDelaysEveryLaterEdgeByExactlyItsClocks) {
     EXPECT_EQ(timed.truth[2].start_cycle, start(2) + 4);
 }
 
+// A skew's idle clocks cut by an OE stop have moved no frame: the skew acts
+// on the first frame after the restart (by frame: the first at or after N).
+TEST(SensorFaults, StartSkewCutByAnOeStopActsAfterTheRestart) {
+    const uint64_t k = 3 * 40 + 5;
+    const uint64_t fall = start(1) + 50, rise = start(1) + 200;
+    const auto oe = [&](uint64_t n) { return n < fall || n >= rise; };
+    const auto ref = run_sensor({}, start(5), oe);
+    const auto out =
+        run_sensor({fault::start_skew(fault_trigger::at_frame(1), 3, 5, 40)}, start(5), oe);
+    ASSERT_GE(out.truth.size(), 3u);
+    ASSERT_GE(ref.truth.size(), 2u);
+    // Frame 0 before the stop; frame 1 is the first after the restart.
+    EXPECT_EQ(out.truth[1].skew_before_pclks, static_cast<int>(k));
+    EXPECT_TRUE(out.truth[1].faults & fault_bit(fault_kind::start_skew));
+    uint64_t ref_after_restart = 0;  // the unfaulted sensor's first frame after it
+    for (const frame_truth& t : ref.truth)
+        if (t.start_cycle >= rise) {
+            ref_after_restart = t.start_cycle;
+            break;
+        }
+    EXPECT_EQ(out.truth[1].start_cycle, ref_after_restart + k);
+    EXPECT_EQ(out.truth[2].skew_before_pclks, 0);
+}
+
 TEST(SensorFaults, DroppedLineLosesExactlyOneHrefPulse) {
     const uint64_t cycles = start(4);
     const auto ref = run_sensor({}, cycles);
