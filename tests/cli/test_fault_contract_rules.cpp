@@ -403,4 +403,20 @@ TEST(FaultContractRules, TheVerdictBlamesTheFaultedSensor) {
     EXPECT_FALSE(faults::check(d, drift, params(), good_run()).ok);
 }
 
+// Ten intermittent faults, seed 13 of the full campaign: R's one-pixel skew
+// of 319.5 ms is checked at 344.027 ms, the very tick L's frame 14 was
+// dropped, so L's drop is detected by a verdict that names R (0x22). That
+// verdict may name R because R's fault explains it; no other fault, no excuse.
+TEST(FaultContractRules, AVerdictOnAnotherFaultsFrameMayNameItsSensor) {
+    const faults::fault_spec drop_l = spec_of("drop-frame:sensor=L@frame=14");
+    faults::fault_observation f = good_skew();
+    f.causes = 0x22;  // R_WINDOW | R_VSYNC
+    EXPECT_TRUE(has_violation(faults::check(f, drop_l, params(), good_run()),
+                              "do not name the faulted sensor L"));
+    f.also_explained_by = 1u << 1;  // R's skew explains that SYNC_ERROR too
+    EXPECT_TRUE(faults::check(f, drop_l, params(), good_run()).ok);
+    f.also_explained_by = 1u << 0;  // another fault of L: the causes still miss L
+    EXPECT_FALSE(faults::check(f, drop_l, params(), good_run()).ok);
+}
+
 }  // namespace

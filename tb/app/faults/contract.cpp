@@ -482,6 +482,8 @@ void check_reports(const fault_observation& f, const fault_spec& s, const contra
                          : s.type == fault_type::oe_stuck ? sensor_causes(0) | sensor_causes(1)
                                                           : sensor_causes(s.camera);
         if (s.type == fault_type::dead) blame |= verdict_start_timeout_mask;
+        for (int camera = 0; camera < 2; ++camera)
+            if ((f.also_explained_by >> camera) & 1u) blame |= sensor_causes(camera);
         if ((f.causes & blame) == 0) {
             char causes[16];
             std::snprintf(causes, sizeof causes, "0x%02x", f.causes);

@@ -131,6 +131,7 @@ json fault_json(const std::string& spec_text, const fault_observation& f, const 
         {"masked_checks", f.masked_checks},
         {"verdict_causes", f.causes},
         {"detect_start_in_step", f.detect_start_in_step},
+        {"also_explained_by", f.also_explained_by},
         {"reported", f.reported},
         {"reported_by", f.reported_by},
         {"report_ms", null_if(f.reported, f.report_ms)},
@@ -269,6 +270,7 @@ fault_observation observation_of(const json& f, const fault_spec& spec) {
     o.frames_to_detect = static_cast<int>(num(f, "frames_to_detect"));
     o.causes = static_cast<uint32_t>(integer(f, "verdict_causes"));
     o.detect_start_in_step = f.value("detect_start_in_step", true);
+    o.also_explained_by = f.value("also_explained_by", 0u);
     o.masked_checks = integer(f, "masked_checks");
     o.reported = f.value("reported", false);
     o.reported_by = f.value("reported_by", std::string("none"));

@@ -30,6 +30,9 @@ struct fault_observation {
     // The detecting SYNC_ERROR's start was in step by the truth (else the
     // start-up delay of either sensor may be what its causes name).
     bool detect_start_in_step = false;
+    // Sensors (bit 0 L, bit 1 R) whose other faults in effect explain that
+    // same SYNC_ERROR: with several faults its causes may name any of them.
+    uint32_t also_explained_by = 0;
     // The firmware's own report of this onset: the first sync_error, overflow,
     // hard_error or pair_dropped report at or after the detection.
     bool reported = false;

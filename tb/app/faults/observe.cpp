@@ -1,6 +1,7 @@
 #include "tb/app/faults/observe.h"
 
 #include "tb/app/faults/fault_report.h"
+#include "tb/app/faults/pair_accounting.h"
 #include "tb/app/faults/recovery_rule.h"
 
 #include <algorithm>
@@ -198,28 +199,14 @@ double slow_factor(const std::vector<fault_spec>& specs) {
     return factor;
 }
 
-// Rule 1 (docs/fault-contract.md): every in-step pair the card forwards is
-// processed, or dropped under the overrun policy and reported. A pair after
-// the last one processed is still in flight if it came within `grace` of
-// the end, or of the firmware's give-up at `stop`.
-void account_pairs(const platform::scoreboard_report& score,
-                   const std::vector<platform::fw_event>& events, simtime::ticks grace,
-                   simtime::ticks stop, run_observation* run) {
+// The pair numbers the firmware's pair_dropped reports name.
+std::set<uint32_t> reported_dropped(const platform::scoreboard_report& score,
+                                    const std::vector<platform::fw_event>& events) {
     std::set<uint32_t> dropped;
     for (const platform::fw_event& e : events)
         if (e.event.kind == dsp::firmware_event::pair_dropped)
             for (uint32_t n : dropped_by(e.event, score.pairs.size())) dropped.insert(n);
-    uint32_t last_processed = 0;
-    for (const platform::pair_check& p : score.pairs)
-        if (p.processed) last_processed = std::max(last_processed, p.pair);
-    for (const platform::pair_check& p : score.pairs) {
-        if (!p.truth_in_step) continue;
-        ++run->pairs_in_step;
-        if (p.processed || dropped.count(p.pair) != 0) continue;
-        if (p.pair > last_processed && p.ready + grace > stop) continue;
-        ++run->pairs_unaccounted;
-        if (run->unaccounted_pairs.size() < 8) run->unaccounted_pairs.push_back(p.pair);
-    }
+    return dropped;
 }
 
 // Firmware time per pair (pair_captured -> pair_processed): the cheapest
@@ -408,7 +395,7 @@ void observe_pairs(const run_sources& in, simtime::ticks onset, fault_observatio
 
 // One fault; `*onset` = its onset tick, `never` if it did not act.
 fault_observation observe_fault(const run_sources& in, const fault_spec& s, size_t index,
-                                simtime::ticks* onset) {
+                                simtime::ticks* onset, simtime::ticks* detect_tick) {
     fault_observation f;
     f.spec = canonical(s);
     f.type = s.type;
@@ -424,6 +411,7 @@ fault_observation observe_fault(const run_sources& in, const fault_spec& s, size
     in.top.mark_fault(*onset, static_cast<uint8_t>(index), static_cast<uint32_t>(s.type),
                       static_cast<uint32_t>(std::max<int64_t>(frame, 0)));
     const simtime::ticks detect = detect_fault(in, s, *onset, &f);
+    *detect_tick = detect;
     if (detect != never) {
         f.detected = true;
         f.detect_ms = to_ms(detect);
@@ -452,6 +440,22 @@ fault_observation observe_fault(const run_sources& in, const fault_spec& s, size
     observe_recovery(in, *onset, detect, &f);
     observe_pairs(in, *onset, &f);
     return f;
+}
+
+// Rule 8 with several faults: the SYNC_ERROR that detects one may be the
+// verdict on another's frame (a skewed R frame checked just as L's dropped
+// frame was due), so its causes may name that other fault's sensor.
+void note_other_explanations(const run_sources& in, const std::vector<fault_spec>& specs,
+                             const std::vector<simtime::ticks>& onsets,
+                             const std::vector<simtime::ticks>& detects, run_observation* run) {
+    for (size_t i = 0; i < specs.size(); ++i) {
+        if (detects[i] == never || run->faults[i].detected_by != "sync_error") continue;
+        for (size_t j = 0; j < specs.size(); ++j) {
+            if (j == i || onsets[j] == never || !is_sensor_fault(specs[j].type)) continue;
+            if (explains(in.top, in.score, specs[j], onsets[j], detects[i]))
+                run->faults[i].also_explained_by |= 1u << specs[j].camera;
+        }
+    }
 }
 
 // Rule 10: overflow reports the firmware's configured re-arm (ENABLE 0 -> 1:
@@ -496,7 +500,16 @@ void observe_run_rules(const run_sources& in, const std::vector<fault_spec>& spe
     for (const platform::fw_event& e : in.events)
         if (e.event.kind == dsp::firmware_event::hard_error) stop = std::min(stop, e.tick);
     const simtime::ticks until = std::min(stop, in.top.end_tick() - window);
-    account_pairs(in.score, in.events, 2 * window, stop, run);
+    std::vector<forwarded_pair> forwarded;
+    for (const platform::pair_check& p : in.score.pairs)
+        forwarded.push_back({p.pair, p.ready, p.truth_in_step, p.processed});
+    std::vector<simtime::ticks> oe_rises;
+    for (const platform::start_check& c : in.score.starts) oe_rises.push_back(c.oe_rise);
+    const pair_accounting pairs =
+        account_pairs(forwarded, reported_dropped(in.score, in.events), oe_rises, 2 * window, stop);
+    run->pairs_in_step = pairs.in_step;
+    run->pairs_unaccounted = pairs.unaccounted;
+    run->unaccounted_pairs = pairs.unaccounted_pairs;
     if (run->hard_error) {
         simtime::ticks last_good = -1;
         for (simtime::ticks t : in.top.cycle_island().irq_rises(0))
@@ -550,9 +563,10 @@ run_observation observe(platform::platform_top& top, const platform::scoreboard_
                          top.firmware_started() ? top.probe().fw_events() : no_events,
                          period};
     count_run(in, &run);
-    std::vector<simtime::ticks> onsets(specs.size(), never);
+    std::vector<simtime::ticks> onsets(specs.size(), never), detects(specs.size(), never);
     for (size_t i = 0; i < specs.size(); ++i)
-        run.faults.push_back(observe_fault(in, specs[i], i, &onsets[i]));
+        run.faults.push_back(observe_fault(in, specs[i], i, &onsets[i], &detects[i]));
+    note_other_explanations(in, specs, onsets, detects, &run);
     run.recovery = judge_recovery(gather_recovery_inputs(top, specs, onsets));
     onsets.push_back(never);  // a clean run: no onset
     observe_run_rules(in, specs, onsets, &run);
