@@ -164,8 +164,13 @@ void platform_top::run() {
 
 int64_t platform_top::frame_before(int camera, simtime::ticks tick) const {
     const std::vector<sensor::frame_truth>& truth = m_island->sensor(camera).truth();
+    // A frame in its first active line has its first active pixel but no
+    // last one yet (last_active_tick 0): not a frame before `tick`, however
+    // late this is asked (a slowed CPU takes a pair long after it came).
     for (size_t i = truth.size(); i-- > 0;) {
-        if (truth[i].have_active && truth[i].last_active_tick < tick)
+        const sensor::frame_truth& t = truth[i];
+        if (t.have_active && t.first_active_tick < tick && t.last_active_tick < tick &&
+            t.last_active_tick >= t.first_active_tick)
             return static_cast<int64_t>(i);
     }
     return -1;
