@@ -127,15 +127,18 @@ void c6416_sc::charge(dsp::stage s, uint64_t cycles, const dsp::sdram_traffic& t
     m_stage_cycles[static_cast<int>(s)] += scaled;
     const sc_time start = time_of_cpu_cycle(k0);
     const sc_time target = time_of_cpu_cycle(k0 + scaled);
+    m_charge_end = target;
     replay_traffic(k0, scaled, traffic);
     const sc_time now = sc_core::sc_time_stamp();
     if (now > target) {  // the bus held the last line back: the CPU waited for it
         m_sdram_late += now - target;
         m_cpu_busy += now - start;
+        m_charge_end = sc_core::SC_ZERO_TIME;
         return;
     }
     m_cpu_busy += target - start;
     if (target > now) sc_core::wait(target - now);
+    m_charge_end = sc_core::SC_ZERO_TIME;
 }
 
 void c6416_sc::replay_traffic(uint64_t first_cycle, uint64_t cycles,

@@ -145,7 +145,10 @@ class c6416_sc : public sc_core::sc_module {
     // ---- statistics ------------------------------------------------------------------------
     uint64_t charged_cycles(dsp::stage s) const { return m_stage_cycles[static_cast<int>(s)]; }
     uint64_t charged_cycles_total() const;
-    sc_core::sc_time cpu_busy_time() const { return m_cpu_busy; }      // charge_cycles
+    sc_core::sc_time cpu_busy_time() const { return m_cpu_busy; }  // charge_cycles
+    // When the charge the CPU is in ends (its cycles fixed as it began, the
+    // slow-down included), or zero between charges.
+    sc_core::sc_time charge_end() const { return m_charge_end; }
     sc_core::sc_time cpu_bus_stall_time() const { return m_cpu_bus; }  // CPU EMIFA accesses
     sc_core::sc_time edma_busy_time() const { return m_edma_busy; }
     uint64_t edma_bytes() const { return m_edma_bytes; }
@@ -232,6 +235,7 @@ class c6416_sc : public sc_core::sc_module {
     uint64_t m_edma_bytes = 0;
     uint64_t m_bus_errors = 0;
     sc_core::sc_time m_sdram_late;
+    sc_core::sc_time m_charge_end;
 };
 
 }  // namespace c6416

@@ -193,4 +193,33 @@ TEST(FaultCampaign, SnapshotsGiveTheSameRunsAsRunsFromTheStart) {
     fs::remove_all(forked.parent_path());
 }
 
+// A CPU slow-down's charge in flight at a pause has its cycles fixed without
+// it: forked there, seed 13's cpu-slow x 6 from 49 ms ran pair 1's 16.8 ms
+// preprocess in 4.3 ms. Such a member runs from the start; every run of the
+// slice equals its run from the start.
+TEST(FaultCampaign, NoForkInsideACpuChargeThatASlowDownWouldStretch) {
+    const std::string slice =
+        "faults --campaign full --seeds 3 --match "
+        "'cpu-slow:factor=6@frame=2 emif-wait:cycles=40@frame=8|"
+        "cpu-slow:factor=20@frame=4 drop-frame' --jobs 2 --keep-runs --out ";
+    const fs::path forked = scratch("cpu-forked"), spawned = scratch("cpu-spawned");
+    const command_result a = run(slice + forked.string());
+    const command_result b = run(slice + spawned.string() + " --no-snapshots");
+    ASSERT_EQ(a.exit_code, 0) << a.output;
+    ASSERT_EQ(b.exit_code, 0) << b.output;
+    const json ja = read_json(forked / "campaign.json"), jb = read_json(spawned / "campaign.json");
+    ASSERT_EQ(ja["rows"].size(), 6u);
+    EXPECT_EQ(without_host_figures(ja), without_host_figures(jb));
+    int from_start = 0;
+    for (const json& row : ja["rows"]) {
+        const std::string run_dir = "runs/" + std::to_string(row["index"].get<int>());
+        EXPECT_EQ(without_host_figures(read_json(forked / run_dir / "out/report.json")),
+                  without_host_figures(read_json(spawned / run_dir / "out/report.json")))
+            << run_dir;
+        from_start += row["snapshot_ms"].is_null();
+    }
+    EXPECT_EQ(from_start, 1);  // seed 13's: pair 1's charge spans the onset at 49 ms
+    fs::remove_all(forked.parent_path());
+}
+
 }  // namespace

@@ -16,6 +16,8 @@ snapshot_trigger snapshot_trigger_of(const std::vector<fault_spec>& specs, simti
             continue;
         }
         if (tick < snapshot_time_margin + snapshot_pause_step) return t;
+        if (s.type == fault_type::cpu_slow)
+            t.cpu_slow_tick = t.cpu_slow_tick < 0 ? tick : std::min(t.cpu_slow_tick, tick);
         const simtime::ticks before = tick - snapshot_time_margin;
         t.before_tick = t.before_tick < 0 ? before : std::min(t.before_tick, before);
     }

@@ -31,6 +31,9 @@ struct snapshot_trigger {
     bool usable = false;
     simtime::ticks before_tick = -1;   // fork at a pause at or before this tick; -1 none
     std::vector<sensor_frame> frames;  // fork while each sensor is before its frame N
+    // A cpu-slow onset: a charge begun before the fork has its cycles fixed
+    // without the slow-down, so no fork while one in flight ends after it.
+    simtime::ticks cpu_slow_tick = -1;
 };
 snapshot_trigger snapshot_trigger_of(const std::vector<fault_spec>& specs, simtime::ticks period);
 

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <numeric>
 
+#include "model/time/sc_ticks.h"
 #include "tb/app/cli/interrupt.h"
 #include "tb/app/cli/run_command.h"
 #include "tb/app/faults/child_exit.h"
@@ -81,6 +82,12 @@ due snapshot_due(const snapshot_trigger& t, const platform::platform_top& top, s
         const int64_t current = truth.empty() ? -1 : static_cast<int64_t>(truth.back().index);
         if (current >= static_cast<int64_t>(f.frame)) return due::missed;
         take = take || current + 1 >= static_cast<int64_t>(f.frame);
+    }
+    if (take && t.cpu_slow_tick >= 0) {
+        // A charge in flight across the onset would run unslowed in the
+        // child: run from the start instead (standalone, it is slowed).
+        const sc_core::sc_time charge_end = top.cpu().charge_end();
+        if (charge_end > simtime::sc_time_of(t.cpu_slow_tick)) return due::missed;
     }
     return take ? due::now : due::not_yet;
 }
