@@ -156,41 +156,67 @@ TEST(FaultCampaign, SmokeSliceKeepsTheContract) {
     fs::remove_all(good.parent_path());
 }
 
+// A campaign slice run twice, forked from snapshots and every run from the
+// start (--no-snapshots), with each run's report.json kept; both must keep
+// the contract (no rows read otherwise).
+struct forked_and_spawned {
+    command_result forked_run, spawned_run;
+    fs::path forked, spawned;
+    json forked_campaign, spawned_campaign;
+};
+
+forked_and_spawned run_both_ways(const std::string& slice, const std::string& name) {
+    forked_and_spawned r;
+    r.forked = scratch(name + "-forked");
+    r.spawned = scratch(name + "-spawned");
+    r.forked_run = run(slice + " --keep-runs --out " + r.forked.string());
+    r.spawned_run = run(slice + " --keep-runs --no-snapshots --out " + r.spawned.string());
+    EXPECT_EQ(r.forked_run.exit_code, 0) << r.forked_run.output;
+    EXPECT_EQ(r.spawned_run.exit_code, 0) << r.spawned_run.output;
+    if (r.forked_run.exit_code == 0 && r.spawned_run.exit_code == 0) {
+        r.forked_campaign = read_json(r.forked / "campaign.json");
+        r.spawned_campaign = read_json(r.spawned / "campaign.json");
+    }
+    return r;
+}
+
+// The campaigns and every run's report.json alike but for host figures.
+void expect_same_runs(const forked_and_spawned& r) {
+    EXPECT_EQ(without_host_figures(r.forked_campaign), without_host_figures(r.spawned_campaign));
+    for (const json& row : r.forked_campaign["rows"]) {
+        const std::string run_dir = "runs/" + std::to_string(row["index"].get<int>());
+        EXPECT_EQ(without_host_figures(read_json(r.forked / run_dir / "out/report.json")),
+                  without_host_figures(read_json(r.spawned / run_dir / "out/report.json")))
+            << run_dir;
+    }
+    for (const json& row : r.spawned_campaign["rows"]) EXPECT_TRUE(row["snapshot_ms"].is_null());
+}
+
 // Runs of one seed and length whose faults start later are forked from one
 // fault-free run at their snapshots (docs/fault-contract.md "Snapshots"):
 // the campaign and every run's report.json (pin hash, timeline, stage
 // cycles, verdicts) are the same as when each run starts from the beginning.
 TEST(FaultCampaign, SnapshotsGiveTheSameRunsAsRunsFromTheStart) {
-    const std::string slice =
+    const forked_and_spawned r = run_both_ways(
         "faults --campaign smoke --match "
         "'skew:sensor=L,pixels=1@frame=2|drop-frame:sensor=R@frame=4|"
-        "emif-wait:cycles=40@frame=3' --jobs 2 "
-        "--keep-runs --out ";
-    const fs::path forked = scratch("forked"), spawned = scratch("spawned");
-    const command_result a = run(slice + forked.string());
-    const command_result b = run(slice + spawned.string() + " --no-snapshots");
-    ASSERT_EQ(a.exit_code, 0) << a.output;
-    ASSERT_EQ(b.exit_code, 0) << b.output;
-    const json ja = read_json(forked / "campaign.json"), jb = read_json(spawned / "campaign.json");
-    EXPECT_EQ(ja["snapshots"], true);
-    EXPECT_EQ(jb["snapshots"], false);
-    ASSERT_EQ(ja["rows"].size(), 3u);
-    EXPECT_EQ(without_host_figures(ja), without_host_figures(jb));
-    for (const json& row : ja["rows"]) {
-        const std::string run_dir = "runs/" + std::to_string(row["index"].get<int>());
-        EXPECT_EQ(without_host_figures(read_json(forked / run_dir / "out/report.json")),
-                  without_host_figures(read_json(spawned / run_dir / "out/report.json")))
-            << run_dir;
-        // Each was forked (none ran from the start after a missed snapshot),
-        // before its fault: skew at sensor frame 2, emif-wait at 73.5 ms,
-        // drop-frame at sensor frame 4.
+        "emif-wait:cycles=40@frame=3' --jobs 2",
+        "snapshots");
+    EXPECT_EQ(r.forked_campaign["snapshots"], true);
+    EXPECT_EQ(r.spawned_campaign["snapshots"], false);
+    ASSERT_EQ(r.forked_campaign["rows"].size(), 3u);
+    expect_same_runs(r);
+    // Each was forked (none ran from the start after a missed snapshot),
+    // before its fault: skew at sensor frame 2, emif-wait at 73.5 ms,
+    // drop-frame at sensor frame 4.
+    for (const json& row : r.forked_campaign["rows"]) {
         ASSERT_TRUE(row["snapshot_ms"].is_number()) << row.dump();
         EXPECT_GT(row["snapshot_ms"].get<double>(), 0.0);
         EXPECT_LT(row["snapshot_ms"].get<double>(), 98.0);
     }
-    for (const json& row : jb["rows"]) EXPECT_TRUE(row["snapshot_ms"].is_null());
-    EXPECT_NE(a.output.find("3 runs forked from snapshots"), std::string::npos) << a.output;
-    fs::remove_all(forked.parent_path());
+    EXPECT_NE(r.forked_run.output.find("3 runs forked from snapshots"), std::string::npos)
+        << r.forked_run.output;
+    fs::remove_all(r.forked.parent_path());
 }
 
 // A CPU slow-down's charge in flight at a pause has its cycles fixed without
@@ -198,28 +224,17 @@ TEST(FaultCampaign, SnapshotsGiveTheSameRunsAsRunsFromTheStart) {
 // preprocess in 4.3 ms. Such a member runs from the start; every run of the
 // slice equals its run from the start.
 TEST(FaultCampaign, NoForkInsideACpuChargeThatASlowDownWouldStretch) {
-    const std::string slice =
+    const forked_and_spawned r = run_both_ways(
         "faults --campaign full --seeds 3 --match "
         "'cpu-slow:factor=6@frame=2 emif-wait:cycles=40@frame=8|"
-        "cpu-slow:factor=20@frame=4 drop-frame' --jobs 2 --keep-runs --out ";
-    const fs::path forked = scratch("cpu-forked"), spawned = scratch("cpu-spawned");
-    const command_result a = run(slice + forked.string());
-    const command_result b = run(slice + spawned.string() + " --no-snapshots");
-    ASSERT_EQ(a.exit_code, 0) << a.output;
-    ASSERT_EQ(b.exit_code, 0) << b.output;
-    const json ja = read_json(forked / "campaign.json"), jb = read_json(spawned / "campaign.json");
-    ASSERT_EQ(ja["rows"].size(), 6u);
-    EXPECT_EQ(without_host_figures(ja), without_host_figures(jb));
+        "cpu-slow:factor=20@frame=4 drop-frame' --jobs 2",
+        "cpu-charge");
+    ASSERT_EQ(r.forked_campaign["rows"].size(), 6u);
+    expect_same_runs(r);
     int from_start = 0;
-    for (const json& row : ja["rows"]) {
-        const std::string run_dir = "runs/" + std::to_string(row["index"].get<int>());
-        EXPECT_EQ(without_host_figures(read_json(forked / run_dir / "out/report.json")),
-                  without_host_figures(read_json(spawned / run_dir / "out/report.json")))
-            << run_dir;
-        from_start += row["snapshot_ms"].is_null();
-    }
+    for (const json& row : r.forked_campaign["rows"]) from_start += row["snapshot_ms"].is_null();
     EXPECT_EQ(from_start, 1);  // seed 13's: pair 1's charge spans the onset at 49 ms
-    fs::remove_all(forked.parent_path());
+    fs::remove_all(r.forked.parent_path());
 }
 
 }  // namespace
