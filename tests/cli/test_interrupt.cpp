@@ -56,6 +56,11 @@ child start(const std::vector<std::string>& args) {
     return c;
 }
 
+// How long a first run may take to finish: an 8-frame run takes ~5 s, and
+// took over 120 s under AddressSanitizer beside another build on 2 cores (a
+// bound on the wait, not a timing check).
+constexpr double first_result_s = 400;
+
 // Reads the child's output until `text` shows or `seconds` pass.
 bool wait_for(child& c, const std::string& text, double seconds) {
     const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
@@ -133,7 +138,7 @@ TEST(Interrupt, ACampaignStopsItsRunsAndResumes) {
     args.insert(args.end(), {"--out", cut.string()});
     child c = start(args);
     ASSERT_GT(c.pid, 0);
-    ASSERT_TRUE(wait_for(c, "[1/3]", 120)) << c.seen;
+    ASSERT_TRUE(wait_for(c, "[1/3]", first_result_s)) << c.seen;
     kill(c.pid, SIGTERM);
     EXPECT_EQ(finish(c), 128 + SIGTERM) << c.seen;
     EXPECT_EQ(processes_naming(cut.string()), 0) << "a run outlived its campaign";
@@ -175,7 +180,7 @@ TEST(Interrupt, ASweepStopsItsPointsAndResumes) {
     args.insert(args.end(), {"--out", cut.string()});
     child c = start(args);
     ASSERT_GT(c.pid, 0);
-    ASSERT_TRUE(wait_for(c, "sweep: 1/3 points", 120)) << c.seen;
+    ASSERT_TRUE(wait_for(c, "sweep: 1/3 points", first_result_s)) << c.seen;
     kill(c.pid, SIGINT);
     EXPECT_EQ(finish(c), 128 + SIGINT) << c.seen;
     EXPECT_EQ(processes_naming(cut.string()), 0) << "a point outlived its sweep";
