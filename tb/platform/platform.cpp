@@ -169,8 +169,7 @@ int64_t platform_top::frame_before(int camera, simtime::ticks tick) const {
     // late this is asked (a slowed CPU takes a pair long after it came).
     for (size_t i = truth.size(); i-- > 0;) {
         const sensor::frame_truth& t = truth[i];
-        if (t.have_active && t.first_active_tick < tick && t.last_active_tick < tick &&
-            t.last_active_tick >= t.first_active_tick)
+        if (t.have_active && t.last_active_tick >= t.first_active_tick && t.last_active_tick < tick)
             return static_cast<int64_t>(i);
     }
     return -1;
