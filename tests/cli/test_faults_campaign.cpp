@@ -137,6 +137,26 @@ TEST(FaultCli, ABrokenContractIsInTheExitStatus) {
     EXPECT_FALSE(read_json(out / "report.json")["fault_run"]["contract_ok"].get<bool>());
 }
 
+// A sensor that dies by time acts at the next OE rise, which it ignores: that
+// start can never be in step, so the give-up is what the truth requires, and
+// a bus fault's hard error in the same run is explained by it. Here the rise
+// is the overflow re-arm's (sequential capture, seed 11: 91.2 ms).
+TEST(FaultCli, ASensorDeadAtARestartsRiseMustBringTheGiveUp) {
+    const fs::path out = scratch("dead-at-rearm");
+    const command_result r =
+        run("run --quiet --set firmware.mode=sequential --seed 11 --frames 14 --card-retry-limit 2 "
+            "--fault emif-wait:cycles=40@frame=3 --fault dead:sensor=L@ms=80 --out " +
+            out.string());
+    EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.output;
+    const json report = read_json(out / "report.json");
+    ASSERT_EQ(report["faults"].size(), 2u);
+    const json& dead = report["faults"][1];
+    EXPECT_GT(dead["onset_ms"].get<double>(), 80.0);
+    EXPECT_TRUE(dead["onset_start_out_of_step"].get<bool>()) << dead.dump();
+    EXPECT_EQ(dead["expected"], "hard_error");
+    EXPECT_EQ(dead["outcome"], "hard_error");
+    EXPECT_TRUE(report["fault_run"]["contract_ok"].get<bool>()) << report["fault_run"].dump();
+}
 // A slice of the smoke campaign keeps the contract with the firmware as it
 // is. That the campaign fails a broken firmware is shown by the mutants
 // (tests/mutants, docs/mutants.md, `make mutants-ci`).

@@ -85,6 +85,10 @@ const plan_entry smoke_faults[] = {
     // card's FIFOs: the overflow re-arms come while the overrun policy is
     // dropping pairs, and each drop must still be counted and reported.
     {"cpu-slow:factor=6@frame=2 emif-wait:cycles=40@frame=8", 20, 8},
+    // A sensor that dies at the overflow re-arm's OE rise (sequential
+    // capture loses the pair in flight with it): the re-arm that follows
+    // the card's hard error is the firmware's one re-arm, not its give-up.
+    {"emif-wait:cycles=40@frame=3 dead:sensor=L@ms=80", 14, 2, "firmware.mode=sequential"},
     // The modes: sequential capture, DSK v3.
     {"skew:sensor=R,lines=3@frame=4", 8, 8, "firmware.mode=sequential"},
     {"drop-frame:sensor=L@frame=4", 8, 8, "dsk.version=3"},
@@ -175,6 +179,8 @@ const plan_entry full_soak[] = {
     {"emif-wait:cycles=30@frame=3 dark-leak:sensor=L,level=48@frame=5", 12, 2},
     {"emif-wait:cycles=30@frame=3 stuck-bit:sensor=R,bit=7@frame=5", 12, 2},
     {"cpu-slow:factor=6@frame=2 emif-wait:cycles=40@frame=8", 20, 8},
+    {"emif-wait:cycles=40@frame=3 dead:sensor=L@ms=80", 14, 2, "firmware.mode=sequential"},
+    {"emif-wait:cycles=40@frame=3 dead:sensor=R@ms=80", 14, 2, "firmware.mode=sequential"},
     {"dead:sensor=L dead:sensor=R", 10, 2, "firmware.card_start_timeout=525"},
     {"dark-leak:sensor=L,level=48@frame=3", 14, 4, "firmware.watchdog_ms=100"},
     {"dark-leak:sensor=R,level=48@frame=3", 14, 4, "firmware.watchdog_ms=100"},

@@ -423,7 +423,8 @@ fault_observation observe_fault(const run_sources& in, const fault_spec& s, size
             }
         find_report(s, in.events, detect, &f);
     }
-    const int onset_start = start_of(in.score, *onset);
+    // A dead sensor acts at the OE rise it ignores: its start is that rise's.
+    const int onset_start = start_of(in.score, s.type == fault_type::dead ? *onset + 1 : *onset);
     f.onset_start_out_of_step =
         onset_start >= 0 && !in.score.starts[static_cast<size_t>(onset_start)].truth_in_step;
     // A frame whose start met a restart already decided (the card lowered OE
