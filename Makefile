@@ -148,13 +148,15 @@ coverage: deps
 # MUTANT_JOBS mutants at a time (empty: the runner's default, 1).
 MUTANT_JOBS ?=
 MUTANTS_ARGS ?=
-# mutants-ci: a fixed slice the smoke campaign kills, two firmware mutants
+# mutants-ci: a fixed slice the smoke campaign kills, three firmware mutants
 # of different kinds (the left frame processed twice: pair identity; the
 # watchdog re-arming a healthy card every period: rule 11 over the clean soak
-# row) and one RTL mutant: MUTANTS_CI_RTL (the card counting every failed
-# check since ENABLE: rule 11 over the intermittent soak row), or if empty
-# the first id the generator makes with seed MUTANTS_CI_RTL_SEED.
-MUTANTS_CI_FIRMWARE ?= fw-15-left-frame-twice,fw-24-watchdog-progress-saved-first
+# row; an overflow re-arm counted towards the give-up: rule 4 over the row of
+# a sensor dead from the overflow re-arm) and one RTL mutant: MUTANTS_CI_RTL
+# (the card counting every failed check since ENABLE: rule 11 over the
+# intermittent soak row), or if empty the first id the generator makes with
+# seed MUTANTS_CI_RTL_SEED.
+MUTANTS_CI_FIRMWARE ?= fw-15-left-frame-twice,fw-24-watchdog-progress-saved-first,fw-32-overflow-rearm-counts-as-failure
 MUTANTS_CI_RTL ?= rt-01-oe-failures-never-cleared
 MUTANTS_CI_RTL_SEED ?= 1
 MUTANTS_CI_RTL_DIR ?= build-mutants/rtl-ci
