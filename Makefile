@@ -60,8 +60,8 @@ campaign-full: build
 # tests/CMakeLists.txt), not the traced cards or the stereosim application.
 # The two largest host object-size runs are left to the whole-suite pass,
 # which is run before an issue is resolved: make test-sanitize-all.
-SAN_LABELS ?= dsp|scene|model|rtl
-SAN_TARGETS ?= tests_dsp tests_scene tests_model tests_rtl system_test_data_integrity_sc
+SAN_LABELS ?= dsp|scene|model|rtl|firmware
+SAN_TARGETS ?= tests_dsp tests_scene tests_model tests_rtl tests_firmware system_test_data_integrity_sc
 SAN_EXCLUDE ?= ObjectSize\.DetectedAndTrackedWithinTheBounds/(240|320)px
 SAN_SYSTEM ?= ^system\.data_integrity\.
 SAN_ENV := ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1

@@ -1,0 +1,112 @@
+/* A firmware in plain C11 for the loader's tests (tests/firmware): boots,
+ * charges its one stage, waits for interrupts until the platform asks it to
+ * stop, and reports each step. Built several times with one defect each
+ * (BAD_ABI, NO_ENTRY, TOO_MANY_STAGES, BAD_KEY_DEFAULT, NO_DESCRIPTOR) to
+ * show the loader refusing it. */
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "stereosim/firmware.h"
+
+typedef struct minimal {
+    const stereosim_services* hw;
+    uint64_t cycles_per_wait;
+    uint32_t mode;
+} minimal;
+
+static const char* const stages[] = {"capture", "think", "s2",  "s3",  "s4",  "s5",  "s6",  "s7",
+                                     "s8",      "s9",    "s10", "s11", "s12", "s13", "s14", "s15"};
+static const char* const states[] = {"idle", "busy"};
+static const char* const modes[] = {"quiet", "chatty"};
+
+static const stereosim_fw_key keys[] = {
+    {"cycles_per_wait", STEREOSIM_KEY_INT, 0, 1e6,
+#ifdef BAD_KEY_DEFAULT
+     2e6,
+#else
+     600,
+#endif
+     NULL, 0, "cycles charged to stage think after each interrupt"},
+    {"mode", STEREOSIM_KEY_CHOICE, 0, 0, 0, modes, 2, "quiet: fewer reports"},
+};
+
+static void report(const minimal* m, uint32_t kind, uint32_t value) {
+    stereosim_event e = {0, 0, 0, 0, 0, 0};
+    e.kind = kind;
+    e.value = value;
+    m->hw->report(m->hw->ctx, &e);
+}
+
+static void* create(const stereosim_services* services, const stereosim_board* board,
+                    const double* values, char* error, size_t error_size) {
+    minimal* m;
+    if (board->active_cols == 0) {
+        snprintf(error, error_size, "the board has no active columns");
+        return NULL;
+    }
+    m = (minimal*)calloc(1, sizeof *m);
+    if (m == NULL) {
+        snprintf(error, error_size, "out of memory");
+        return NULL;
+    }
+    m->hw = services;
+    m->cycles_per_wait = (uint64_t)values[0];
+    m->mode = (uint32_t)values[1];
+    return m;
+}
+
+static void run(void* instance) {
+    minimal* m = (minimal*)instance;
+    uint32_t interrupts = 0;
+    report(m, STEREOSIM_EV_BOOT, 1);
+    m->hw->set_interrupt_enable(m->hw->ctx, 1u << 4);
+    for (;;) {
+        int32_t n = m->hw->wait_for_interrupt(m->hw->ctx);
+        if (n == STEREOSIM_FW_NO_INTERRUPT || m->hw->stop_requested(m->hw->ctx)) break;
+        ++interrupts;
+        m->hw->charge(m->hw->ctx, 1, m->cycles_per_wait, NULL);
+        if (m->mode == 1) report(m, STEREOSIM_EV_WATCHDOG, (uint32_t)n);
+    }
+    report(m, STEREOSIM_EV_STOPPED, interrupts);
+}
+
+static void destroy(void* instance) {
+    free(instance);
+}
+
+static void policy(const void* instance, stereosim_fw_policy* out) {
+    (void)instance;
+    out->hard_error_rearms = 0;
+    out->rearm_on_overflow = 0;
+    out->rearm_on_every_sync_error = 0;
+    out->watchdog_ms = 0;
+    out->overlapped = 0;
+}
+
+static const stereosim_fw_descriptor descriptor = {
+#ifdef BAD_ABI
+    99u,
+#else
+    STEREOSIM_FIRMWARE_ABI_VERSION,
+#endif
+    "minimal", "0.1",
+#ifdef TOO_MANY_STAGES
+    16u,
+#else
+    2u,
+#endif
+    stages,    2u,    states, 2u, keys, create, run, destroy, policy};
+
+#ifdef NO_ENTRY
+const stereosim_fw_descriptor* not_the_entry(void) {
+    return &descriptor;
+}
+#elif defined(NO_DESCRIPTOR)
+const stereosim_fw_descriptor* stereosim_firmware(void) {
+    return descriptor.name ? NULL : &descriptor;
+}
+#else
+const stereosim_fw_descriptor* stereosim_firmware(void) {
+    return &descriptor;
+}
+#endif
