@@ -67,7 +67,7 @@ void measure(benchmark::State& state, dsp::controller& firmware, cycle_counter& 
     }
     state.counters["modelled_cycles"] = static_cast<double>(cycles);
     state.counters["modelled_ms_600MHz"] = 1e3 * static_cast<double>(cycles) / 600e6;
-    state.SetLabel(dsp::cost::model().id());
+    state.SetLabel(dsp::cost::default_model().id());
 }
 
 void BM_ProcessPairDetect(benchmark::State& state) {

@@ -145,6 +145,10 @@ class stage_scope {
 struct controller::impl {
     controller_config config;
     hal* hardware = nullptr;
+    // A kernel call's cycles under the platform's cost model (hal::kernel_cycles).
+    uint64_t cycles_of(const c64x::kernel_profile& kernel) const {
+        return hardware->kernel_cycles(kernel);
+    }
     memory_plan plan;
 
     rgb8* line_scratch = nullptr;    // one demosaiced row
@@ -361,12 +365,12 @@ void controller::impl::preprocess(gray_cplane raw_left, gray_cplane raw_right, t
                                               frame_plane(left_gray))
                            .gain_q8;
     if (frames_in_history < history_frames) ++frames_in_history;
-    uint64_t per_image =
-        cost::demosaic_gray_cycles(width, height, config.frame_memory, config.raw_memory);
+    uint64_t per_image = cycles_of(
+        cost::demosaic_gray_profile(width, height, config.frame_memory, config.raw_memory));
     sdram_traffic traffic =
         cost::demosaic_gray_traffic(width, height, config.frame_memory, config.raw_memory);
     if (config.brightness.enabled) {
-        per_image += cost::brightness_cycles(width, height, config.frame_memory);
+        per_image += cycles_of(cost::brightness_profile(width, height, config.frame_memory));
         traffic += cost::brightness_traffic(width, height, config.frame_memory);
     }
     traffic += traffic;  // both images
@@ -384,7 +388,7 @@ void controller::impl::preprocess(gray_cplane raw_left, gray_cplane raw_right, t
 void controller::impl::update_motion_mask(uint64_t* cycles, sdram_traffic* traffic) {
     if (frames_in_history < 2) return;
     difference_packed(history(1), history(0), config.detect.threshold, motion_mask);
-    *cycles += cost::difference_packed_cycles(width, height, config.frame_memory);
+    *cycles += cycles_of(cost::difference_packed_profile(width, height, config.frame_memory));
     *traffic += cost::difference_packed_traffic(width, height, config.frame_memory);
 }
 
@@ -398,14 +402,15 @@ bool controller::impl::detect(frame_output& out) {
         detector.detect_packed(history(1), history(0), motion_mask, config.detect);
     const int morphology_passes = 2 * (config.detect.open_passes + config.detect.close_passes);
     scope.charge(
-        cost::three_frame_difference_packed_cycles(width, height, config.frame_memory) +
-            cost::morphology_cycles(width, height, morphology_passes) +
-            cost::connected_components_cycles(width, height, detector.last_foreground_pixels()),
+        cycles_of(cost::three_frame_difference_packed_profile(width, height, config.frame_memory)) +
+            cycles_of(cost::morphology_profile(width, height, morphology_passes)) +
+            cycles_of(cost::connected_components_profile(width, height,
+                                                         detector.last_foreground_pixels())),
         cost::three_frame_difference_packed_traffic(width, height, config.frame_memory));
     // The object's extent: the largest component joined with the raw mask's
     // block group around it (dsp/motion_blocks.h), or that group alone when
     // the opening left no component (an object much wider than its motion).
-    scope.charge(cost::motion_blocks_cycles(width, height));
+    scope.charge(cycles_of(cost::motion_blocks_profile(width, height)));
     if (!found.object_found) return false;
     out.motion_found = true;
     out.motion_box = found.object_box;
@@ -428,9 +433,10 @@ bool controller::impl::detect(frame_output& out) {
     const int pattern_w = pattern.width, pattern_h = pattern.height;
     // The size came from object(t-1); update() only finds the position.
     const track_status status = tracker.update(history(0));
-    scope.charge(cost::pattern_copy_cycles(pattern_w, pattern_h) +
-                 cost::sad_search_cycles(pattern_w, pattern_h, tracker.last_match().positions) +
-                 cost::pattern_copy_cycles(tracker.pattern().width, tracker.pattern().height));
+    scope.charge(
+        cycles_of(cost::pattern_copy_profile(pattern_w, pattern_h)) +
+        cycles_of(cost::sad_search_profile(pattern_w, pattern_h, tracker.last_match().positions)) +
+        cycles_of(cost::pattern_copy_profile(tracker.pattern().width, tracker.pattern().height)));
     out.detected = status == track_status::tracking;
     return out.detected;
 }
@@ -457,10 +463,11 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic) {
     const box last = tracker.position();
     const box pattern = tracker.pattern_box();
     const track_status status = tracker.update(history(0));
-    *cycles +=
-        cost::sad_search_cycles(pattern.width, pattern.height, tracker.last_match().positions);
+    *cycles += cycles_of(
+        cost::sad_search_profile(pattern.width, pattern.height, tracker.last_match().positions));
     if (status != track_status::tracking) return false;
-    *cycles += cost::pattern_copy_cycles(tracker.pattern_box().width, tracker.pattern_box().height);
+    *cycles += cycles_of(
+        cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
 
     uint64_t refit_cycles = 0;
     const box found = tracker.position();
@@ -471,8 +478,8 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic) {
     if (resized.x != found.x || resized.y != found.y || resized.width != found.width ||
         resized.height != found.height) {
         tracker.start(history(0), resized);
-        *cycles +=
-            cost::pattern_copy_cycles(tracker.pattern_box().width, tracker.pattern_box().height);
+        *cycles += cycles_of(
+            cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
     }
     return true;
 }
@@ -520,9 +527,9 @@ box controller::impl::refit_box(box last, box found, uint64_t* cycles, sdram_tra
     const box seed{last.x - region.x, last.y - region.y, last.width, last.height};
     const block_group before = earlier.extent(seed, 0);
     const block_group after = later_blocks.extent(seed, 0);
-    *cycles = cost::three_frame_difference_packed_cycles(region.width, region.height,
-                                                         config.frame_memory) +
-              2 * cost::motion_blocks_cycles(region.width, region.height);
+    *cycles = cycles_of(cost::three_frame_difference_packed_profile(region.width, region.height,
+                                                                    config.frame_memory)) +
+              2 * cycles_of(cost::motion_blocks_profile(region.width, region.height));
     *traffic = cost::three_frame_difference_packed_traffic(region.width, region.height,
                                                            config.frame_memory);
     const int enough = min_int(config.detect.min_area, last.width * last.height / 8);
@@ -552,8 +559,10 @@ void controller::impl::stereo_sad(box object, frame_output& out) {
     out.sad_match = stereo_match_sad(history(0), left(), core, config.stereo);
     out.sad_at_range_end = at_range_end(out.sad_match, core, config.stereo.min_disparity,
                                         config.stereo.max_disparity, width);
-    scope.charge(cost::sad_search_cycles(core.width, core.height, out.sad_match.positions));
-    if (config.stereo.subpixel && out.sad_match.valid) scope.charge(cost::subpixel_cycles());
+    scope.charge(
+        cycles_of(cost::sad_search_profile(core.width, core.height, out.sad_match.positions)));
+    if (config.stereo.subpixel && out.sad_match.valid)
+        scope.charge(cycles_of(cost::subpixel_profile()));
     if (!out.sad_match.valid || out.sad_at_range_end) return;
     if (!object_is_tiled(object, config.surface)) return;
     const object_depth_result& r = out.surface =
@@ -562,10 +571,10 @@ void controller::impl::stereo_sad(box object, frame_output& out) {
     // Each tile a search of its own (the mean of their positions: they
     // differ only where the left image's border clips one).
     if (r.tiles > 0)
-        scope.charge(r.tiles *
-                     cost::sad_search_cycles(r.tile_width, r.tile_height, r.positions / r.tiles));
-    if (config.stereo.subpixel) scope.charge(r.tiles * cost::subpixel_cycles());
-    scope.charge(cost::surface_mean_cycles(r.inside, r.matched));
+        scope.charge(r.tiles * cycles_of(cost::sad_search_profile(r.tile_width, r.tile_height,
+                                                                  r.positions / r.tiles)));
+    if (config.stereo.subpixel) scope.charge(r.tiles * cycles_of(cost::subpixel_profile()));
+    scope.charge(cycles_of(cost::surface_mean_profile(r.inside, r.matched)));
     if (r.valid) out.sad_match.disparity_q8 = r.disparity_q8;
 }
 
@@ -599,9 +608,10 @@ void controller::impl::stereo_edge(box object, frame_output& out) {
         stereo_match_edge(right_band.as_const(), left_band.as_const(), band_pattern, config.edge);
     out.edge_at_range_end = at_range_end(out.edge_match, object, config.edge.min_disparity,
                                          config.edge.max_disparity, width);
-    scope.charge(2 * cost::sobel_cycles(width, pattern.height) +
-                 cost::edge_match_cycles(width, config.edge.lines, config.edge.max_disparity,
-                                         config.edge.min_disparity));
+    scope.charge(
+        2 * cycles_of(cost::sobel_profile(width, pattern.height)) +
+        cycles_of(cost::edge_match_profile(width, config.edge.lines, config.edge.max_disparity,
+                                           config.edge.min_disparity)));
 }
 
 bool controller::impl::choose_disparity(frame_output& out) const {
@@ -645,7 +655,7 @@ void controller::impl::xyz(box object, frame_output& out) {
     stage_scope scope(*hardware, stage::xyz, out);
     out.has_point = triangulate(config.rig, object.center_x2() * 128, object.center_y2() * 128,
                                 out.disparity_q8, &out.point);
-    scope.charge(cost::triangulate_cycles());
+    scope.charge(cycles_of(cost::triangulate_profile()));
 }
 
 }  // namespace dsp

@@ -2,7 +2,8 @@
 // harness implements it with plain counters (tests/support/host/counting_hal); the C6416
 // TLM model (model/c6416) implements it with registers, EDMA, interrupts and
 // simulated time. Everything a real C6416 program needs and nothing OS-like:
-//   - time: charge_cycles (CPU cycles from the cost model);
+//   - time: charge_cycles (CPU cycles), kernel_cycles (a kernel call's cycles
+//     under the run's cost model);
 //   - registers and memory at physical addresses: read32 / write32 (C6416
 //     peripheral registers of dsp/c6416_regs.h, the card's registers and
 //     pixel ports of dsp/card_regs.h, L2 and SDRAM), and memory(): a pointer
@@ -17,6 +18,7 @@
 
 #include <cstdint>
 
+#include "dsp/c64x_cost_model.h"
 #include "dsp/stage.h"
 
 namespace dsp {
@@ -127,6 +129,14 @@ class hal {
     virtual void charge_with_traffic(stage s, uint64_t cycles, const sdram_traffic& traffic) {
         (void)traffic;
         charge_cycles(s, cycles);
+    }
+
+    // The cycles of one kernel call (its op profile, dsp/kernel_costs.h) under
+    // the run's cost model: the platform's DSK clocks and compiled-C factor.
+    // The default prices it with the default model (DSK v1, hand-scheduled).
+    virtual uint64_t kernel_cycles(const c64x::kernel_profile& kernel) {
+        static const c64x::cost_model default_model;
+        return default_model.cycles(kernel);
     }
 
     // The firmware enters / leaves a stage (for the timeline and waveforms).

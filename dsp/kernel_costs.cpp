@@ -22,8 +22,6 @@ using c64x::memory_traffic;
 using c64x::op_mix;
 using c64x::placement;
 
-c64x::cost_model g_model;
-
 uint64_t non_negative(int v) {
     return v > 0 ? static_cast<uint64_t>(v) : 0;
 }
@@ -57,12 +55,9 @@ constexpr uint64_t pixels_per_boundary_run = 2;  // a step edge lights two Sobel
 
 }  // namespace
 
-const c64x::cost_model& model() {
-    return g_model;
-}
-
-void set_model(const c64x::cost_model& m) {
-    g_model = m;
+const c64x::cost_model& default_model() {
+    static const c64x::cost_model model;
+    return model;
 }
 
 kernel_profile demosaic_gray_profile(int width, int height, memory where) {
@@ -465,67 +460,67 @@ sdram_traffic three_frame_difference_traffic(int width, int height, memory where
 }
 
 uint64_t demosaic_gray_cycles(int width, int height, memory where) {
-    return g_model.cycles(demosaic_gray_profile(width, height, where));
+    return default_model().cycles(demosaic_gray_profile(width, height, where));
 }
 
 uint64_t demosaic_gray_cycles(int width, int height, memory gray_where, memory raw_where) {
-    return g_model.cycles(demosaic_gray_profile(width, height, gray_where, raw_where));
+    return default_model().cycles(demosaic_gray_profile(width, height, gray_where, raw_where));
 }
 
 uint64_t three_frame_difference_packed_cycles(int width, int height, memory where) {
-    return g_model.cycles(three_frame_difference_packed_profile(width, height, where));
+    return default_model().cycles(three_frame_difference_packed_profile(width, height, where));
 }
 
 uint64_t difference_packed_cycles(int width, int height, memory where) {
-    return g_model.cycles(difference_packed_profile(width, height, where));
+    return default_model().cycles(difference_packed_profile(width, height, where));
 }
 
 uint64_t brightness_cycles(int width, int height, memory where) {
-    return g_model.cycles(brightness_profile(width, height, where));
+    return default_model().cycles(brightness_profile(width, height, where));
 }
 
 uint64_t three_frame_difference_cycles(int width, int height, memory where) {
-    return g_model.cycles(three_frame_difference_profile(width, height, where));
+    return default_model().cycles(three_frame_difference_profile(width, height, where));
 }
 
 uint64_t morphology_cycles(int width, int height, int passes) {
-    return g_model.cycles(morphology_profile(width, height, passes));
+    return default_model().cycles(morphology_profile(width, height, passes));
 }
 
 uint64_t connected_components_cycles(int width, int height, int foreground) {
-    return g_model.cycles(connected_components_profile(width, height, foreground));
+    return default_model().cycles(connected_components_profile(width, height, foreground));
 }
 
 uint64_t sad_search_cycles(int pattern_w, int pattern_h, int positions) {
-    return g_model.cycles(sad_search_profile(pattern_w, pattern_h, positions));
+    return default_model().cycles(sad_search_profile(pattern_w, pattern_h, positions));
 }
 
 uint64_t motion_blocks_cycles(int width, int height) {
-    return g_model.cycles(motion_blocks_profile(width, height));
+    return default_model().cycles(motion_blocks_profile(width, height));
 }
 
 uint64_t pattern_copy_cycles(int pattern_w, int pattern_h) {
-    return g_model.cycles(pattern_copy_profile(pattern_w, pattern_h));
+    return default_model().cycles(pattern_copy_profile(pattern_w, pattern_h));
 }
 
 uint64_t subpixel_cycles() {
-    return g_model.cycles(subpixel_profile());
+    return default_model().cycles(subpixel_profile());
 }
 
 uint64_t surface_mean_cycles(int inside, int matched) {
-    return g_model.cycles(surface_mean_profile(inside, matched));
+    return default_model().cycles(surface_mean_profile(inside, matched));
 }
 
 uint64_t sobel_cycles(int width, int rows) {
-    return g_model.cycles(sobel_profile(width, rows));
+    return default_model().cycles(sobel_profile(width, rows));
 }
 
 uint64_t edge_match_cycles(int width, int lines, int max_disparity, int min_disparity) {
-    return g_model.cycles(edge_match_profile(width, lines, max_disparity, min_disparity));
+    return default_model().cycles(edge_match_profile(width, lines, max_disparity, min_disparity));
 }
 
 uint64_t triangulate_cycles() {
-    return g_model.cycles(triangulate_profile());
+    return default_model().cycles(triangulate_profile());
 }
 
 }  // namespace dsp::cost

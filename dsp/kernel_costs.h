@@ -3,14 +3,13 @@
 // hand-scheduled C64x implementation of the kernel issues per functional
 // unit (packed 8-bit SIMD such as SUBABS4 and DOTPU4, 64-bit loads) and
 // where its data lives, and lets the model turn that into cycles.
-// These are the figures charged to dsp::hal::charge_cycles.
 //
 // The op profile of each kernel (ops per iteration per unit, pixels per
-// iteration) is documented in kernel_costs.cpp; *_profile() returns it so a
-// report can show the breakdown. Figures come from cost::model() (model id
-// cost::model().id()); the platform may replace it once at start-up, e.g.
-// for the DSK v2/v3 clocks (SDRAM stalls depend on the CPU/EMIF ratio) or a
-// compiled-C factor.
+// iteration) is documented in kernel_costs.cpp; *_profile() returns it. The
+// firmware prices a profile through dsp::hal::kernel_cycles, i.e. under the
+// run's cost model (the DSK v2/v3 clocks change the SDRAM stalls, a
+// compiled-C factor every figure); the *_cycles() functions below give the
+// default model's figures (DSK v1, hand-scheduled) for tests and docs.
 #pragma once
 
 #include <cstdint>
@@ -23,9 +22,8 @@ namespace dsp::cost {
 // Where a kernel's image data lives (docs/design-brief.md, "DSP memory").
 enum class memory : uint8_t { l2, sdram };
 
-// The model all functions below use (default: DSK v1 clocks, fitted values).
-const c64x::cost_model& model();
-void set_model(const c64x::cost_model& m);
+// The model the *_cycles() functions use: DSK v1 clocks, fitted values.
+const c64x::cost_model& default_model();
 
 // Fused Bayer bilinear demosaic + gray + brightness mean, one frame; `where`
 // places both the raw input and the gray output, the four-argument form each
@@ -92,6 +90,7 @@ c64x::kernel_profile three_frame_difference_packed_profile(int width, int height
                                                            memory where = memory::l2);
 c64x::kernel_profile difference_packed_profile(int width, int height, memory where = memory::l2);
 c64x::kernel_profile morphology_profile(int width, int height, int passes);
+c64x::kernel_profile motion_blocks_profile(int width, int height);
 c64x::kernel_profile connected_components_profile(int width, int height, int foreground);
 c64x::kernel_profile sad_search_profile(int pattern_w, int pattern_h, int positions);
 c64x::kernel_profile pattern_copy_profile(int pattern_w, int pattern_h);

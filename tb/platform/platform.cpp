@@ -56,10 +56,6 @@ platform_top::platform_top(const platform_config& config)
         m_replay_source = std::make_unique<sensor::replay_source>(*m_replay);
         m_source.use_replay(m_replay_source.get());
     }
-    // Kernel cycle figures for this DSK's clocks (SDRAM stalls depend on the
-    // CPU / EMIF ratio, dsp/kernel_costs.h) and compiled-C factor.
-    dsp::cost::set_model(cost_model_of(config));
-
     m_cpu = std::make_unique<c6416::c6416_sc>("dsk", cpu_config(config));
     m_target = std::make_unique<emif::emif_tlm_target>("emifa", m_engine);
     if (config.arrangement == arrangement_kind::pins) {
@@ -95,7 +91,9 @@ platform_top::platform_top(const platform_config& config)
 platform_top::~platform_top() = default;
 
 void platform_top::firmware(dsp::hal& hal) {
-    m_probe = std::make_unique<probe_hal>(hal, m_timeline);
+    // Kernels priced for this DSK's clocks (SDRAM stalls depend on the CPU /
+    // EMIF ratio, dsp/kernel_costs.h) and compiled-C factor.
+    m_probe = std::make_unique<probe_hal>(hal, m_timeline, cost_model_of(m_config));
     m_probe->set_event_hook([this](const fw_event& e) { on_firmware_event(e); });
     m_probe->set_memory_hook([this](uint32_t, uint32_t bytes, const uint8_t* p) {
         const auto frame =

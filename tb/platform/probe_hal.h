@@ -53,7 +53,9 @@ class probe_hal final : public dsp::hal {
     // Every memory() the firmware asks for, with what it points at then.
     using memory_hook = std::function<void(uint32_t address, uint32_t bytes, const uint8_t*)>;
 
-    probe_hal(dsp::hal& inner, timeline& events) : m_inner(inner), m_events(events) {}
+    // The firmware's kernels are priced with `model` (kernel_cycles).
+    probe_hal(dsp::hal& inner, timeline& events, const dsp::c64x::cost_model& model)
+        : m_inner(inner), m_events(events), m_model(model) {}
 
     // Called once on the CPU thread before the firmware starts.
     void start();
@@ -64,6 +66,9 @@ class probe_hal final : public dsp::hal {
     void charge_cycles(dsp::stage s, uint64_t cycles) override;
     void charge_with_traffic(dsp::stage s, uint64_t cycles,
                              const dsp::sdram_traffic& traffic) override;
+    uint64_t kernel_cycles(const dsp::c64x::kernel_profile& kernel) override {
+        return m_model.cycles(kernel);
+    }
     void stage_begin(dsp::stage s) override;
     void stage_end(dsp::stage s) override;
     uint32_t read32(uint32_t address) override;
@@ -104,6 +109,7 @@ class probe_hal final : public dsp::hal {
 
     dsp::hal& m_inner;
     timeline& m_events;
+    dsp::c64x::cost_model m_model;
     event_hook m_hook;
     memory_hook m_memory_hook;
     std::vector<charge_record> m_charges;

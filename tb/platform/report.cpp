@@ -68,7 +68,7 @@ void print_run(std::FILE* out, const platform_top& top) {
         static_cast<unsigned long long>(isl.pin_hash()),
         static_cast<unsigned long long>(st.pin_changes), top.events().events().size(),
         static_cast<unsigned long long>(top.events().hash()));
-    std::fprintf(out, "cycles from cost model %s\n", dsp::cost::model().id());
+    std::fprintf(out, "cycles from cost model %s\n", dsp::cost::default_model().id());
 }
 
 // The OE starts against the sensors' timing truth, and the data path.
@@ -159,7 +159,7 @@ void print_stages(std::FILE* out, const budget_report& budget) {
     std::fprintf(
         out,
         "\n-- stages (modelled, %s at %.0f MHz): mean / max per processed pair, ms; total cycles\n",
-        dsp::cost::model().id(), budget.cpu_hz / 1e6);
+        dsp::cost::default_model().id(), budget.cpu_hz / 1e6);
     for (int s = 0; s < dsp::stage_count; ++s) {
         std::fprintf(out, "  %-11s %8.3f %8.3f  %12llu\n",
                      dsp::stage_name(static_cast<dsp::stage>(s)), budget.stage_ms_mean[s],

@@ -9,6 +9,10 @@
 
 #include "dsp/c64x_cost_model.h"
 #include "dsp/kernel_costs.h"
+#include "model/scene/sequence.h"
+#include "tb/platform/host/counting_hal.h"
+#include "tb/platform/host/stereo_runner.h"
+#include "tb/platform/scoring/frame_record.h"
 
 namespace {
 
@@ -23,11 +27,7 @@ double ms_at(uint64_t cycles, uint64_t cpu_hz) {
     return static_cast<double>(c64x::cycles_to_ps(cycles, cpu_hz)) * 1e-9;
 }
 
-// Restores the process-wide model whatever a test did to it.
-class KernelCosts : public ::testing::Test {
-  protected:
-    void TearDown() override { set_model(c64x::cost_model{}); }
-};
+class KernelCosts : public ::testing::Test {};
 
 TEST_F(KernelCosts, SadSearchMatchesHandArithmetic) {
     // 40x40 pattern: k = 5 doublewords per row; per row d 10, l 10, m 10,
@@ -130,7 +130,7 @@ TEST_F(KernelCosts, ThroughputMatchesTheDocumentedProfiles) {
     // iteration the profiles document in kernel_costs.cpp.
     const int w = 2048, h = 2048;
     const double pixels = static_cast<double>(w) * h;
-    const c64x::cost_model& m = model();
+    const c64x::cost_model& m = default_model();
     const struct {
         const char* name;
         c64x::kernel_profile profile;
@@ -201,9 +201,9 @@ TEST_F(KernelCosts, ClocksTurnCyclesIntoTime) {
     c64x::model_params v3;
     v3.cpu_hz = c64x::dsk_v3_cpu_hz;
     v3.emif_hz = c64x::dsk_v3_emif_hz;
-    set_model(c64x::cost_model(v3));
-    EXPECT_EQ(demosaic_gray_cycles(640, 480, memory::l2), v1_l2);
-    const uint64_t v3_sdram = demosaic_gray_cycles(640, 480, memory::sdram);
+    const c64x::cost_model v3_model(v3);
+    EXPECT_EQ(v3_model.cycles(demosaic_gray_profile(640, 480, memory::l2)), v1_l2);
+    const uint64_t v3_sdram = v3_model.cycles(demosaic_gray_profile(640, 480, memory::sdram));
     // 7200 bursts x 23 EMIF cycles x 8 ns = 1.325 ms of stall at 125 MHz:
     // 1,324,800 CPU cycles at 1 GHz vs 993,600 at 600 MHz / 100 MHz (1.656 ms).
     EXPECT_EQ(v3_sdram - v1_l2, 7200u * 23 * 8);
@@ -212,13 +212,36 @@ TEST_F(KernelCosts, ClocksTurnCyclesIntoTime) {
                 ms_at(v1_sdram, c64x::dsk_v1_cpu_hz), ms_at(v3_sdram, c64x::dsk_v3_cpu_hz));
 }
 
+// The firmware prices its kernels through its HAL (hal::kernel_cycles): a
+// HAL with a compiled-C model charges the firmware's stages accordingly.
 TEST_F(KernelCosts, CompiledCFactorReachesTheFirmwareFigures) {
     const uint64_t hand = sad_search_cycles(40, 40, 2401);
     c64x::model_params compiled;
     compiled.compiled_c_factor_q8 = 3 * 256;
-    set_model(c64x::cost_model(compiled));
-    EXPECT_NEAR(ratio(sad_search_cycles(40, 40, 2401), hand), 3.0, 1e-6);
-    EXPECT_EQ(model().params().compiled_c_factor_q8, 3u * 256);
+    host::counting_hal hal{c64x::cost_model(compiled)};
+    EXPECT_NEAR(ratio(hal.kernel_cycles(sad_search_profile(40, 40, 2401)), hand), 3.0, 1e-6);
+
+    const scene::scenario scenario = scene::default_scenario();
+    const controller_config config = platform::controller_config_for(scenario.scene.rig);
+    host::stereo_runner by_hand(scenario, config);
+    host::stereo_runner by_compiler(scenario, config, c64x::cost_model(compiled));
+    for (int n = 0; n < 12; ++n) {
+        by_hand.step(n);
+        by_compiler.step(n);
+    }
+    // Compute cycles triple, the L2 / SDRAM stalls stay: every stage that ran
+    // costs more, at most three times as much.
+    for (int i = 0; i < stage_count; ++i) {
+        const uint64_t hand_cycles = by_hand.hal().total_cycles(static_cast<stage>(i));
+        const uint64_t compiled_cycles = by_compiler.hal().total_cycles(static_cast<stage>(i));
+        std::printf("%-12s hand %10llu compiled %10llu\n", stage_name(static_cast<stage>(i)),
+                    static_cast<unsigned long long>(hand_cycles),
+                    static_cast<unsigned long long>(compiled_cycles));
+        if (hand_cycles == 0) continue;
+        EXPECT_GT(compiled_cycles, hand_cycles) << stage_name(static_cast<stage>(i));
+        EXPECT_LE(ratio(compiled_cycles, hand_cycles), 3.0) << stage_name(static_cast<stage>(i));
+    }
+    EXPECT_GT(by_hand.hal().total_cycles(stage::track), 0u);
 }
 
 TEST_F(KernelCosts, DataDependentKernelsGrowWithTheirWork) {
@@ -249,7 +272,7 @@ TEST_F(KernelCosts, DataDependentKernelsGrowWithTheirWork) {
 TEST_F(KernelCosts, PrintsFiguresAgainstThePaper) {
     // Not asserted: the paper's figures were measured on compiled C, these
     // are hand-scheduled kernels (see compiled_c_factor_q8).
-    const c64x::cost_model& m = model();
+    const c64x::cost_model& m = default_model();
     const uint64_t track =
         sad_search_cycles(40, 40, 49 * 49) + pattern_copy_cycles(40, 40);  // +-24 window
     const uint64_t stereo =
@@ -289,7 +312,7 @@ TEST_F(KernelCosts, PrintsFiguresAgainstThePaper) {
     row("VGA pair, tracking: all stages", preprocess + track + stereo + edge + xyz, "24.5ms");
     std::printf(
         "(720 MHz / 1 GHz columns rescale the cycles; the SDRAM stalls in them were "
-        "counted for 600 MHz / 100 MHz EMIF: set_model() for other clocks)\n");
+        "counted for 600 MHz / 100 MHz EMIF: another model for other clocks)\n");
     // The two SAD figures differ only by their positions (258 cycles each).
     EXPECT_EQ(sad_search_cycles(40, 40, 49 * 49) - sad_search_cycles(40, 40, 65 * 3),
               258u * (49 * 49 - 65 * 3));

@@ -163,7 +163,7 @@ TEST(C6416SdramTrafficSc, FirmwareSdramLinesTakeBusTimeAndDelayTheCapture) {
     stream.bytes_read = traffic_a.bytes_read;
     stream.bytes_written = traffic_a.bytes_written;
     stream.where = dsp::c64x::placement::sdram;
-    const uint64_t cost_model_ps = dsp::cost::model().emif_busy_ps(stream);
+    const uint64_t cost_model_ps = dsp::cost::default_model().emif_busy_ps(stream);
     EXPECT_EQ(cost_model_ps, transfers_a * line_edges * eclk_ps);
     std::printf(
         "A: %llu transfers, bus busy %llu ECLK (engine: 16 per line, 7 per row opened) vs cost "

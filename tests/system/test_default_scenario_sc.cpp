@@ -200,7 +200,7 @@ TEST(default_scenario, capture_and_budget_agree_with_the_closed_forms) {
 // meant to move them, and say so.
 TEST(default_scenario, golden_stage_cycles_and_one_timeline) {
     system_run& r = run();
-    ASSERT_STREQ(dsp::cost::model().id(), "c64x-op-model-v1");
+    ASSERT_STREQ(dsp::cost::default_model().id(), "c64x-op-model-v1");
     // Issue 5's memory plan (docs/firmware.md) moved preprocess (raw read
     // once from SDRAM, gray and brightness in L2: 9 x 2,596,950 + one
     // 139,206-cycle packed difference for the history's second frame; was

@@ -341,7 +341,7 @@ json build_report(const run_setup& setup, const platform::platform_top& top,
 
     json report;
     report["schema_version"] = report_schema_version;
-    report["tool"] = {{"name", "stereosim"}, {"cost_model", dsp::cost::model().id()}};
+    report["tool"] = {{"name", "stereosim"}, {"cost_model", dsp::cost::default_model().id()}};
     report["config"] = config_json(setup);
     if (!setup.scenario.replay.empty()) add_replay(report, setup, top);
     report["verdict"] = budget.fits ? "within_budget" : "over_budget";

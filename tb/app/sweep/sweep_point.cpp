@@ -48,16 +48,14 @@ std::string processing_key(const cli::run_setup& s) {
 // here as the firmware's history.
 double host_max_pair_cycles(const platform::platform_config& config) {
     // The platform's cost model for this configuration (clocks, compiled-C
-    // factor), as the co-simulation sets it; the default back afterwards.
-    const dsp::c64x::cost_model before = dsp::cost::model();
-    dsp::cost::set_model(platform::cost_model_of(config));
-    host::stereo_runner runner(config.scenario, platform::pipeline_config(config));
+    // factor), as the co-simulation prices the kernels.
+    host::stereo_runner runner(config.scenario, platform::pipeline_config(config),
+                               platform::cost_model_of(config));
     uint64_t largest = 0;
     for (int n = 0; n <= std::max(0, config.frames - 3); ++n) {
         runner.step(n);
         largest = std::max(largest, runner.hal().frame_cycles_all());
     }
-    dsp::cost::set_model(before);
     return static_cast<double>(largest + config.capture_cycles);
 }
 

@@ -6,8 +6,9 @@
 
 namespace host {
 
-stereo_runner::stereo_runner(scene::scenario scenario, const dsp::controller_config& config)
-    : m_sequence(std::move(scenario)), m_cfa(config.cfa) {
+stereo_runner::stereo_runner(scene::scenario scenario, const dsp::controller_config& config,
+                             const dsp::c64x::cost_model& model)
+    : m_sequence(std::move(scenario)), m_hal(model), m_cfa(config.cfa) {
     m_controller.init(config, m_hal);
 }
 

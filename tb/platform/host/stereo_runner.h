@@ -11,8 +11,8 @@
 #include "dsp/controller.h"
 #include "model/scene/images.h"
 #include "model/scene/sequence.h"
-#include "tb/platform/scoring/frame_record.h"
 #include "tb/platform/host/counting_hal.h"
+#include "tb/platform/scoring/frame_record.h"
 
 namespace host {
 
@@ -20,7 +20,9 @@ using platform::frame_record;
 
 class stereo_runner {
   public:
-    stereo_runner(scene::scenario scenario, const dsp::controller_config& config);
+    // The firmware's kernels priced with `model` (dsp::hal::kernel_cycles).
+    stereo_runner(scene::scenario scenario, const dsp::controller_config& config,
+                  const dsp::c64x::cost_model& model = {});
 
     // Renders frame n and mosaics it into raw_left() / raw_right().
     void render(int n);
