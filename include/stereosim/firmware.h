@@ -101,15 +101,18 @@ typedef enum stereosim_event_kind {
     STEREOSIM_EV_CARD_MISSING = 3,    /* value: what the ID register read */
     STEREOSIM_EV_CARD_CONFIGURED = 4, /* value: IRQ_ENABLE */
     STEREOSIM_EV_OE_RAISED = 5,       /* value: times the firmware raised OE (1 = boot) */
-    STEREOSIM_EV_IN_STEP = 6,         /* pair: the first pair after OE that passed the check */
+    STEREOSIM_EV_IN_STEP = 6,         /* pair: the first pair after OE that passed the check,
+                                       * value: its VERDICT */
     STEREOSIM_EV_SYNC_ERROR = 7,      /* value: VERDICT, detail: MISMATCH_POS */
     STEREOSIM_EV_OVERFLOW = 8,        /* value: STATUS, detail: the card's OVERFLOWS count */
     STEREOSIM_EV_CARD_REARMED = 9,    /* ENABLE 0 -> 1; value: stereosim_rearm_cause */
-    STEREOSIM_EV_WATCHDOG = 10,       /* no card event for a watchdog period; value: period, ms */
+    STEREOSIM_EV_WATCHDOG = 10,       /* no card event for a watchdog period; value: the
+                                       * firmware's own (the reference's: timer clocks) */
     STEREOSIM_EV_PAIR_CAPTURED = 11,  /* pair, value: VERDICT copied with it, detail: buffer;
                                        * left / right: the frames' addresses in DSP memory */
     STEREOSIM_EV_PAIR_REJECTED = 12,  /* pair, value: its VERDICT (a cause bit set: not used) */
-    STEREOSIM_EV_PAIR_DROPPED = 13,   /* pair: the last dropped, value: how many (overrun) */
+    STEREOSIM_EV_PAIR_DROPPED = 13,   /* pair: the one taken after the gap, value: how many
+                                       * before it were dropped (overrun) */
     STEREOSIM_EV_PAIR_PROCESSED = 14, /* pair, value: buffer, detail: 1 if it gave a 3D point */
     STEREOSIM_EV_STOPPED = 15,        /* the loop ended; value: pairs processed */
     STEREOSIM_EV_HARD_ERROR = 16,     /* gave up: OE low, no capture; value: the last
@@ -159,6 +162,13 @@ typedef struct stereosim_result {
 } stereosim_result;
 
 /* ---- the board, as the run configured it ---- */
+typedef enum stereosim_cfa {
+    STEREOSIM_CFA_RGGB = 0,
+    STEREOSIM_CFA_BGGR = 1,
+    STEREOSIM_CFA_GRBG = 2,
+    STEREOSIM_CFA_GBRG = 3
+} stereosim_cfa;
+
 typedef struct stereosim_board {
     uint32_t dsk_version; /* 1, 2 or 3 */
     uint64_t cpu_hz;
@@ -184,6 +194,15 @@ typedef struct stereosim_board {
     uint32_t border_rows_bottom;
     uint32_t dark_rows_bottom;
     uint32_t frame_lines;
+    uint32_t cfa; /* the sensors' colour filter: stereosim_cfa */
+    /* The calibrated rig (the right camera's frame, docs/design-brief.md). */
+    int32_t baseline_um;
+    int32_t focal_length_um;
+    int32_t pixel_pitch_nm;
+    int32_t cx_left_q8; /* principal points, pixels x 256 */
+    int32_t cy_left_q8;
+    int32_t cx_right_q8;
+    int32_t cy_right_q8;
 } stereosim_board;
 
 /* ---- the platform's services ----

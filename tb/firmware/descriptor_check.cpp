@@ -5,25 +5,29 @@
 
 namespace firmware {
 
-bool is_plain_name(const char* name) {
-    if (name == nullptr || !(name[0] >= 'a' && name[0] <= 'z')) return false;
+bool is_plain_name(const char* name, bool upper) {
+    const auto letter = [upper](char c) {
+        return (c >= 'a' && c <= 'z') || (upper && c >= 'A' && c <= 'Z');
+    };
+    if (name == nullptr || !letter(name[0])) return false;
     for (const char* c = name; *c != '\0'; ++c)
-        if (!((*c >= 'a' && *c <= 'z') || (*c >= '0' && *c <= '9') || *c == '_')) return false;
+        if (!(letter(*c) || (*c >= '0' && *c <= '9') || *c == '_')) return false;
     return true;
 }
 
 namespace {
 
-std::string names_problem(const char* what, uint32_t count, uint32_t max,
-                          const char* const* names) {
+std::string names_problem(const char* what, uint32_t count, uint32_t max, const char* const* names,
+                          bool upper) {
     if (count < 1 || count > max)
         return std::string(what) + " count " + std::to_string(count) + " outside 1.." +
                std::to_string(max);
     if (names == nullptr) return std::string(what) + " names missing";
     std::set<std::string> seen;
     for (uint32_t i = 0; i < count; ++i) {
-        if (!is_plain_name(names[i]))
-            return std::string(what) + " " + std::to_string(i) + " has no plain name ([a-z0-9_]+)";
+        if (!is_plain_name(names[i], upper))
+            return std::string(what) + " " + std::to_string(i) + " has no plain name (" +
+                   (upper ? "[A-Za-z0-9_]+" : "[a-z0-9_]+") + ")";
         if (!seen.insert(names[i]).second)
             return std::string(what) + " name '" + names[i] + "' appears twice";
     }
@@ -72,10 +76,10 @@ std::string descriptor_problem(const stereosim_fw_descriptor& d) {
     if (d.name == nullptr || d.name[0] == '\0') return "no name";
     if (d.version == nullptr || d.version[0] == '\0') return "no version";
     std::string problem =
-        names_problem("stage", d.stage_count, STEREOSIM_FW_MAX_STAGES, d.stage_names);
+        names_problem("stage", d.stage_count, STEREOSIM_FW_MAX_STAGES, d.stage_names, false);
     if (!problem.empty()) return problem;
     problem = names_problem("tracker state", d.tracker_state_count, STEREOSIM_FW_MAX_TRACKER_STATES,
-                            d.tracker_state_names);
+                            d.tracker_state_names, true);
     if (!problem.empty()) return problem;
     if (d.key_count > 0 && d.keys == nullptr) return "config keys missing";
     std::set<std::string> keys;

@@ -17,7 +17,8 @@ namespace firmware {
 std::string descriptor_problem(const stereosim_fw_descriptor& d);
 
 // A name the reports, --set and the waveform can carry: [a-z0-9_]+,
-// starting with a letter.
-bool is_plain_name(const char* name);
+// starting with a letter; with `upper`, capitals too (tracker states, shown
+// as the waveform's translated state signal: DETECT, TRACK).
+bool is_plain_name(const char* name, bool upper = false);
 
 }  // namespace firmware

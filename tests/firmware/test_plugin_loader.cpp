@@ -173,6 +173,10 @@ TEST(FirmwareDescriptor, EachRuleRefusesItsDefect) {
     t.d.stage_names = twice;
     EXPECT_EQ(t.problem(), "stage name 'capture' appears twice");
     t.d.stage_names = two_stages;
+    const char* const spaced[] = {"NOT IDLE"};
+    t.d.tracker_state_names = spaced;
+    EXPECT_EQ(t.problem(), "tracker state 0 has no plain name ([A-Za-z0-9_]+)");
+    t.d.tracker_state_names = one_state;
     t.d.tracker_state_count = 0;
     EXPECT_EQ(t.problem(), "tracker state count 0 outside 1..8");
     t.d.tracker_state_count = 1;

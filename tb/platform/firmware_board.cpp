@@ -1,0 +1,64 @@
+#include "tb/platform/firmware_board.h"
+
+#include "dsp/plugin/reference_firmware.h"
+
+namespace platform {
+
+stereosim_board board_of(const platform_config& config) {
+    stereosim_board b{};
+    const int version = config.dsk.version;
+    b.dsk_version = version == 2 || version == 3 ? static_cast<uint32_t>(version) : 1u;
+    b.cpu_hz = static_cast<uint64_t>(config.dsk.cpu_hz);
+    b.emif_hz = static_cast<uint64_t>(config.dsk.emif_hz);
+    b.card_setup = config.card_timing.setup;
+    b.card_strobe = config.card_timing.strobe;
+    b.card_hold = config.card_timing.hold;
+    b.card_retry_limit = config.card_retry_limit;
+    // The card's geometry registers from the sensor profile (docs/card.md,
+    // "Sensor pins the card expects").
+    const sensor::sensor_profile& p = config.profile;
+    b.h_start = static_cast<uint32_t>(p.href_start);
+    b.dark_cols_left = static_cast<uint32_t>(p.dark_cols_left);
+    b.border_cols_left = static_cast<uint32_t>(p.border_cols_before);
+    b.active_cols = static_cast<uint32_t>(p.active_cols);
+    b.border_cols_right = static_cast<uint32_t>(p.border_cols_after);
+    b.dark_cols_right = static_cast<uint32_t>(p.dark_cols_right);
+    b.line_total = static_cast<uint32_t>(p.line_pclks);
+    b.v_start = static_cast<uint32_t>(p.first_row_line);
+    b.dark_rows_top = static_cast<uint32_t>(p.dark_rows_top);
+    b.border_rows_top = static_cast<uint32_t>(p.border_rows_before);
+    b.active_rows = static_cast<uint32_t>(p.active_rows);
+    b.border_rows_bottom = static_cast<uint32_t>(p.border_rows_after);
+    b.dark_rows_bottom = static_cast<uint32_t>(p.dark_rows_bottom);
+    b.frame_lines = static_cast<uint32_t>(p.frame_lines);
+    b.cfa = static_cast<uint32_t>(p.cfa);
+    const dsp::camera_rig rig = pipeline_config(config).rig;
+    b.baseline_um = rig.baseline_um;
+    b.focal_length_um = rig.focal_length_um;
+    b.pixel_pitch_nm = rig.pixel_pitch_nm;
+    b.cx_left_q8 = rig.cx_left_q8;
+    b.cy_left_q8 = rig.cy_left_q8;
+    b.cx_right_q8 = rig.cx_right_q8;
+    b.cy_right_q8 = rig.cy_right_q8;
+    return b;
+}
+
+std::vector<double> reference_values(const platform_config& config) {
+    using namespace dsp::plugin;
+    std::vector<double> v(reference_key_count);
+    const dsp::control_program_config defaults;
+    v[key_mode] = static_cast<double>(config.mode);
+    v[key_search_radius] = config.track_search_radius;
+    v[key_stereo_method] = static_cast<double>(config.stereo_method);
+    v[key_detect_threshold] = config.detect_threshold;
+    v[key_frame_memory] = static_cast<double>(config.frame_memory);
+    v[key_watchdog_ms] = config.watchdog_ms;
+    v[key_card_start_timeout] = config.card_start_timeout;
+    v[key_capture_cycles] = static_cast<double>(config.capture_cycles);
+    v[key_hard_error_rearms] = config.hard_error_rearms;
+    v[key_rearm_on_overflow] = defaults.rearm_on_overflow ? 1 : 0;
+    v[key_rearm_on_every_sync_error] = defaults.rearm_on_every_sync_error ? 1 : 0;
+    return v;
+}
+
+}  // namespace platform
