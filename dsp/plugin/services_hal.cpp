@@ -59,7 +59,7 @@ void services_hal::charge_cycles(stage s, uint64_t cycles) {
 
 void services_hal::charge_with_traffic(stage s, uint64_t cycles, const sdram_traffic& traffic) {
     const stereosim_sdram_traffic t{traffic.bytes_read, traffic.bytes_written};
-    m_s.charge(m_s.ctx, static_cast<uint32_t>(s), cycles, traffic.empty() ? nullptr : &t);
+    m_s.charge(m_s.ctx, static_cast<uint32_t>(s), cycles, &t);
 }
 
 uint64_t services_hal::kernel_cycles(const c64x::kernel_profile& kernel) {

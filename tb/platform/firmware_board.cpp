@@ -1,5 +1,7 @@
 #include "tb/platform/firmware_board.h"
 
+#include <cstring>
+
 #include "dsp/plugin/reference_firmware.h"
 
 namespace platform {
@@ -59,6 +61,29 @@ std::vector<double> reference_values(const platform_config& config) {
     v[key_rearm_on_overflow] = defaults.rearm_on_overflow ? 1 : 0;
     v[key_rearm_on_every_sync_error] = defaults.rearm_on_every_sync_error ? 1 : 0;
     return v;
+}
+
+std::vector<double> plugin_values(const stereosim_fw_descriptor& d, const platform_config& config) {
+    const stereosim_fw_descriptor& reference = dsp::plugin::reference_firmware();
+    const std::vector<double> run = reference_values(config);
+    std::vector<double> values;
+    for (uint32_t k = 0; k < d.key_count; ++k) {
+        const stereosim_fw_key& key = d.keys[k];
+        double value = key.default_value;
+        for (uint32_t r = 0; r < reference.key_count; ++r) {
+            const stereosim_fw_key& ref = reference.keys[r];
+            if (std::strcmp(ref.name, key.name) != 0 || ref.type != key.type) continue;
+            if (key.type != STEREOSIM_KEY_CHOICE) {
+                if (run[r] >= key.min && run[r] <= key.max) value = run[r];
+                continue;
+            }
+            const char* chosen = ref.choices[static_cast<size_t>(run[r])];
+            for (uint32_t c = 0; c < key.choice_count; ++c)
+                if (std::strcmp(key.choices[c], chosen) == 0) value = c;
+        }
+        values.push_back(value);
+    }
+    return values;
 }
 
 }  // namespace platform

@@ -18,4 +18,10 @@ stereosim_board board_of(const platform_config& config);
 // reference_key order) for a run's config.
 std::vector<double> reference_values(const platform_config& config);
 
+// A plugin's key values for a run: a key named and typed like one of the
+// reference firmware's takes the run's value of that setting (a choice by
+// its name, if the plugin has it), every other key its default. The
+// shipped firmware loaded as a plugin thus runs as the built-in one.
+std::vector<double> plugin_values(const stereosim_fw_descriptor& d, const platform_config& config);
+
 }  // namespace platform

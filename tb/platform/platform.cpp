@@ -6,9 +6,11 @@
 
 #include "dsp/c6416_regs.h"
 #include "dsp/kernel_costs.h"
+#include "dsp/plugin/reference_firmware.h"
 #include "model/time/sc_ticks.h"
 #include "tb/platform/arrangements/fast/fast_island.h"
 #include "tb/platform/arrangements/pins/pins_island.h"
+#include "tb/platform/firmware_board.h"
 
 namespace platform {
 
@@ -49,6 +51,16 @@ platform_top::platform_top(const platform_config& config)
       m_sequence(config.scenario),
       m_source(m_sequence.scene_renderer()),
       m_engine(engine_config(config)) {
+    // Throws std::runtime_error with the loader's one line for a plugin it
+    // cannot run (docs/firmware-abi.md).
+    if (!config.firmware.empty()) {
+        std::string error;
+        m_plugin = firmware::plugin::load(config.firmware, &error);
+        if (!m_plugin) throw std::runtime_error(error);
+        m_firmware = &m_plugin->descriptor();
+    } else {
+        m_firmware = &dsp::plugin::reference_firmware();
+    }
     if (!config.replay_manifest.empty()) {
         // Throws std::runtime_error naming the file for a bad manifest or image.
         m_replay = std::make_unique<scene::replay>(
@@ -101,11 +113,22 @@ void platform_top::firmware(dsp::hal& hal) {
         if (p && bytes == frame) m_frame_reads.push_back(fnv1a(p, bytes));
     });
     m_probe->start();
-    if (!m_program.init(program_config(m_config), *m_probe)) {
+    // The firmware behind the ABI: it sees the board, its key values and the
+    // services; the platform sees its reports.
+    m_services = std::make_unique<firmware_services>(*m_probe);
+    const stereosim_board board = board_of(m_config);
+    const std::vector<double> values = plugin_values(*m_firmware, m_config);
+    char error[256] = "";
+    void* instance =
+        m_firmware->create(&m_services->table(), &board, values.data(), error, sizeof error);
+    if (instance == nullptr) {
         m_init_failed = true;
+        m_init_error = error;
         return;
     }
-    m_program.run();
+    m_firmware->policy(instance, &m_policy);
+    m_firmware->run(instance);
+    m_firmware->destroy(instance);
 }
 
 void platform_top::advance_to(simtime::ticks t) {
@@ -179,6 +202,8 @@ void platform_top::on_firmware_event(const fw_event& e) {
     captured_pair p;
     p.pair = e.event.pair;
     p.buffer = static_cast<int>(e.event.detail);
+    p.address[0] = e.left;
+    p.address[1] = e.right;
     p.verdict = e.event.value;
     p.tick = e.tick;
     check_captured(p);
@@ -210,9 +235,9 @@ void platform_top::check_captured(captured_pair& p) {
     const uint32_t bytes =
         static_cast<uint32_t>(m_island->frame_width() * m_island->frame_height());
     for (int c = 0; c < 2; ++c) {
-        const uint32_t address =
-            c == 0 ? m_program.left_address(p.buffer) : m_program.right_address(p.buffer);
-        const uint8_t* memory = m_probe->memory(address, bytes);
+        // Both frames at one address: the report named none.
+        if (p.address[0] == p.address[1]) break;
+        const uint8_t* memory = m_probe->memory(p.address[c], bytes);
         if (!memory) continue;
         p.memory_checksum[c] = fnv1a(memory, bytes);
         if (p.ready < 0) continue;

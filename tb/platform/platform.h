@@ -17,13 +17,15 @@
 #include <systemc>
 #include <vector>
 
-#include "dsp/control_program.h"
 #include "model/c6416/c6416_sc.h"
 #include "model/emif/emif_async_master.h"
 #include "model/emif/emif_tlm_target_sc.h"
 #include "model/scene/replay.h"
 #include "model/scene/sequence.h"
 #include "model/sensor/scene_sources.h"
+#include "stereosim/firmware.h"
+#include "tb/firmware/plugin.h"
+#include "tb/platform/firmware_services.h"
 #include "tb/platform/island/island.h"
 #include "tb/platform/island/timeline.h"
 #include "tb/platform/platform_config.h"
@@ -38,6 +40,7 @@ namespace platform {
 struct captured_pair {
     uint32_t pair = 0;  // the card's PAIRS_OK number copied with it
     int buffer = 0;
+    uint32_t address[2] = {};            // its left and right frame in DSP memory (the report's)
     simtime::ticks tick = 0;             // pair_captured report
     simtime::ticks ready = -1;           // FRAME_READY rise of this pair, -1 unknown
     uint32_t verdict = 0;                // VERDICT copied with it
@@ -97,7 +100,13 @@ class platform_top {
     const probe_hal& probe() const { return *m_probe; }
     bool firmware_started() const { return m_probe != nullptr; }
     bool firmware_init_failed() const { return m_init_failed; }
-    const dsp::control_program& program() const { return m_program; }
+    // The firmware's own line when it refused its configuration.
+    const std::string& firmware_init_error() const { return m_init_error; }
+    // The firmware under test (the built-in reference unless config.firmware
+    // names a plugin) and the recovery policy it was created with.
+    const stereosim_fw_descriptor& firmware_descriptor() const { return *m_firmware; }
+    const firmware::plugin* firmware_plugin() const { return m_plugin.get(); }
+    const stereosim_fw_policy& firmware_policy() const { return m_policy; }
     const timeline& events() const { return m_timeline; }
     // An injected fault's onset on the timeline (tb/app/faults, after the run).
     void mark_fault(simtime::ticks tick, uint8_t index, uint32_t type, uint32_t frame) {
@@ -131,8 +140,12 @@ class platform_top {
     std::unique_ptr<island> m_island;
     sc_core::sc_signal<bool> m_int[4];
     std::unique_ptr<probe_hal> m_probe;
-    dsp::control_program m_program;
+    std::unique_ptr<firmware::plugin> m_plugin;  // config.firmware, or null
+    const stereosim_fw_descriptor* m_firmware = nullptr;
+    std::unique_ptr<firmware_services> m_services;
+    stereosim_fw_policy m_policy{};
     bool m_init_failed = false;
+    std::string m_init_error;
     std::vector<captured_pair> m_captured;
     std::vector<uint64_t> m_frame_reads;  // checksums of frame-sized reads since the last take
     std::vector<used_pair> m_used;

@@ -41,6 +41,12 @@ struct platform_config {
     // still gives the rig and the scene times (frame k at k periods).
     std::string replay_manifest;
 
+    // ---- firmware ----------------------------------------------------------------------------
+    // The firmware under test: a plugin built against include/stereosim/
+    // firmware.h (docs/firmware-abi.md); empty: the built-in reference
+    // firmware of dsp/, with the settings below as its key values.
+    std::string firmware;
+
     // ---- sensors -----------------------------------------------------------------------------
     sensor::sensor_profile profile = sensor::default_profile();
     // Sensor seeds are 2 seed (left) and 2 seed + 1 (right). Seed 3: the left

@@ -115,9 +115,9 @@ int probe_hal::wait_for_interrupt() {
     return n;
 }
 
-void probe_hal::report(const dsp::event_record& e) {
+void probe_hal::report(const dsp::event_record& e, uint32_t left, uint32_t right) {
     enter();
-    const fw_event te{now(), e};
+    const fw_event te{now(), e, left, right};
     if (m_hook) m_hook(te);
     m_fw_events.push_back(te);
     m_events.add(te.tick, event_kind::firmware, static_cast<uint8_t>(e.kind), e.pair, e.value);

@@ -33,6 +33,8 @@ struct tick_interval {
 struct fw_event {
     simtime::ticks tick = 0;
     dsp::event_record event;
+    // A captured pair's frames in DSP memory, as its report names them.
+    uint32_t left = 0, right = 0;
 };
 
 // A register write of the DSP as it completed on the bus.
@@ -78,7 +80,9 @@ class probe_hal final : public dsp::hal {
     uint32_t interrupt_flags() override;
     void clear_interrupt_flags(uint32_t mask) override;
     int wait_for_interrupt() override;
-    void report(const dsp::event_record& e) override;
+    void report(const dsp::event_record& e) override { report(e, 0, 0); }
+    // A report with the frame addresses of a captured pair (the firmware ABI's).
+    void report(const dsp::event_record& e, uint32_t left, uint32_t right);
     void report_result(uint32_t pair, const dsp::frame_output& out) override;
     bool stop_requested() override;
 

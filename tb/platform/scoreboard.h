@@ -16,9 +16,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "tb/platform/platform.h"
 #include "tb/platform/scoring/error_metrics.h"
 #include "tb/platform/scoring/frame_record.h"
-#include "tb/platform/platform.h"
 
 namespace platform {
 
@@ -49,7 +49,7 @@ struct pair_check {
     simtime::ticks result_tick = 0;
     bool used_after_verdict = false;  // result after FRAME_READY, FRAME_READY after its last pixel
     double latency_ms = 0.0;          // first active pixel -> 3D output
-    platform::frame_record record;        // the firmware's output with the scene's truth
+    platform::frame_record record;    // the firmware's output with the scene's truth
     platform::frame_errors errors;
 };
 

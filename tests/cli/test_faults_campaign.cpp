@@ -224,12 +224,16 @@ TEST(FaultCampaign, SnapshotsGiveTheSameRunsAsRunsFromTheStart) {
         "snapshots");
     EXPECT_EQ(r.forked_campaign["snapshots"], true);
     EXPECT_EQ(r.spawned_campaign["snapshots"], false);
-    ASSERT_EQ(r.forked_campaign["rows"].size(), 3u);
+    // The emif-wait match also keeps the row where a sensor dies at the
+    // overflow re-arm: sequential capture and RETRY_LIMIT 2, alone in its
+    // group, so it runs from the start either way.
+    ASSERT_EQ(r.forked_campaign["rows"].size(), 4u);
     expect_same_runs(r);
-    // Each was forked (none ran from the start after a missed snapshot),
-    // before its fault: skew at sensor frame 2, emif-wait at 73.5 ms,
-    // drop-frame at sensor frame 4.
+    // The others were forked (none ran from the start after a missed
+    // snapshot), before their fault: skew at sensor frame 2, emif-wait at
+    // 73.5 ms, drop-frame at sensor frame 4.
     for (const json& row : r.forked_campaign["rows"]) {
+        if (row["fault"].get<std::string>().find("dead") != std::string::npos) continue;
         ASSERT_TRUE(row["snapshot_ms"].is_number()) << row.dump();
         EXPECT_GT(row["snapshot_ms"].get<double>(), 0.0);
         EXPECT_LT(row["snapshot_ms"].get<double>(), 98.0);

@@ -103,7 +103,28 @@ TEST(ReferencePlugin, MakesThePlatformsConfiguration) {
         const std::vector<double> values = platform::reference_values(configs[i]);
         expect_same(dsp::plugin::reference_config(platform::board_of(configs[i]), values.data()),
                     platform::program_config(configs[i]));
+        // Loaded as a plugin it gets the same values.
+        EXPECT_EQ(platform::plugin_values(dsp::plugin::reference_firmware(), configs[i]), values);
     }
+}
+
+// Another firmware's keys: one named like a reference setting takes the run's
+// value when it fits the key (a choice by name), the others their defaults.
+TEST(ReferencePlugin, AnotherFirmwaresKeysTakeTheRunsSettingsByName) {
+    const char* const modes[] = {"overlapped", "turbo"};
+    const stereosim_fw_key keys[] = {
+        {"watchdog_ms", STEREOSIM_KEY_INT, 0, 100, 7, nullptr, 0, "a watchdog"},
+        {"mode", STEREOSIM_KEY_CHOICE, 0, 0, 1, modes, 2, "a mode"},
+        {"gain", STEREOSIM_KEY_FLOAT, 0, 2, 1.5, nullptr, 0, "its own"},
+    };
+    stereosim_fw_descriptor d = dsp::plugin::reference_firmware();
+    d.keys = keys;
+    d.key_count = 3;
+    platform::platform_config config;  // watchdog 500 ms: outside 0..100, overlapped
+    EXPECT_EQ(platform::plugin_values(d, config), (std::vector<double>{7, 0, 1.5}));
+    config.watchdog_ms = 50;
+    config.mode = dsp::pipeline_mode::sequential;  // no such choice: the default
+    EXPECT_EQ(platform::plugin_values(d, config), (std::vector<double>{50, 1, 1.5}));
 }
 
 // A bus with nothing on it (every read 0, so no card ID) and the DSK's

@@ -12,6 +12,7 @@
 #include "model/scene/replay.h"
 #include "model/sensor/profile.h"
 #include "tb/app/cli/scenarios.h"
+#include "tb/firmware/plugin.h"
 
 namespace cli {
 
@@ -183,6 +184,9 @@ std::vector<config_key> run_keys() {
                 "line); changes no result"),
         boolean("run.hash_pins", setup_field(&run_setup::hash_pins),
                 "fold every pin change into the pin hash"),
+        text("run.firmware", setup_field(&run_setup::firmware),
+             "the firmware under test: a plugin built against include/stereosim/firmware.h "
+             "(docs/firmware-abi.md); empty: the built-in reference firmware"),
     };
 }
 
@@ -511,6 +515,9 @@ bool validate_setup(const run_setup& setup, std::string* error) {
                  " is more than half of dsk.cpu_mhz " + format_number(setup.effective_cpu_mhz());
         return false;
     }
+    // A plugin that cannot run is bad input now, not a failure after the
+    // output folder exists.
+    if (!setup.firmware.empty() && !firmware::plugin::load(setup.firmware, error)) return false;
     if (!setup.scenario.replay.empty()) {
         try {
             scene::replay replay(setup.scenario.replay, profile.active_cols, profile.active_rows);

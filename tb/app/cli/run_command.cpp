@@ -89,6 +89,10 @@ run_command::run_command(CLI::App& app, std::vector<std::unique_ptr<run_extensio
     m_run->add_option("--mode", o.mode, "sequential|overlapped (firmware.mode)")
         ->type_name("sequential|overlapped");
     m_run->add_option("--replay", o.replay, "replay manifest (scenario.replay)");
+    m_run
+        ->add_option("--firmware", o.firmware,
+                     "the firmware under test, a plugin .so (run.firmware, docs/firmware-abi.md)")
+        ->type_name("PATH");
     m_run->add_option("--set", o.sets,
                       "key=value for any config key (repeatable; stereosim config --list)");
     m_run->add_option("--out", o.out_dir,
@@ -113,9 +117,13 @@ bool run_command::setup_from_options(run_setup* setup, std::string* error) const
         const char* option;
         const char* key;
         const std::string& text;
-    } named[] = {{"--frames", "run.frames", o.frames}, {"--seed", "run.seed", o.seed},
-                 {"--dsk", "dsk.version", dsk},        {"--cpu-mhz", "dsk.cpu_mhz", o.cpu_mhz},
-                 {"--mode", "firmware.mode", o.mode},  {"--replay", "scenario.replay", o.replay}};
+    } named[] = {{"--frames", "run.frames", o.frames},
+                 {"--seed", "run.seed", o.seed},
+                 {"--dsk", "dsk.version", dsk},
+                 {"--cpu-mhz", "dsk.cpu_mhz", o.cpu_mhz},
+                 {"--mode", "firmware.mode", o.mode},
+                 {"--replay", "scenario.replay", o.replay},
+                 {"--firmware", "run.firmware", o.firmware}};
     for (const auto& n : named) {
         if (!n.text.empty() && !add_assignment(n.option, n.key, n.text, &assignments, error))
             return false;
@@ -173,7 +181,8 @@ int run_command::run_and_report(platform::platform_top& top, const run_setup& se
     top.run();
     if (progress) line.finish();
     if (top.firmware_init_failed()) {
-        print_error("the firmware refused its configuration (see docs/config.md for the ranges)");
+        print_error("the firmware refused its configuration: " + top.firmware_init_error() +
+                    " (see docs/config.md for the ranges)");
         return exit_bad_input;
     }
     const platform::scoreboard_report score = platform::score(top);

@@ -29,8 +29,8 @@ enum exit_code : int {
 struct run_options {
     std::string scenario;
     std::string config_file;
-    std::string frames, seed, dsk, cpu_mhz, mode, replay;  // checked as config keys
-    std::vector<std::string> sets;                         // key=value
+    std::string frames, seed, dsk, cpu_mhz, mode, replay, firmware;  // checked as config keys
+    std::vector<std::string> sets;                                   // key=value
     std::string out_dir;
     bool quiet = false;
     bool force_progress = false;  // --progress: the progress line even off a terminal

@@ -79,6 +79,7 @@ platform::platform_config platform_config_of(const run_setup& s) {
     c.frames = s.frames;
     if (s.quantum_ns > 0) c.quantum = s.quantum_ns * simtime::ticks_per_ns;
     c.hash_pins = s.hash_pins;
+    c.firmware = s.firmware;
     return c;
 }
 

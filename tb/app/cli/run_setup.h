@@ -69,6 +69,9 @@ struct run_setup {
 
     int frames = 12;
     int64_t seed = 3;
+    // The firmware under test: a plugin (docs/firmware-abi.md); empty: the
+    // built-in reference firmware.
+    std::string firmware;
     int64_t quantum_ns = 0;  // 0: one line of the profile (800 pclk = 46,667 ns by default)
     bool hash_pins = true;
 

@@ -1,0 +1,128 @@
+#include "tb/platform/firmware_services.h"
+
+#include "dsp/controller.h"
+#include "dsp/kernel_costs.h"
+
+namespace platform {
+
+namespace {
+
+probe_hal& probe_of(void* ctx) {
+    return *static_cast<probe_hal*>(ctx);
+}
+
+dsp::stage stage_of(uint32_t s) {
+    return static_cast<dsp::stage>(s);
+}
+
+dsp::box box_of(const stereosim_box& b) {
+    dsp::box out;
+    out.x = b.x;
+    out.y = b.y;
+    out.width = b.w;
+    out.height = b.h;
+    return out;
+}
+
+// What the platform reads of a result, in the form its observers keep.
+dsp::frame_output output_of(const stereosim_result& r) {
+    dsp::frame_output out;
+    out.state = static_cast<dsp::tracker_state>(r.state);
+    out.detected = r.detected != 0;
+    out.has_object = r.has_object != 0;
+    out.box_left = box_of(r.box_left);
+    out.box_right = box_of(r.box_right);
+    out.has_point = r.has_point != 0;
+    out.disparity_q8 = r.disparity_q8;
+    out.point.x = r.x_um;
+    out.point.y = r.y_um;
+    out.point.z = r.z_um;
+    for (int s = 0; s < dsp::stage_count; ++s) out.stage_cycles[s] = r.stage_cycles[s];
+    return out;
+}
+
+void charge(void* ctx, uint32_t s, uint64_t cycles, const stereosim_sdram_traffic* traffic) {
+    if (traffic == nullptr) return probe_of(ctx).charge_cycles(stage_of(s), cycles);
+    dsp::sdram_traffic t;
+    t.bytes_read = traffic->bytes_read;
+    t.bytes_written = traffic->bytes_written;
+    probe_of(ctx).charge_with_traffic(stage_of(s), cycles, t);
+}
+
+uint64_t kernel_cycles(void* ctx, const stereosim_kernel_profile* kernel,
+                       stereosim_sdram_traffic* traffic) {
+    const dsp::c64x::kernel_profile k = model_profile(*kernel);
+    if (traffic != nullptr) {
+        const dsp::sdram_traffic t = dsp::cost::sdram_traffic_of(k);
+        traffic->bytes_read = t.bytes_read;
+        traffic->bytes_written = t.bytes_written;
+    }
+    return probe_of(ctx).kernel_cycles(k);
+}
+
+void report(void* ctx, const stereosim_event* e) {
+    dsp::event_record r;
+    r.kind = static_cast<dsp::firmware_event>(e->kind);
+    r.pair = e->pair;
+    r.value = e->value;
+    r.detail = e->detail;
+    probe_of(ctx).report(r, e->left, e->right);
+}
+
+void report_result(void* ctx, const stereosim_result* r) {
+    probe_of(ctx).report_result(r->pair, output_of(*r));
+}
+
+}  // namespace
+
+dsp::c64x::kernel_profile model_profile(const stereosim_kernel_profile& kernel) {
+    dsp::c64x::kernel_profile k(kernel.name != nullptr ? kernel.name : "");
+    k.calls = kernel.calls;
+    for (uint32_t i = 0; i < kernel.section_count && i < STEREOSIM_PROFILE_MAX_SECTIONS; ++i) {
+        const stereosim_section& in = kernel.sections[i];
+        dsp::c64x::loop_profile s;
+        s.name = in.name != nullptr ? in.name : "";
+        s.ops = {in.ops.l, in.ops.s, in.ops.m, in.ops.d, in.ops.ls, in.ops.lsd};
+        s.iterations = in.iterations;
+        s.entries = in.entries == 0 ? 1 : in.entries;
+        s.chain = in.chain;
+        s.recurrence = in.recurrence;
+        s.is_loop = in.is_loop != 0;
+        k.add(s);
+    }
+    for (uint32_t i = 0; i < kernel.stream_count && i < STEREOSIM_PROFILE_MAX_STREAMS; ++i) {
+        const stereosim_stream& in = kernel.streams[i];
+        dsp::c64x::memory_traffic t;
+        t.bytes_read = in.bytes_read;
+        t.bytes_written = in.bytes_written;
+        t.where = in.where == STEREOSIM_IN_SDRAM ? dsp::c64x::placement::sdram
+                  : in.where == STEREOSIM_IN_L2  ? dsp::c64x::placement::l2
+                                                 : dsp::c64x::placement::l1d;
+        k.add(t);
+    }
+    return k;
+}
+
+firmware_services::firmware_services(probe_hal& probe) : m_probe(probe) {
+    stereosim_services& s = m_table;
+    s.abi_version = STEREOSIM_FIRMWARE_ABI_VERSION;
+    s.ctx = &m_probe;
+    s.charge = charge;
+    s.kernel_cycles = kernel_cycles;
+    s.stage_begin = [](void* ctx, uint32_t st) { probe_of(ctx).stage_begin(stage_of(st)); };
+    s.stage_end = [](void* ctx, uint32_t st) { probe_of(ctx).stage_end(stage_of(st)); };
+    s.read32 = [](void* ctx, uint32_t a) { return probe_of(ctx).read32(a); };
+    s.write32 = [](void* ctx, uint32_t a, uint32_t v) { probe_of(ctx).write32(a, v); };
+    s.memory = [](void* ctx, uint32_t a, uint32_t n) { return probe_of(ctx).memory(a, n); };
+    s.set_interrupt_enable = [](void* ctx, uint32_t ier) {
+        probe_of(ctx).set_interrupt_enable(ier);
+    };
+    s.interrupt_flags = [](void* ctx) { return probe_of(ctx).interrupt_flags(); };
+    s.clear_interrupt_flags = [](void* ctx, uint32_t m) { probe_of(ctx).clear_interrupt_flags(m); };
+    s.wait_for_interrupt = [](void* ctx) -> int32_t { return probe_of(ctx).wait_for_interrupt(); };
+    s.stop_requested = [](void* ctx) -> int32_t { return probe_of(ctx).stop_requested() ? 1 : 0; };
+    s.report = report;
+    s.report_result = report_result;
+}
+
+}  // namespace platform

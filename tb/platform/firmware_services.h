@@ -1,0 +1,29 @@
+// The platform's side of the firmware ABI (docs/firmware-abi.md): the
+// services table a firmware plugin calls, served by the probe HAL over the
+// C6416 model, so that a firmware behind the ABI is observed exactly as the
+// platform observes any firmware (charges, bus accesses, interrupts,
+// reports). Its events and results are all the platform reads of it.
+#pragma once
+
+#include "stereosim/firmware.h"
+#include "tb/platform/probe_hal.h"
+
+namespace platform {
+
+class firmware_services {
+  public:
+    explicit firmware_services(probe_hal& probe);
+    firmware_services(const firmware_services&) = delete;
+    firmware_services& operator=(const firmware_services&) = delete;
+
+    const stereosim_services& table() const { return m_table; }
+
+  private:
+    probe_hal& m_probe;
+    stereosim_services m_table{};
+};
+
+// The firmware's kernel profile in the cost model's form (the cost service).
+dsp::c64x::kernel_profile model_profile(const stereosim_kernel_profile& kernel);
+
+}  // namespace platform

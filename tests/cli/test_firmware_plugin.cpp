@@ -1,0 +1,69 @@
+// `stereosim run --firmware PATH` (docs/firmware-abi.md) as a user runs it:
+// the shipped firmware loaded as a plugin gives the run the built-in firmware
+// gives (report.json but the firmware's identity, frames.csv, the pin and
+// timeline hashes), the report names the plugin and its SHA-256, and a
+// plugin that cannot run is one line and no output.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tests/support/host_figures.h"
+#include "tests/support/shell.h"
+
+namespace {
+
+using nlohmann::json;
+
+std::string stereosim(const std::string& args) {
+    return std::string(STEREOSIM_BINARY) + " " + args;
+}
+
+json report_of(const std::string& dir) {
+    return json::parse(testsupport::read_text(dir + "/report.json"));
+}
+
+TEST(FirmwarePluginRun, TheReferenceAsAPluginRunsAsTheBuiltIn) {
+    const std::string dir = testsupport::temp_dir("fw_plugin");
+    const std::string args = "run --quiet --frames 10 --set firmware.mode=sequential --out ";
+    const auto built_in = testsupport::run_command(stereosim(args + dir + "/built_in"));
+    const auto plugin = testsupport::run_command(
+        stereosim(args + dir + "/plugin --firmware " + std::string(REFERENCE_FIRMWARE)));
+    // Sequential capture is over budget (exit 1, a result): both alike.
+    ASSERT_TRUE(built_in.exit_code == 0 || built_in.exit_code == 1) << built_in.output;
+    ASSERT_EQ(plugin.exit_code, built_in.exit_code) << plugin.output;
+
+    json a = testsupport::without_host_figures(report_of(dir + "/built_in"));
+    json b = testsupport::without_host_figures(report_of(dir + "/plugin"));
+    const json& fw = b["tool"]["firmware"];
+    EXPECT_EQ(fw["name"], "stereosim-reference");
+    EXPECT_EQ(fw["abi_version"], 1);
+    EXPECT_EQ(fw["file"], REFERENCE_FIRMWARE);
+    const auto digest = testsupport::run_command("sha256sum " + std::string(REFERENCE_FIRMWARE));
+    EXPECT_EQ(fw["sha256"], digest.output.substr(0, 64));
+    EXPECT_TRUE(a["tool"]["firmware"]["file"].is_null());
+    EXPECT_EQ(a["tool"]["firmware"]["name"], "stereosim-reference");
+    // Everything else is the same run.
+    EXPECT_EQ(b["config"]["run"]["firmware"], REFERENCE_FIRMWARE);
+    for (json* r : {&a, &b}) {
+        (*r)["tool"].erase("firmware");
+        (*r)["config"]["run"].erase("firmware");
+    }
+    EXPECT_EQ(a["summary"]["hashes"], b["summary"]["hashes"]);
+    EXPECT_EQ(a, b);
+    EXPECT_EQ(testsupport::read_text(dir + "/built_in/frames.csv"),
+              testsupport::read_text(dir + "/plugin/frames.csv"));
+}
+
+TEST(FirmwarePluginRun, APluginThatCannotRunIsOneLineAndNoOutput) {
+    const std::string dir = testsupport::temp_dir("fw_plugin_bad") + "/out";
+    const std::string bad = MINIMAL_FIRMWARE_BAD_ABI;
+    const auto r = testsupport::run_command(
+        stereosim("run --quiet --frames 4 --firmware " + bad + " --out " + dir));
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_EQ(r.output, "stereosim: error: firmware '" + bad +
+                            "': built for ABI version 99, this stereosim speaks 1\n");
+    EXPECT_FALSE(testsupport::file_exists(dir));
+}
+
+}  // namespace
