@@ -67,3 +67,55 @@ TEST(FirmwarePluginRun, APluginThatCannotRunIsOneLineAndNoOutput) {
 }
 
 }  // namespace
+
+namespace {
+
+json campaign_of(const std::string& dir) {
+    return json::parse(testsupport::read_text(dir + "/campaign.json"));
+}
+
+// Two rows of one seed that fork from a snapshot, and the sequential row
+// that runs alone: a campaign of the plugin judges the same runs as the
+// built-in's, and names its firmware; shards of two firmwares do not merge.
+TEST(FirmwarePluginRun, ACampaignOfThePluginJudgesTheSameRuns) {
+    const std::string dir = testsupport::temp_dir("fw_campaign");
+    const std::string match =
+        " --match 'skew:sensor=L,pixels=1@frame=2|drop-frame:sensor=R@frame=4|"
+        "dead:sensor=L@ms=80' --jobs 2 --out ";
+    const std::string plugin = std::string(" --firmware ") + REFERENCE_FIRMWARE;
+    const auto a =
+        testsupport::run_command(stereosim("faults --campaign smoke" + match + dir + "/built_in"));
+    const auto b = testsupport::run_command(
+        stereosim("faults --campaign smoke --keep-runs" + match + dir + "/plugin" + plugin));
+    ASSERT_EQ(a.exit_code, 0) << a.output;
+    ASSERT_EQ(b.exit_code, 0) << b.output;
+    json built_in = testsupport::without_host_figures(campaign_of(dir + "/built_in"));
+    json loaded = testsupport::without_host_figures(campaign_of(dir + "/plugin"));
+    EXPECT_TRUE(built_in["firmware"]["file"].is_null());
+    EXPECT_EQ(loaded["firmware"]["file"], REFERENCE_FIRMWARE);
+    ASSERT_EQ(loaded["rows"].size(), 3u);
+    EXPECT_EQ(built_in["rows"], loaded["rows"]);
+    int forked = 0;
+    for (const json& row : loaded["rows"]) {
+        forked += row["snapshot_ms"].is_number();
+        // Every run, forked or spawned, ran the plugin.
+        const std::string run = dir + "/plugin/runs/" + std::to_string(row["index"].get<int>());
+        EXPECT_EQ(report_of(run + "/out")["tool"]["firmware"]["file"], REFERENCE_FIRMWARE) << run;
+    }
+    EXPECT_EQ(forked, 2);
+
+    // Shard 1 of the built-in firmware, shard 2 of the plugin: refused.
+    const std::string shards =
+        " --match 'skew:sensor=L,pixels=1@frame=2|drop-frame:sensor=R@frame=4'";
+    testsupport::run_command(
+        stereosim("faults --campaign smoke" + shards + " --shard 1/2 --out " + dir + "/s1"));
+    testsupport::run_command(stereosim("faults --campaign smoke" + shards + " --shard 2/2 --out " +
+                                       dir + "/s2" + plugin));
+    const auto merged = testsupport::run_command(
+        stereosim("merge " + dir + "/s1 " + dir + "/s2 --out " + dir + "/m"));
+    EXPECT_EQ(merged.exit_code, 2) << merged.output;
+    EXPECT_NE(merged.output.find("firmware"), std::string::npos) << merged.output;
+    EXPECT_FALSE(testsupport::file_exists(dir + "/m/campaign.json"));
+}
+
+}  // namespace

@@ -1,4 +1,5 @@
 #include "tb/app/cli/run_report.h"
+#include "tb/app/cli/firmware_identity.h"
 
 #include "model/scene/replay.h"
 
@@ -343,13 +344,8 @@ json build_report(const run_setup& setup, const platform::platform_top& top,
     report["schema_version"] = report_schema_version;
     report["tool"] = {{"name", "stereosim"}, {"cost_model", dsp::cost::default_model().id()}};
     // The firmware under test; a plugin's file and digest, null when built in.
-    const stereosim_fw_descriptor& fw = top.firmware_descriptor();
-    const firmware::plugin* plugin = top.firmware_plugin();
-    report["tool"]["firmware"] = {{"name", fw.name},
-                                  {"version", fw.version},
-                                  {"abi_version", fw.abi_version},
-                                  {"file", plugin ? json(plugin->path()) : json(nullptr)},
-                                  {"sha256", plugin ? json(plugin->sha256()) : json(nullptr)}};
+    report["tool"]["firmware"] =
+        firmware_identity(top.firmware_descriptor(), top.firmware_plugin());
     report["config"] = config_json(setup);
     if (!setup.scenario.replay.empty()) add_replay(report, setup, top);
     report["verdict"] = budget.fits ? "within_budget" : "over_budget";

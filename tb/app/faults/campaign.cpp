@@ -19,6 +19,7 @@
 #include <thread>
 
 #include "tb/app/cli/child_run.h"
+#include "tb/app/cli/firmware_identity.h"
 #include "tb/app/cli/interrupt.h"
 #include "tb/app/faults/campaign_files.h"
 #include "tb/app/faults/child_exit.h"
@@ -39,7 +40,8 @@ std::string this_program() {
 
 // One child: `binary run ...`, output to the run's folder.
 // The `stereosim run` options of a campaign run (after "run").
-std::vector<std::string> run_args(const campaign_run& r, const std::string& dir) {
+std::vector<std::string> run_args(const campaign_run& r, const std::string& dir,
+                                  const std::string& firmware) {
     std::vector<std::string> args = {"--quiet",
                                      "--frames",
                                      std::to_string(r.frames),
@@ -57,13 +59,17 @@ std::vector<std::string> run_args(const campaign_run& r, const std::string& dir)
         args.push_back("--set");
         args.push_back(setting);
     }
+    if (!firmware.empty()) {
+        args.push_back("--firmware");
+        args.push_back(firmware);
+    }
     return args;
 }
 
 pid_t spawn_run(const campaign_options& o, const campaign_run& r, const std::string& dir,
                 std::string* error) {
     std::vector<std::string> args = {o.binary, "run"};
-    for (std::string& a : run_args(r, dir)) args.push_back(std::move(a));
+    for (std::string& a : run_args(r, dir, o.firmware)) args.push_back(std::move(a));
     return cli::spawn_logged(args, dir + "/log.txt", error);
 }
 
@@ -244,7 +250,7 @@ pid_t start_group(const campaign_options& o, const std::vector<campaign_run>& pl
     const simtime::ticks period = platform::platform_config{}.period;
     std::vector<snapshot_member> members;
     for (size_t i : u.runs)
-        members.push_back({run_args(plan[i], run_dir(i)), run_dir(i),
+        members.push_back({run_args(plan[i], run_dir(i), o.firmware), run_dir(i),
                            snapshot_trigger_of(specs_of(plan[i]), period)});
     std::fflush(nullptr);
     const pid_t pid = cli::fork_untied();
@@ -435,9 +441,10 @@ bool rows_to_keep(const campaign_options& o, std::map<int, json>* kept, std::str
     const std::string shard = std::to_string(o.shard) + "/" + std::to_string(o.shards);
     if (previous.value("campaign", std::string()) != o.name ||
         previous.value("seeds", -1) != o.seeds || previous.value("shard", std::string()) != shard ||
-        previous.value("match", std::string()) != o.match) {
-        *error = "--resume: " + path + " is not this campaign (campaign, seeds, shard or match " +
-                 "differ)";
+        previous.value("match", std::string()) != o.match ||
+        previous.value("firmware", json()) != cli::firmware_identity_of(o.firmware, error)) {
+        *error = "--resume: " + path + " is not this campaign (campaign, seeds, shard, match " +
+                 "or firmware differ)";
         return false;
     }
     std::map<int, campaign_run> planned;
@@ -488,6 +495,8 @@ std::vector<campaign_row> run_campaign(const campaign_options& given, std::FILE*
     json doc = campaign_document(o.name, std::to_string(o.shard) + "/" + std::to_string(o.shards),
                                  o.seeds, o.jobs, o.snapshots, wall, std::move(all));
     doc["match"] = o.match;
+    std::string unloadable;  // the command checked the plugin before the runs
+    doc["firmware"] = cli::firmware_identity_of(o.firmware, &unloadable);
     const int signo = interrupt.caught();
     doc["complete"] = signo == 0;
     if (signo != 0) doc["interrupted_by"] = cli::signal_name(signo);

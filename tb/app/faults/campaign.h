@@ -46,6 +46,7 @@ struct campaign_options {
     int shard = 1, shards = 1;
     std::string out_dir;     // default: campaign-<name>
     std::string binary;      // the stereosim to spawn (default: this program)
+    std::string firmware;    // every run's --firmware (absolute path); empty: the built-in one
     bool keep_runs = false;  // keep each run's folder (report.json, frames.csv)
     std::string match;       // only runs whose spec contains this ("clean": clean runs)
     // Runs of one seed, length and card setting whose faults all start later

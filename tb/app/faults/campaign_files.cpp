@@ -230,10 +230,11 @@ bool merge_campaign_shards(const std::vector<json>& shards, json* merged, std::s
         int k = 0, m = 0;
         if (std::sscanf(s.at("shard").get<std::string>().c_str(), "%d/%d", &k, &m) != 2 ||
             s.at("campaign") != first.at("campaign") || s.at("seeds") != first.at("seeds") ||
+            s.value("firmware", json()) != first.value("firmware", json()) ||
             (count && m != count)) {
             *error =
-                "merge: the folders are not shards of one campaign (campaign, seeds, shard "
-                "count differ)";
+                "merge: the folders are not shards of one campaign (campaign, seeds, firmware, "
+                "shard count differ)";
             return false;
         }
         count = m;
@@ -258,6 +259,7 @@ bool merge_campaign_shards(const std::vector<json>& shards, json* merged, std::s
     bool complete = true;
     for (const json& s : shards) complete = complete && s.value("complete", true);
     (*merged)["match"] = first.value("match", std::string());
+    (*merged)["firmware"] = first.value("firmware", json());
     (*merged)["complete"] = complete;
     return true;
 }

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "tb/app/cli/firmware_identity.h"
 #include "tb/app/cli/interrupt.h"
 #include "tb/app/faults/campaign.h"
 #include "tb/app/faults/campaign_files.h"
@@ -34,6 +35,10 @@ faults_command::faults_command(CLI::App& app, extensions_factory make_extensions
                       "(the same --campaign, --seeds, --shard and --match)");
     m_app->add_flag("--keep-runs", m_keep_runs, "keep each run's report.json under OUT/runs");
     m_app->add_option("--binary", m_binary, "the stereosim to run (default: this program)");
+    m_app
+        ->add_option("--firmware", m_firmware,
+                     "the firmware under test in every run, a plugin .so (docs/firmware-abi.md)")
+        ->type_name("PATH");
     m_app->add_flag("--no-snapshots", m_no_snapshots,
                     "run every run from the start (default: runs whose faults start later "
                     "share their fault-free prefix, forked at a snapshot)");
@@ -55,6 +60,7 @@ int faults_command::emit_slurm(const campaign_options& o) {
     if (o.seeds) command.insert(command.end(), {"--seeds", std::to_string(o.seeds)});
     if (!o.binary.empty())
         command.insert(command.end(), {"--binary", cli::absolute_path(o.binary)});
+    if (!o.firmware.empty()) command.insert(command.end(), {"--firmware", o.firmware});
     if (!o.match.empty()) command.insert(command.end(), {"--match", o.match});
     if (o.keep_runs) command.push_back("--keep-runs");
     if (!o.snapshots) command.push_back("--no-snapshots");
@@ -98,6 +104,11 @@ int faults_command::execute() {
     o.keep_runs = m_keep_runs;
     o.binary = m_binary;
     o.match = m_match;
+    if (!m_firmware.empty()) {
+        std::string why;
+        if (cli::firmware_identity_of(m_firmware, &why).is_null()) return bad_input(why);
+        o.firmware = cli::absolute_path(m_firmware);
+    }
     o.snapshots = !m_no_snapshots;
     if (m_make_extensions) {
         o.run_group = [this](const std::vector<snapshot_member>& members, const std::string& binary,

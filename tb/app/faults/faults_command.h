@@ -40,6 +40,7 @@ class faults_command {
     std::string m_out;
     std::string m_resume;  // --resume DIR
     std::string m_binary;
+    std::string m_firmware;
     std::string m_match;
     cli::slurm_options m_slurm;
 

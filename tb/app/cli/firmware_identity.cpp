@@ -1,0 +1,23 @@
+#include "tb/app/cli/firmware_identity.h"
+
+#include "dsp/plugin/reference_firmware.h"
+
+namespace cli {
+
+using nlohmann::json;
+
+json firmware_identity(const stereosim_fw_descriptor& d, const firmware::plugin* plugin) {
+    return {{"name", d.name},
+            {"version", d.version},
+            {"abi_version", d.abi_version},
+            {"file", plugin ? json(plugin->path()) : json(nullptr)},
+            {"sha256", plugin ? json(plugin->sha256()) : json(nullptr)}};
+}
+
+json firmware_identity_of(const std::string& path, std::string* error) {
+    if (path.empty()) return firmware_identity(dsp::plugin::reference_firmware(), nullptr);
+    const std::unique_ptr<firmware::plugin> p = firmware::plugin::load(path, error);
+    return p ? firmware_identity(p->descriptor(), p.get()) : json(nullptr);
+}
+
+}  // namespace cli
