@@ -116,6 +116,14 @@ TEST(FirmwarePluginRun, ACampaignOfThePluginJudgesTheSameRuns) {
     EXPECT_EQ(merged.exit_code, 2) << merged.output;
     EXPECT_NE(merged.output.find("firmware"), std::string::npos) << merged.output;
     EXPECT_FALSE(testsupport::file_exists(dir + "/m/campaign.json"));
+
+    // The Slurm job array's command runs it too.
+    const auto emitted = testsupport::run_command(
+        stereosim("faults --campaign smoke --emit-slurm --out " + dir + "/slurm" + plugin));
+    ASSERT_EQ(emitted.exit_code, 0) << emitted.output;
+    EXPECT_NE(testsupport::read_text(dir + "/slurm/job.sbatch")
+                  .find("'--firmware' '" + std::string(REFERENCE_FIRMWARE) + "'"),
+              std::string::npos);
 }
 
 }  // namespace
