@@ -5,6 +5,7 @@
 //   stereosim faults ...          fault kinds and the fault campaign
 //   stereosim sweep ...           a grid of config keys, every point co-simulated
 //   stereosim merge DIR...        the shards of a sweep or campaign as one
+//   stereosim firmware info PATH  what a firmware plugin declares
 // Exit codes: 0 within budget, 1 over budget, 2 bad input, 3 the run failed.
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -12,6 +13,7 @@
 #include <systemc>
 
 #include "tb/app/cli/config_keys.h"
+#include "tb/app/cli/firmware_command.h"
 #include "tb/app/cli/replay_init.h"
 #include "tb/app/cli/run_command.h"
 #include "tb/app/cli/scenarios.h"
@@ -76,6 +78,7 @@ int sc_main(int argc, char* argv[]) {
     sweep::sweep_command sweep(app);
     sweep::merge_command merge(app);
     cli::replay_command replay(app);
+    cli::firmware_command firmware(app);
 
     try {
         app.parse(argc, argv);
@@ -98,6 +101,7 @@ int sc_main(int argc, char* argv[]) {
     if (*sweep.subcommand()) return sweep.execute();
     if (*merge.subcommand()) return merge.execute();
     if (*replay.subcommand()) return replay.execute();
+    if (*firmware.subcommand()) return firmware.execute();
     if (*config) {
         print_config_keys(markdown);
         return 0;

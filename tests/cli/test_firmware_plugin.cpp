@@ -127,3 +127,41 @@ TEST(FirmwarePluginRun, ACampaignOfThePluginJudgesTheSameRuns) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(FirmwareInfo, PrintsWhatAPluginDeclares) {
+    const auto r =
+        testsupport::run_command(stereosim(std::string("firmware info ") + MINIMAL_FIRMWARE));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const std::string file = MINIMAL_FIRMWARE;
+    const auto digest = testsupport::run_command("sha256sum " + file);
+    EXPECT_EQ(r.output.substr(0, r.output.find("  firmware.")),
+              "firmware  minimal 0.1 (ABI version 1)\n"
+              "file      " +
+                  file +
+                  "\n"
+                  "sha256    " +
+                  digest.output.substr(0, 64) +
+                  "\n"
+                  "stages    capture think\n"
+                  "states    idle busy\n"
+                  "keys      2\n");
+    EXPECT_NE(r.output.find("firmware.cycles_per_wait"), std::string::npos);
+    EXPECT_NE(r.output.find("0..1000000"), std::string::npos);
+    EXPECT_NE(r.output.find("quiet|chatty"), std::string::npos);
+    // Without a path: the built-in firmware.
+    const auto built_in = testsupport::run_command(stereosim("firmware info"));
+    EXPECT_EQ(built_in.output.rfind("firmware  stereosim-reference 1.0 (ABI version 1)\n"
+                                    "file      built in\n",
+                                    0),
+              0u)
+        << built_in.output;
+    const auto bad = testsupport::run_command(
+        stereosim("firmware info " + std::string(MINIMAL_FIRMWARE_BAD_ABI)));
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_EQ(bad.output, "stereosim: error: firmware '" + std::string(MINIMAL_FIRMWARE_BAD_ABI) +
+                              "': built for ABI version 99, this stereosim speaks 1\n");
+}
+
+}  // namespace
