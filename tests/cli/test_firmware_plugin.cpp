@@ -165,3 +165,35 @@ TEST(FirmwareInfo, PrintsWhatAPluginDeclares) {
 }
 
 }  // namespace
+
+namespace {
+
+// The C test firmware does none of the sync protocol: every run breaks the
+// contract. With --stop-on-violation the campaign ends at the first.
+TEST(FirmwarePluginRun, AStopOnViolationCampaignEndsAtTheFirstBrokenRun) {
+    const std::string dir = testsupport::temp_dir("fw_stop");
+    // One run at a time, each from the start: the stop comes after one run.
+    const std::string args =
+        "faults --campaign smoke --match 'skew:sensor=L,pixels=1@frame=2|"
+        "drop-frame:sensor=R@frame=4|dead:sensor=L@ms=80' --jobs 1 --no-snapshots --firmware " +
+        std::string(MINIMAL_FIRMWARE) + " --out ";
+    const auto all = testsupport::run_command(stereosim(args + dir + "/all"));
+    EXPECT_EQ(all.exit_code, 1) << all.output;
+    const json whole = campaign_of(dir + "/all");
+    EXPECT_EQ(whole["complete"], true);
+    EXPECT_EQ(whole["rows"].size(), 3u);
+    for (const json& row : whole["rows"]) EXPECT_FALSE(row["contract_ok"].get<bool>());
+
+    const auto stopped =
+        testsupport::run_command(stereosim(args + dir + "/stopped --stop-on-violation"));
+    EXPECT_EQ(stopped.exit_code, 1) << stopped.output;
+    const json first = campaign_of(dir + "/stopped");
+    EXPECT_EQ(first["complete"], false);
+    ASSERT_TRUE(first.contains("stopped_at"));
+    EXPECT_EQ(first["rows"].size(), 1u);
+    EXPECT_EQ(first["rows"][0]["index"], first["stopped_at"]);
+    EXPECT_NE(stopped.output.find("stopped at the first broken contract"), std::string::npos)
+        << stopped.output;
+}
+
+}  // namespace

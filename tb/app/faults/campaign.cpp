@@ -297,11 +297,11 @@ class plan_runner {
             }
             return;
         }
-        while (m_done < m_plan.size() && !interrupt.caught()) {
+        while (m_done < m_plan.size() && !interrupt.caught() && m_broken < 0) {
             start_units();
             if (!m_running.empty() && !reap_one()) break;
         }
-        if (interrupt.caught()) stop();
+        if (interrupt.caught() || m_broken >= 0) stop();
         m_tokens.close_fds();
     }
 
@@ -319,8 +319,14 @@ class plan_runner {
         if (!m_o.keep_runs && row.ran) fs::remove_all(run_dir(i), ec);
         ++m_done;
         if (m_log) log_row(m_log, m_done, m_plan.size(), row);
+        if (m_o.stop_on_violation && !row.ok() && m_broken < 0) m_broken = row.run.index;
     }
 
+  public:
+    // The plan index of the run that stopped the campaign, -1 if none did.
+    int broken() const { return m_broken; }
+
+  private:
     // A group's runs as their leader's child statuses say.
     void finish_group(const unit& u, int leader_status) {
         for (size_t i : u.runs) {
@@ -418,6 +424,7 @@ class plan_runner {
     std::map<pid_t, size_t> m_running;  // pid -> unit
     std::vector<std::chrono::steady_clock::time_point> m_started;
     size_t m_next = 0, m_done = 0;
+    int m_broken = -1;
 };
 
 }  // namespace
@@ -485,7 +492,8 @@ std::vector<campaign_row> run_campaign(const campaign_options& given, std::FILE*
     }
     const cli::interrupt_catcher interrupt;
     const auto t0 = std::chrono::steady_clock::now();
-    plan_runner(o, plan, rows, log).run(interrupt);
+    plan_runner runner(o, plan, rows, log);
+    runner.run(interrupt);
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     for (const campaign_row& r : rows)
@@ -498,7 +506,8 @@ std::vector<campaign_row> run_campaign(const campaign_options& given, std::FILE*
     std::string unloadable;  // the command checked the plugin before the runs
     doc["firmware"] = cli::firmware_identity_of(o.firmware, &unloadable);
     const int signo = interrupt.caught();
-    doc["complete"] = signo == 0;
+    doc["complete"] = signo == 0 && runner.broken() < 0;
+    if (runner.broken() >= 0) doc["stopped_at"] = runner.broken();
     if (signo != 0) doc["interrupted_by"] = cli::signal_name(signo);
     if (!write_campaign_files(o.out_dir, doc, error)) return {};
     if (document) *document = std::move(doc);

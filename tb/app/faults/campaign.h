@@ -58,6 +58,11 @@ struct campaign_options {
     // Keep the rows that ran in out_dir's campaign.json (an interrupted
     // campaign's) and run only the others.
     bool resume = false;
+    // End the campaign at the first run that breaks the contract (or did not
+    // run): the runs under way are stopped, the document marked incomplete
+    // and `stopped_at` names that run. For qualification by mutants, where
+    // one broken run is the verdict.
+    bool stop_on_violation = false;
     std::function<int(const std::vector<snapshot_member>& members, const std::string& binary,
                       const std::string& leader_log, const job_tokens& tokens)>
         run_group;

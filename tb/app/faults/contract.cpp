@@ -83,6 +83,13 @@ contract_params params_for(const platform::platform_config& config) {
     return p;
 }
 
+contract_params params_for(const platform::platform_config& config,
+                           const stereosim_fw_policy& policy) {
+    contract_params p = params_for(config);
+    p.hard_error_rearms = policy.hard_error_rearms;
+    return p;
+}
+
 int hard_error_bound_periods(const contract_params& p) {
     return static_cast<int>((p.hard_error_rearms + 1) * (p.retry_limit + 1) + 2);
 }

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "stereosim/firmware.h"
 #include "tb/app/faults/fault_spec.h"
 #include "tb/app/faults/observation.h"
 
@@ -74,6 +75,10 @@ struct contract_params {
     double period_ms = 24.5;
 };
 contract_params params_for(const platform::platform_config& config);
+// The same, with the recovery policy the firmware under test declared (its
+// re-arms after a hard error) in place of the run's setting.
+contract_params params_for(const platform::platform_config& config,
+                           const stereosim_fw_policy& policy);
 
 // The contract's row for one fault, given the run's settings and what the
 // run shows about preconditions (an OE restart after a dead / oe-stuck onset).

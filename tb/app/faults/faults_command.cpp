@@ -39,6 +39,8 @@ faults_command::faults_command(CLI::App& app, extensions_factory make_extensions
         ->add_option("--firmware", m_firmware,
                      "the firmware under test in every run, a plugin .so (docs/firmware-abi.md)")
         ->type_name("PATH");
+    m_app->add_flag("--stop-on-violation", m_stop_on_violation,
+                    "end the campaign at the first run that breaks the contract");
     m_app->add_flag("--no-snapshots", m_no_snapshots,
                     "run every run from the start (default: runs whose faults start later "
                     "share their fault-free prefix, forked at a snapshot)");
@@ -64,6 +66,7 @@ int faults_command::emit_slurm(const campaign_options& o) {
     if (!o.match.empty()) command.insert(command.end(), {"--match", o.match});
     if (o.keep_runs) command.push_back("--keep-runs");
     if (!o.snapshots) command.push_back("--no-snapshots");
+    if (o.stop_on_violation) command.push_back("--stop-on-violation");
     const std::string sbatch =
         cli::write_slurm_array(m_slurm, "stereosim-faults", command, o.out_dir, &error);
     if (sbatch.empty()) return bad_input(error);
@@ -110,6 +113,7 @@ int faults_command::execute() {
         o.firmware = cli::absolute_path(m_firmware);
     }
     o.snapshots = !m_no_snapshots;
+    o.stop_on_violation = m_stop_on_violation;
     if (m_make_extensions) {
         o.run_group = [this](const std::vector<snapshot_member>& members, const std::string& binary,
                              const std::string& leader_log, const job_tokens& tokens) {
@@ -135,6 +139,12 @@ int faults_command::execute() {
                      o.out_dir.c_str(), o.out_dir.c_str());
         cli::die_of(interrupted);
     }
+    if (document.contains("stopped_at"))
+        std::fprintf(stderr,
+                     "stereosim: faults: stopped at the first broken contract (run %d); "
+                     "%zu runs finished, written to %s/campaign.json (incomplete)\n",
+                     document.at("stopped_at").get<int>(), document.at("rows").size(),
+                     o.out_dir.c_str());
     for (const nlohmann::json& r : document.at("rows"))
         if (!r.value("contract_ok", false)) return 1;
     return 0;

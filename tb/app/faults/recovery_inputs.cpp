@@ -42,16 +42,16 @@ recovery_inputs gather_recovery_inputs(const platform::platform_top& top,
         if (specs[i].type == fault_type::emif_wait) in.bus_fault_onsets.push_back(onsets[i]);
         if (specs[i].type == fault_type::cpu_slow) slow = std::max(slow, specs[i].factor);
     }
-    const dsp::control_program_config program = platform::program_config(config);
+    // The recovery policy the firmware under test declared for this run.
+    const stereosim_fw_policy& policy = top.firmware_policy();
     in.retry_limit = config.card_retry_limit;
     const simtime::rational_ticks pclk = config.profile.mclk_period;
     in.card_frame = static_cast<simtime::ticks>(config.profile.line_pclks) *
                     config.profile.frame_lines * pclk.num / pclk.den;
-    in.watchdog =
-        static_cast<simtime::ticks>(program.watchdog_ms) * 1000000 * simtime::ticks_per_ns;
+    in.watchdog = static_cast<simtime::ticks>(policy.watchdog_ms) * 1000000 * simtime::ticks_per_ns;
     in.service = static_cast<simtime::ticks>((1.0 + slow) * static_cast<double>(config.period));
-    in.rearm_on_overflow = program.rearm_on_overflow;
-    in.rearm_on_every_sync_error = program.rearm_on_every_sync_error;
+    in.rearm_on_overflow = policy.rearm_on_overflow != 0;
+    in.rearm_on_every_sync_error = policy.rearm_on_every_sync_error != 0;
     in.end = top.end_tick();
     return in;
 }
