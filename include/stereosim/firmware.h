@@ -299,8 +299,14 @@ typedef struct stereosim_fw_descriptor {
 
 typedef const stereosim_fw_descriptor* (*stereosim_firmware_entry)(void);
 
-/* The entry a plugin defines and exports (default visibility). */
-const stereosim_fw_descriptor* stereosim_firmware(void);
+/* The entry a plugin defines; exported even when the plugin is built with
+ * hidden visibility (stereosim_add_firmware does). */
+#if defined(__GNUC__)
+#define STEREOSIM_FIRMWARE_EXPORT __attribute__((visibility("default")))
+#else
+#define STEREOSIM_FIRMWARE_EXPORT
+#endif
+STEREOSIM_FIRMWARE_EXPORT const stereosim_fw_descriptor* stereosim_firmware(void);
 
 #ifdef __cplusplus
 }

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# The SDK as an outside firmware project uses it (docs/firmware-abi.md):
+# cmake --install into a fresh prefix, a C-only project elsewhere that does
+# find_package(stereosim) and stereosim_add_firmware(), built there, then run
+# by the installed stereosim. Usage: test_sdk_install.sh BUILD_DIR SOURCE_DIR
+set -euo pipefail
+build=$1
+source=$2
+work=$(mktemp -d /tmp/stereosim-sdk-XXXXXX)
+trap 'rm -rf "$work"' EXIT
+
+cmake --install "$build" --prefix "$work/prefix" > "$work/install.log"
+for f in include/stereosim/firmware.h lib/cmake/stereosim/stereosimConfig.cmake \
+         bin/stereosim lib/stereosim/libstereosim_fw_reference.so; do
+  [ -e "$work/prefix/$f" ] || { echo "not installed: $f"; exit 1; }
+done
+
+mkdir -p "$work/myfw"
+cp "$source/tests/firmware/plugins/minimal_firmware.c" "$work/myfw/myfw.c"
+cat > "$work/myfw/CMakeLists.txt" <<'CMAKE'
+cmake_minimum_required(VERSION 3.16)
+project(myfw C)
+find_package(stereosim 1.0 REQUIRED)
+stereosim_add_firmware(myfw SOURCES myfw.c)
+target_compile_options(myfw PRIVATE -std=c11 -Wall -Wextra -pedantic -Werror)
+CMAKE
+cmake -S "$work/myfw" -B "$work/myfw/build" -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log"
+cmake --build "$work/myfw/build" > "$work/build.log"
+plugin="$work/myfw/build/libmyfw.so"
+[ -f "$plugin" ] || { echo "no $plugin"; cat "$work/build.log"; exit 1; }
+
+# Only the entry is exported.
+exported=$(nm -D --defined-only "$plugin" | awk '$2 == "T" { print $3 }')
+[ "$exported" = "stereosim_firmware" ] || { echo "exported: $exported"; exit 1; }
+
+info=$("$work/prefix/bin/stereosim" firmware info "$plugin")
+echo "$info" | head -1 | grep -qx "firmware  minimal 0.1 (ABI version 1)" ||
+  { echo "firmware info said: $info"; exit 1; }
+ref=$("$work/prefix/bin/stereosim" firmware info "$work/prefix/lib/stereosim/libstereosim_fw_reference.so")
+echo "$ref" | head -1 | grep -qx "firmware  stereosim-reference 1.0 (ABI version 1)" ||
+  { echo "firmware info said: $ref"; exit 1; }
+echo "sdk: installed, an outside C firmware built against it and loaded by the installed stereosim"
