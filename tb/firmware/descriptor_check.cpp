@@ -1,6 +1,7 @@
 #include "tb/firmware/descriptor_check.h"
 
 #include <cmath>
+#include <cstring>
 #include <set>
 
 namespace firmware {
@@ -16,6 +17,10 @@ bool is_plain_name(const char* name, bool upper) {
 }
 
 namespace {
+
+// Keys under firmware. that the platform itself owns (the cost model and the
+// bus replay of the firmware's SDRAM traffic, docs/config.md).
+const char* const platform_firmware_keys[] = {"compiled_c_factor", "sdram_traffic_on_bus"};
 
 std::string names_problem(const char* what, uint32_t count, uint32_t max, const char* const* names,
                           bool upper) {
@@ -88,6 +93,10 @@ std::string descriptor_problem(const stereosim_fw_descriptor& d) {
             return "config key " + std::to_string(i) + " has no plain name ([a-z0-9_]+)";
         if (!keys.insert(d.keys[i].name).second)
             return std::string("config key '") + d.keys[i].name + "' appears twice";
+        for (const char* platform_key : platform_firmware_keys)
+            if (std::strcmp(d.keys[i].name, platform_key) == 0)
+                return std::string("config key '") + d.keys[i].name +
+                       "' clashes with the platform's firmware." + platform_key;
         problem = key_problem(d.keys[i]);
         if (!problem.empty()) return problem;
     }

@@ -191,6 +191,10 @@ TEST(FirmwareDescriptor, EachRuleRefusesItsDefect) {
     t.keys[1].default_value = 1;
     t.keys[1].name = "gain";
     EXPECT_EQ(t.problem(), "config key 'gain' appears twice");
+    t.keys[1].name = "compiled_c_factor";
+    EXPECT_EQ(t.problem(),
+              "config key 'compiled_c_factor' clashes with the platform's "
+              "firmware.compiled_c_factor");
     t.keys[1].name = "pick";
     t.keys[1].doc = "";
     EXPECT_EQ(t.problem(), "key 'pick' has no doc line");
