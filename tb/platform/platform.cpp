@@ -11,6 +11,7 @@
 #include "tb/platform/arrangements/fast/fast_island.h"
 #include "tb/platform/arrangements/pins/pins_island.h"
 #include "tb/platform/firmware_board.h"
+#include "tb/platform/firmware_crash.h"
 
 namespace platform {
 
@@ -119,15 +120,21 @@ void platform_top::firmware(dsp::hal& hal) {
     const stereosim_board board = board_of(m_config);
     const std::vector<double> values = plugin_values(*m_firmware, m_config);
     char error[256] = "";
+    m_probe->set_stage_names(m_firmware->stage_names, static_cast<int>(m_firmware->stage_count));
+    firmware_entered(0, -1, m_firmware->stage_names, static_cast<int>(m_firmware->stage_count));
     void* instance =
         m_firmware->create(&m_services->table(), &board, values.data(), error, sizeof error);
+    firmware_left();
     if (instance == nullptr) {
         m_init_failed = true;
         m_init_error = error;
         return;
     }
     m_firmware->policy(instance, &m_policy);
+    // The CPU thread starts the firmware at time 0.
+    firmware_entered(0, -1, m_firmware->stage_names, static_cast<int>(m_firmware->stage_count));
     m_firmware->run(instance);
+    firmware_left();
     m_firmware->destroy(instance);
 }
 

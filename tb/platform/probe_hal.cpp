@@ -6,6 +6,7 @@
 
 #include "model/c6416/c6416_sc.h"
 #include "model/time/sc_ticks.h"
+#include "tb/platform/firmware_crash.h"
 
 namespace platform {
 
@@ -19,12 +20,14 @@ void probe_hal::start() {
 }
 
 void probe_hal::enter() {
+    firmware_left();
     if (!m_started) return;
     m_firmware_wall_s +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - m_left).count();
 }
 
 void probe_hal::leave() {
+    firmware_entered(now(), m_open_stage, m_stage_names, m_stage_count);
     if (m_started) m_left = std::chrono::steady_clock::now();
 }
 

@@ -64,6 +64,11 @@ class probe_hal final : public dsp::hal {
     // Called by report() before the event is recorded (scoreboard checks).
     void set_event_hook(event_hook hook) { m_hook = std::move(hook); }
     void set_memory_hook(memory_hook hook) { m_memory_hook = std::move(hook); }
+    // The firmware's stage names, for a crash report (firmware_crash.h).
+    void set_stage_names(const char* const* names, int count) {
+        m_stage_names = names;
+        m_stage_count = count;
+    }
 
     void charge_cycles(dsp::stage s, uint64_t cycles) override;
     void charge_with_traffic(dsp::stage s, uint64_t cycles,
@@ -113,6 +118,8 @@ class probe_hal final : public dsp::hal {
 
     dsp::hal& m_inner;
     timeline& m_events;
+    const char* const* m_stage_names = nullptr;
+    int m_stage_count = 0;
     dsp::c64x::cost_model m_model;
     event_hook m_hook;
     memory_hook m_memory_hook;

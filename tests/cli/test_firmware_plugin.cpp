@@ -5,6 +5,7 @@
 // plugin that cannot run is one line and no output.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -194,6 +195,24 @@ TEST(FirmwarePluginRun, AStopOnViolationCampaignEndsAtTheFirstBrokenRun) {
     EXPECT_EQ(first["rows"][0]["index"], first["stopped_at"]);
     EXPECT_NE(stopped.output.find("stopped at the first broken contract"), std::string::npos)
         << stopped.output;
+}
+
+}  // namespace
+
+namespace {
+
+// A firmware with a null-pointer bug in its stage think: one line naming the
+// signal, the simulated time and the stage; exit 3; no report.
+TEST(FirmwarePluginRun, ACrashingFirmwareIsOneLineWithItsTimeAndStage) {
+    const std::string dir = testsupport::temp_dir("fw_crash") + "/out";
+    const auto r = testsupport::run_command(stereosim("run --quiet --frames 8 --firmware " +
+                                                      std::string(MINIMAL_FIRMWARE_CRASH_IN_RUN) +
+                                                      " --out " + dir));
+    EXPECT_EQ(r.exit_code, 3) << r.output;
+    const std::string said = r.output;
+    // 6,000,000 cycles at 600 MHz: 10 ms into the run.
+    EXPECT_EQ(said, "stereosim: error: firmware crashed (signal 11) at 10.000 ms in stage think\n");
+    EXPECT_FALSE(testsupport::file_exists(dir + "/report.json"));
 }
 
 }  // namespace

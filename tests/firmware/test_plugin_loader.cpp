@@ -35,6 +35,8 @@ stereosim_services services_of(test_platform* p) {
         of(ctx).cycles[stage] += cycles;
     };
     s.set_interrupt_enable = [](void* ctx, uint32_t ier) { of(ctx).ier = ier; };
+    s.stage_begin = [](void*, uint32_t) {};
+    s.stage_end = [](void*, uint32_t) {};
     s.wait_for_interrupt = [](void* ctx) -> int32_t {
         return of(ctx).interrupts_left-- > 0 ? 4 : STEREOSIM_FW_NO_INTERRUPT;
     };

@@ -1,4 +1,5 @@
 #include "tb/app/cli/run_command.h"
+#include "tb/platform/firmware_crash.h"
 
 #include <unistd.h>
 
@@ -178,6 +179,7 @@ int run_command::run_and_report(platform::platform_top& top, const run_setup& se
     progress_line line(stderr, config.frames,
                        static_cast<double>(config.period) / (simtime::ticks_per_ns * 1e6));
     if (progress) top.set_progress([&line](int done) { line.update(done); });
+    platform::install_firmware_crash_report();
     top.run();
     if (progress) line.finish();
     if (top.firmware_init_failed()) {

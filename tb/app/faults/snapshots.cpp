@@ -1,4 +1,5 @@
 #include "tb/app/faults/snapshots.h"
+#include "tb/platform/firmware_crash.h"
 
 #include <fcntl.h>
 #include <sys/wait.h>
@@ -234,6 +235,7 @@ int run_snapshot_group(const std::vector<snapshot_member>& members, const std::s
                        const extensions_factory& make_extensions, const std::string& leader_log,
                        const job_tokens& tokens) {
     redirect_output(leader_log);
+    platform::install_firmware_crash_report();  // the forked members keep it
     member_children children(tokens);
     const int rc = fork_at_snapshots(members, binary, make_extensions, children);
     tokens.put();  // the leader's own token: it stops computing

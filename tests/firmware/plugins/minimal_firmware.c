@@ -2,7 +2,8 @@
  * charges its one stage, waits for interrupts until the platform asks it to
  * stop, and reports each step. Built several times with one defect each
  * (BAD_ABI, NO_ENTRY, TOO_MANY_STAGES, BAD_KEY_DEFAULT, NO_DESCRIPTOR) to
- * show the loader refusing it. */
+ * show the loader refusing it, or with a bug (CRASH_IN_RUN: a null pointer
+ * written 10 ms into stage think) to show the platform reporting its crash. */
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -59,12 +60,24 @@ static void run(void* instance) {
     minimal* m = (minimal*)instance;
     uint32_t interrupts = 0;
     report(m, STEREOSIM_EV_BOOT, 1);
+#ifdef CRASH_IN_RUN
+    {
+        /* The bug: 10 ms of work in stage think (6,000,000 cycles at the
+         * DSK v1's 600 MHz), then a null pointer written. */
+        volatile int* nowhere = NULL;
+        m->hw->stage_begin(m->hw->ctx, 1);
+        m->hw->charge(m->hw->ctx, 1, 6000000u, NULL);
+        *nowhere = 1;
+    }
+#endif
     m->hw->set_interrupt_enable(m->hw->ctx, 1u << 4);
     for (;;) {
         int32_t n = m->hw->wait_for_interrupt(m->hw->ctx);
         if (n == STEREOSIM_FW_NO_INTERRUPT || m->hw->stop_requested(m->hw->ctx)) break;
         ++interrupts;
+        m->hw->stage_begin(m->hw->ctx, 1);
         m->hw->charge(m->hw->ctx, 1, m->cycles_per_wait, NULL);
+        m->hw->stage_end(m->hw->ctx, 1);
         if (m->mode == 1) report(m, STEREOSIM_EV_WATCHDOG, (uint32_t)n);
     }
     report(m, STEREOSIM_EV_STOPPED, interrupts);
