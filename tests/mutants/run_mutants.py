@@ -344,8 +344,9 @@ def label_targets(src_dir, label):
     return sorted(f"{label}_{p.stem}" for p in (src_dir / "tests" / label).glob("test_*.cpp"))
 
 
-def build_tree(tree_dir, labels, jobs, log_path):
-    """Configures (once) and builds stereosim + the labels' tests. Returns (ok, seconds)."""
+def build_tree(tree_dir, labels, jobs, log_path, with_stereosim=True):
+    """Configures (once) and builds the labels' tests, and stereosim unless
+    with_stereosim is false. Returns (ok, seconds)."""
     src, build = tree_dir / "src", tree_build_dir(tree_dir)
     env = build_env(tree_dir)
     seconds = 0.0
@@ -360,7 +361,8 @@ def build_tree(tree_dir, labels, jobs, log_path):
         if code != 0:
             shutil.copyfile(configure_log, log_path)
             return False, seconds
-    targets = ["stereosim"] + [t for label in labels for t in label_targets(src, label)]
+    targets = (["stereosim"] if with_stereosim else []) + \
+        [t for label in labels for t in label_targets(src, label)]
     command = ["cmake", "--build", build, "-j", str(jobs), "--target", *targets]
     code, build_s = run_step(command, tree_dir, log_path, BUILD_TIMEOUT_S, env)
     if code != 0 and build_interrupted(code, log_path):
@@ -392,6 +394,14 @@ def failure_in_mutated_file(log_text, mutated_files):
         if any(f"/{stem}." in line or line.startswith(f"{stem}.") for stem in stems):
             return True
     return False
+
+
+def first_error_line(log_text):
+    """The first compiler error of a build log, trimmed, or ''."""
+    for line in log_text.splitlines():
+        if ": error:" in line:
+            return line.strip()[:200]
+    return ""
 
 
 def campaign_rows_broken(campaign_json):
@@ -597,8 +607,11 @@ def judge_mutant(mutant, result, tree, out_dir, settings, baseline):
     (tree / "src").mkdir(parents=True, exist_ok=True)
     sync_tree(tree / "src", settings.snapshot, mutated_contents(mutant, settings.snapshot))
     label = label_of(mutant.kind)
+    # An RTL mutant's tests come first: they need no stereosim, whose fast
+    # card evaluation may not fit a mutated netlist (below).
     built, result.build_s = build_tree(tree, [label], settings.build_jobs,
-                                       out_dir / "build.log")
+                                       out_dir / "build.log",
+                                       with_stereosim=mutant.kind == "firmware")
     if not built:
         log_text = (out_dir / "build.log").read_text(errors="replace")
         if not failure_in_mutated_file(log_text, mutant.file):
@@ -618,12 +631,36 @@ def judge_mutant(mutant, result, tree, out_dir, settings, baseline):
     else:
         log(f"[{mutant.id}] ctest -L rtl")
         killed = check_ctest(result, build, out_dir, "rtl", jobs, baseline)
+        if not killed and not build_stereosim(mutant, result, tree, out_dir, settings,
+                                              baseline):
+            return
         if not killed:
             log(f"[{mutant.id}] smoke campaign")
             result.campaign_kills = check_campaign(result, build, out_dir,
                                                    settings.campaign_jobs, baseline)
             killed = result.campaign_kills
     result.status = "killed" if killed else "survived"
+
+
+def build_stereosim(mutant, result, tree, out_dir, settings, baseline):
+    """Builds stereosim for an RTL mutant the tests left alive. A build that
+    fails where the baseline built is the mutation's doing (e.g. a netlist
+    whose evaluation no longer has the shape the fast arrangement's
+    card_eval.h requires): `stillborn`, with the first error as its note.
+    False when there is no stereosim to run the campaign with."""
+    log_path = out_dir / "build-stereosim.log"
+    built, seconds = build_tree(tree, ["rtl"], settings.build_jobs, log_path)
+    result.build_s += seconds
+    if built:
+        return True
+    text = log_path.read_text(errors="replace")
+    if baseline is None and not failure_in_mutated_file(text, mutant.file):
+        raise RuntimeError(f"stereosim failed to build outside {mutant.file} and there is no "
+                           f"baseline to tell (see {log_path})")
+    result.status = "stillborn"
+    add_note(result, "survived the rtl tests; stereosim does not build with it: " +
+             first_error_line(text))
+    return False
 
 
 def first(items):
