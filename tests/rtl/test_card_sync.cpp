@@ -241,6 +241,22 @@ TEST(CardSync, DarkPixelJustBelowTheThresholdPasses) {
     expect_clean_protocol(b);
 }
 
+// OE_LOW_CYCLES 0 acts as 1 (docs/card-registers.md): each restart holds OE
+// low for exactly one pixel clock, not for none and not for more.
+TEST(CardSync, OeLowCyclesZeroHoldsOeLowOnePixelClock) {
+    bench b(small_options());
+    setup(b);
+    b.write_reg(regs::oe_low_cycles, 0);
+    b.write_reg(regs::retry_limit, 3);
+    b.right.set_start_extra_always(2);  // out of step on every start: 3 restarts
+    b.enable(true);
+    b.run_frames(10);
+    ASSERT_EQ(b.oe_rise_edges.size(), 4u);
+    for (size_t i = 1; i < b.oe_rise_edges.size(); ++i)
+        EXPECT_EQ(b.oe_rise_edges[i] - b.oe_fall_edges[i - 1], 1u) << "restart " << i;
+    expect_clean_protocol(b);
+}
+
 TEST(CardSync, RetryLimitStopsWithAHardSyncErrorThenEnableRecovers) {
     bench b(small_options());
     setup(b);
