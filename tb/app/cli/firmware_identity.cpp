@@ -20,4 +20,9 @@ json firmware_identity_of(const std::string& path, std::string* error) {
     return p ? firmware_identity(p->descriptor(), p.get()) : json(nullptr);
 }
 
+json firmware_of_document(const json& document) {
+    if (document.contains("firmware")) return document.at("firmware");
+    return firmware_identity(dsp::plugin::reference_firmware(), nullptr);
+}
+
 }  // namespace cli

@@ -17,4 +17,8 @@ nlohmann::json firmware_identity(const stereosim_fw_descriptor& d, const firmwar
 // `path` is empty; null and *error (one line) if the plugin cannot run.
 nlohmann::json firmware_identity_of(const std::string& path, std::string* error);
 
+// A campaign document's firmware; one written before campaigns named it ran
+// the built-in firmware.
+nlohmann::json firmware_of_document(const nlohmann::json& document);
+
 }  // namespace cli

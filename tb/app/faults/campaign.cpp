@@ -449,7 +449,7 @@ bool rows_to_keep(const campaign_options& o, std::map<int, json>* kept, std::str
     if (previous.value("campaign", std::string()) != o.name ||
         previous.value("seeds", -1) != o.seeds || previous.value("shard", std::string()) != shard ||
         previous.value("match", std::string()) != o.match ||
-        previous.value("firmware", json()) != cli::firmware_identity_of(o.firmware, error)) {
+        cli::firmware_of_document(previous) != cli::firmware_identity_of(o.firmware, error)) {
         *error = "--resume: " + path + " is not this campaign (campaign, seeds, shard, match " +
                  "or firmware differ)";
         return false;

@@ -1,4 +1,5 @@
 #include "tb/app/faults/campaign_files.h"
+#include "tb/app/cli/firmware_identity.h"
 
 #include "tb/app/cli/staged_files.h"
 #include "tb/app/faults/campaign_coverage.h"
@@ -230,7 +231,7 @@ bool merge_campaign_shards(const std::vector<json>& shards, json* merged, std::s
         int k = 0, m = 0;
         if (std::sscanf(s.at("shard").get<std::string>().c_str(), "%d/%d", &k, &m) != 2 ||
             s.at("campaign") != first.at("campaign") || s.at("seeds") != first.at("seeds") ||
-            s.value("firmware", json()) != first.value("firmware", json()) ||
+            cli::firmware_of_document(s) != cli::firmware_of_document(first) ||
             (count && m != count)) {
             *error =
                 "merge: the folders are not shards of one campaign (campaign, seeds, firmware, "
@@ -259,7 +260,7 @@ bool merge_campaign_shards(const std::vector<json>& shards, json* merged, std::s
     bool complete = true;
     for (const json& s : shards) complete = complete && s.value("complete", true);
     (*merged)["match"] = first.value("match", std::string());
-    (*merged)["firmware"] = first.value("firmware", json());
+    (*merged)["firmware"] = cli::firmware_of_document(first);
     (*merged)["complete"] = complete;
     return true;
 }
