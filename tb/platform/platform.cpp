@@ -101,7 +101,11 @@ platform_top::platform_top(const platform_config& config)
     m_cpu->set_firmware([this](dsp::hal& hal) { firmware(hal); });
 }
 
-platform_top::~platform_top() = default;
+platform_top::~platform_top() {
+    // A run that ended with the firmware still in its loop (the usual case:
+    // the simulation stops, the CPU thread never resumes) leaves its instance.
+    if (m_instance != nullptr) m_firmware->destroy(m_instance);
+}
 
 void platform_top::firmware(dsp::hal& hal) {
     // Kernels priced for this DSK's clocks (SDRAM stalls depend on the CPU /
@@ -122,20 +126,21 @@ void platform_top::firmware(dsp::hal& hal) {
     char error[256] = "";
     m_probe->set_stage_names(m_firmware->stage_names, static_cast<int>(m_firmware->stage_count));
     firmware_entered(0, -1, m_firmware->stage_names, static_cast<int>(m_firmware->stage_count));
-    void* instance =
+    m_instance =
         m_firmware->create(&m_services->table(), &board, values.data(), error, sizeof error);
     firmware_left();
-    if (instance == nullptr) {
+    if (m_instance == nullptr) {
         m_init_failed = true;
         m_init_error = error;
         return;
     }
-    m_firmware->policy(instance, &m_policy);
+    m_firmware->policy(m_instance, &m_policy);
     // The CPU thread starts the firmware at time 0.
     firmware_entered(0, -1, m_firmware->stage_names, static_cast<int>(m_firmware->stage_count));
-    m_firmware->run(instance);
+    m_firmware->run(m_instance);
     firmware_left();
-    m_firmware->destroy(instance);
+    m_firmware->destroy(m_instance);
+    m_instance = nullptr;
 }
 
 void platform_top::advance_to(simtime::ticks t) {

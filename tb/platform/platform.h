@@ -143,6 +143,7 @@ class platform_top {
     std::unique_ptr<firmware::plugin> m_plugin;  // config.firmware, or null
     const stereosim_fw_descriptor* m_firmware = nullptr;
     std::unique_ptr<firmware_services> m_services;
+    void* m_instance = nullptr;  // the firmware's, between create() and destroy()
     stereosim_fw_policy m_policy{};
     bool m_init_failed = false;
     std::string m_init_error;
