@@ -526,6 +526,7 @@ class Baseline:
     broken_rows: set = dataclasses.field(default_factory=set)
     failed_tests: set = dataclasses.field(default_factory=set)
     summary: str = "not run (--no-baseline)"
+    built: bool = False  # the unmutated tree built: a mutant's build failure is its own
 
 
 def run_baseline(settings, labels):
@@ -540,7 +541,7 @@ def run_baseline(settings, labels):
     built, build_s = build_tree(tree, labels, settings.build_jobs, out_dir / "build.log")
     if not built:
         raise RuntimeError(f"the unmutated tree does not build (see {out_dir / 'build.log'})")
-    baseline = Baseline()
+    baseline = Baseline(built=True)
     log("[baseline] smoke campaign")
     code, campaign_s, broken = run_campaign(tree_build_dir(tree), out_dir, settings.campaign_jobs)
     if code not in (0, 1):
@@ -614,10 +615,15 @@ def judge_mutant(mutant, result, tree, out_dir, settings, baseline):
                                        with_stereosim=mutant.kind == "firmware")
     if not built:
         log_text = (out_dir / "build.log").read_text(errors="replace")
-        if not failure_in_mutated_file(log_text, mutant.file):
+        in_mutated = failure_in_mutated_file(log_text, mutant.file)
+        if not in_mutated and not baseline.built:
             raise RuntimeError(f"build failed outside {mutant.file}: is the working tree "
                                f"broken? (see {out_dir / 'build.log'})")
+        # Where the baseline built, a failure elsewhere is the mutation's too.
         result.status = "stillborn"
+        if not in_mutated:
+            add_note(result, "does not build where the baseline did: " +
+                     first_error_line(log_text))
         return
     build, jobs = tree_build_dir(tree), settings.build_jobs
     if mutant.kind == "firmware":
@@ -654,7 +660,7 @@ def build_stereosim(mutant, result, tree, out_dir, settings, baseline):
     if built:
         return True
     text = log_path.read_text(errors="replace")
-    if baseline is None and not failure_in_mutated_file(text, mutant.file):
+    if not baseline.built and not failure_in_mutated_file(text, mutant.file):
         raise RuntimeError(f"stereosim failed to build outside {mutant.file} and there is no "
                            f"baseline to tell (see {log_path})")
     result.status = "stillborn"
