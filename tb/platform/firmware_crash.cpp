@@ -4,8 +4,8 @@
 
 #include <atomic>
 #include <csignal>
-#include <initializer_list>
 #include <cstring>
+#include <initializer_list>
 
 #include "model/time/ticks.h"
 

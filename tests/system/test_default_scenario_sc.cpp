@@ -211,8 +211,8 @@ TEST(default_scenario, golden_stage_cycles_and_one_timeline) {
     // Issue 17 (objects of any size) moved detect (+ the raw mask's block
     // statistics, cost::motion_blocks_cycles: 3,266,270 before), track (the
     // refit's box from the block groups of both differences instead of
-    // projections of their AND: was 2,560,409) and, through the boxes they give, stereo_sad (223,599) and
-    // stereo_edge (1,837,562).
+    // projections of their AND: was 2,560,409) and, through the boxes they give, stereo_sad
+    // (223,599) and stereo_edge (1,837,562).
     constexpr uint64_t golden[dsp::stage_count] = {
         6000,      // capture: 10 pairs x 600
         23511756,  // preprocess
