@@ -16,24 +16,24 @@ stereosim_board board_of(const platform_config& config) {
     b.card_strobe = config.card_timing.strobe;
     b.card_hold = config.card_timing.hold;
     b.card_retry_limit = config.card_retry_limit;
-    // The card's geometry registers from the sensor profile (docs/card.md,
-    // "Sensor pins the card expects").
-    const sensor::sensor_profile& p = config.profile;
-    b.h_start = static_cast<uint32_t>(p.href_start);
-    b.dark_cols_left = static_cast<uint32_t>(p.dark_cols_left);
-    b.border_cols_left = static_cast<uint32_t>(p.border_cols_before);
-    b.active_cols = static_cast<uint32_t>(p.active_cols);
-    b.border_cols_right = static_cast<uint32_t>(p.border_cols_after);
-    b.dark_cols_right = static_cast<uint32_t>(p.dark_cols_right);
-    b.line_total = static_cast<uint32_t>(p.line_pclks);
-    b.v_start = static_cast<uint32_t>(p.first_row_line);
-    b.dark_rows_top = static_cast<uint32_t>(p.dark_rows_top);
-    b.border_rows_top = static_cast<uint32_t>(p.border_rows_before);
-    b.active_rows = static_cast<uint32_t>(p.active_rows);
-    b.border_rows_bottom = static_cast<uint32_t>(p.border_rows_after);
-    b.dark_rows_bottom = static_cast<uint32_t>(p.dark_rows_bottom);
-    b.frame_lines = static_cast<uint32_t>(p.frame_lines);
-    b.cfa = static_cast<uint32_t>(p.cfa);
+    // The card's geometry registers as the platform derives them from the
+    // sensor profile (program_config; docs/card.md, "Sensor pins the card expects").
+    const dsp::card_setup g = program_config(config).card;
+    b.h_start = g.h_start;
+    b.dark_cols_left = g.dark_cols_left;
+    b.border_cols_left = g.border_cols_left;
+    b.active_cols = g.active_cols;
+    b.border_cols_right = g.border_cols_right;
+    b.dark_cols_right = g.dark_cols_right;
+    b.line_total = g.line_total;
+    b.v_start = g.v_start;
+    b.dark_rows_top = g.dark_rows_top;
+    b.border_rows_top = g.border_rows_top;
+    b.active_rows = g.active_rows;
+    b.border_rows_bottom = g.border_rows_bottom;
+    b.dark_rows_bottom = g.dark_rows_bottom;
+    b.frame_lines = g.frame_lines;
+    b.cfa = static_cast<uint32_t>(config.profile.cfa);
     const dsp::camera_rig rig = pipeline_config(config).rig;
     b.baseline_um = rig.baseline_um;
     b.focal_length_um = rig.focal_length_um;
