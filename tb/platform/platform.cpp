@@ -122,12 +122,14 @@ void platform_top::firmware(dsp::hal& hal) {
     // services; the platform sees its reports.
     m_services = std::make_unique<firmware_services>(*m_probe);
     const stereosim_board board = board_of(m_config);
-    const std::vector<double> values = plugin_values(*m_firmware, m_config);
+    // A member, not a local: the simulation usually stops with this thread
+    // suspended in run(), so its stack never unwinds.
+    m_key_values = plugin_values(*m_firmware, m_config);
     char error[256] = "";
     m_probe->set_stage_names(m_firmware->stage_names, static_cast<int>(m_firmware->stage_count));
     firmware_entered(0, -1, m_firmware->stage_names, static_cast<int>(m_firmware->stage_count));
     m_instance =
-        m_firmware->create(&m_services->table(), &board, values.data(), error, sizeof error);
+        m_firmware->create(&m_services->table(), &board, m_key_values.data(), error, sizeof error);
     firmware_left();
     if (m_instance == nullptr) {
         m_init_failed = true;

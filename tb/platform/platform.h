@@ -145,6 +145,7 @@ class platform_top {
     std::unique_ptr<firmware_services> m_services;
     void* m_instance = nullptr;  // the firmware's, between create() and destroy()
     stereosim_fw_policy m_policy{};
+    std::vector<double> m_key_values;  // the firmware's keys, as create() read them
     bool m_init_failed = false;
     std::string m_init_error;
     std::vector<captured_pair> m_captured;
