@@ -171,6 +171,31 @@ class Baseline(unittest.TestCase):
             self.assertEqual(result.killed_by, ["campaign:clean(seed=3): v"])
             self.assertEqual(rm.exit_code([], baseline), 1)
 
+    def test_the_eval_shape_test_alone_does_not_kill(self):
+        """A fake ctest whose only failure is the lean-eval shape test: noted,
+        not a kill; with a behaviour test failing beside it, killed."""
+        with tempfile.TemporaryDirectory() as tmp:
+            build = Path(tmp)
+            fake_bin = build / "bin"
+            fake_bin.mkdir()
+            shape = next(iter(rm.SHAPE_TESTS))
+            for failing, expect_kill in (([shape], False), ([shape, "rtl.CardSync.X"], True)):
+                listing = "".join(f"\t  {i + 1} - {name} (Failed)\n"
+                                  for i, name in enumerate(failing))
+                (fake_bin / "ctest").write_text(
+                    "#!/bin/sh\nprintf 'The following tests FAILED:\\n" + listing.replace(
+                        "\n", "\\n").replace("\t", "\\t") + "'\nexit 8\n")
+                (fake_bin / "ctest").chmod(0o755)
+                result = rm.Result("m", "rtl", "f", "d")
+                old_path = os.environ["PATH"]
+                os.environ["PATH"] = f"{fake_bin}:{old_path}"
+                try:
+                    killed = rm.check_ctest(result, build, build, "rtl", 1, rm.Baseline())
+                finally:
+                    os.environ["PATH"] = old_path
+                self.assertEqual(killed, expect_kill)
+                self.assertIn("Verilator's eval", result.note)
+
 
 def alive(pid):
     """Running (not gone, not a zombie waiting for its new parent to reap it)."""

@@ -27,8 +27,8 @@
 // outputs moved: the other trigger sources are inputs (both clocks and
 // rst_n), which the NBA region does not write, so with every source at its
 // recorded previous value each trigger term is 0 and each "previous value"
-// store rewrites what is there. The static_assert below stops the build if
-// the RTL gains a trigger.
+// store rewrites what is there. A card that gains a trigger takes
+// Verilator's eval (takes_lean_eval below).
 //
 // The names are Verilator 5.006's: a Verilator that renames them fails to
 // link here rather than running wrong. Exactness is shown byte by byte
@@ -39,6 +39,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <type_traits>
+#include <utility>
 
 // verilated.h, seeing SystemC, expects sc_time_stamp in the global namespace
 // (where <systemc.h> would put it). The card is --cc: it never calls it.
@@ -58,10 +59,30 @@ void Vcard___024root___eval_nba(Vcard___024root* vlSelf);
 
 namespace fast {
 
+// Whether a verilated card has the evaluation shape the lean path below is
+// written for: Verilator's untraced card with six triggers (posedge eclk or
+// negedge erst_n, posedge pclk or negedge rst_n, ...:
+// Vcard___024root___eval_triggers__act). Another trigger means another
+// source, which internal_triggers_steady would have to learn of; a card
+// whose RTL changed that way (a user's, a mutant) takes Verilator's own
+// eval instead, at Verilator's speed (tests/rtl/test_card_eval.cpp checks
+// that the shipped card takes the lean path).
+template <class card_model, class = void>
+struct has_lean_eval_shape : std::false_type {};
+template <class card_model>
+struct has_lean_eval_shape<card_model,
+                           std::void_t<decltype(std::declval<card_model&>().rootp->__VactTriggered)>>
+    : std::bool_constant<std::is_same_v<card_model, Vcard> &&
+                         std::is_same_v<decltype(std::declval<card_model&>().rootp->__VactTriggered),
+                                        VlTriggerVec<6>>> {};
+template <class card_model>
+inline constexpr bool takes_lean_eval = has_lean_eval_shape<card_model>::value;
+
 // The only trigger sources the NBA region can move: the reset synchronizers'
 // outputs (rtl/reset_sync.v in rtl/card_top.v), unchanged since the last
-// trigger evaluation.
-inline bool internal_triggers_steady(const Vcard___024root& r) {
+// trigger evaluation. A template so that a card without them still builds.
+template <class card_root>
+inline bool internal_triggers_steady(const card_root& r) {
     return r.card_top__DOT__erst_n == r.__Vtrigrprev__TOP__card_top__DOT__erst_n &&
            r.card_top__DOT__prst_n == r.__Vtrigrprev__TOP__card_top__DOT__prst_n;
 }
@@ -71,29 +92,20 @@ inline bool internal_triggers_steady(const Vcard___024root& r) {
 // plain copy cannot take bytes from several pending stores: they wait for
 // those stores to retire (the island loop's hottest instruction in perf).
 // The empty asm keeps the compiler from merging the byte loads again.
-inline void copy_fired_triggers(VlTriggerVec<6>& to, VlTriggerVec<6>& from) {
-    for (size_t i = 0; i < 6; ++i) {
+template <size_t count>
+inline void copy_fired_triggers(VlTriggerVec<count>& to, VlTriggerVec<count>& from) {
+    for (size_t i = 0; i < count; ++i) {
         bool fired = from.at(i);
         asm volatile("" : "+r"(fired));
         to.at(i) = fired;
     }
 }
 
-// Any card: Verilator's own eval (the traced cards, whose tracer also reads
-// the activity flags eval_step sets).
-template <class card_model>
-void card_eval(card_model& d, bool /*inputs_changed*/) {
-    d.eval();
-}
-
-// The untraced card: the regions above, in Verilator's order.
-template <>
-inline void card_eval<Vcard>(Vcard& d, bool inputs_changed) {
-    Vcard___024root& r = *d.rootp;
-    // Six triggers: posedge eclk or negedge erst_n, posedge pclk or negedge
-    // rst_n, ... (Vcard___024root___eval_triggers__act). Another one means
-    // another source, which internal_triggers_steady must learn of.
-    static_assert(std::is_same_v<decltype(r.__VactTriggered), VlTriggerVec<6>>);
+// The untraced card of the lean shape: the regions above, in Verilator's
+// order. A template on the root so that nothing here is compiled for a card
+// of another shape.
+template <class card_model, class card_root>
+void lean_card_eval(card_model& d, card_root& r, bool inputs_changed) {
     if (VL_UNLIKELY(!r.vlSymsp->__Vm_didInit)) {  // the first eval initializes the model
         d.eval();
         return;
@@ -120,6 +132,19 @@ inline void card_eval<Vcard>(Vcard& d, bool inputs_changed) {
     }
     Verilated::endOfThreadMTask(r.vlSymsp->__Vm_evalMsgQp);
     Verilated::endOfEval(r.vlSymsp->__Vm_evalMsgQp);
+}
+
+// A clock edge's evaluation of any card: the lean path where the card has
+// its shape, Verilator's own eval otherwise (the traced cards, whose tracer
+// also reads the activity flags eval_step sets; a card of another shape).
+template <class card_model>
+void card_eval(card_model& d, bool inputs_changed) {
+    if constexpr (takes_lean_eval<card_model>) {
+        lean_card_eval(d, *d.rootp, inputs_changed);
+    } else {
+        (void)inputs_changed;
+        d.eval();
+    }
 }
 
 }  // namespace fast
