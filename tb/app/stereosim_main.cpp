@@ -14,6 +14,7 @@
 
 #include "tb/app/cli/config_keys.h"
 #include "tb/app/cli/firmware_command.h"
+#include "tb/app/cli/firmware_keys.h"
 #include "tb/app/cli/replay_init.h"
 #include "tb/app/cli/run_command.h"
 #include "tb/app/cli/scenarios.h"
@@ -41,17 +42,6 @@ void print_scenarios() {
         std::printf("%-13s %s\n", s.name, s.description);
 }
 
-void print_config_keys(bool markdown) {
-    const cli::run_setup defaults;
-    if (markdown) {
-        std::fputs(cli::config_table_markdown().c_str(), stdout);
-        return;
-    }
-    for (const cli::config_key& k : cli::config_keys())
-        std::printf("%-30s %-34s default %-12s %s\n", k.name.c_str(), k.range_text().c_str(),
-                    k.get(defaults).dump().c_str(), k.doc.c_str());
-}
-
 }  // namespace
 
 // Our own main instead of libsystemc's: SystemC prints its banner on stderr
@@ -73,6 +63,13 @@ int sc_main(int argc, char* argv[]) {
     bool list = false, markdown = false;
     config->add_flag("--list", list, "every key: type, range, default, doc line");
     config->add_flag("--markdown", markdown, "the same as a Markdown table (docs/config.md)");
+    std::string config_firmware;
+    config
+        ->add_option("--firmware", config_firmware,
+                     "also the keys this firmware plugin declares (firmware.KEY, "
+                     "docs/firmware-abi.md)")
+        ->type_name("PATH")
+        ->excludes("--markdown");
     // Further subcommands (e.g. `stereosim faults`) are added here.
     faults::faults_command faults(app, ::app::make_run_extensions);
     sweep::sweep_command sweep(app);
@@ -103,7 +100,13 @@ int sc_main(int argc, char* argv[]) {
     if (*replay.subcommand()) return replay.execute();
     if (*firmware.subcommand()) return firmware.execute();
     if (*config) {
-        print_config_keys(markdown);
+        std::string error;
+        if (markdown)
+            std::fputs(cli::config_table_markdown().c_str(), stdout);
+        else if (!cli::print_firmware_keys(config_firmware, &error)) {
+            cli::print_error(error);
+            return cli::exit_bad_input;
+        }
         return 0;
     }
     return run.execute();

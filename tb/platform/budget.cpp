@@ -97,6 +97,7 @@ struct run_view {
     simtime::ticks run_end;
     double eclk_ns;
     double cpu_hz;
+    uint64_t capture_cycles;  // what the firmware charges per pair outside its kernels
     double cycles_ms(uint64_t cycles) const { return 1e3 * static_cast<double>(cycles) / cpu_hz; }
 };
 
@@ -203,8 +204,7 @@ pair_budget measure_pair(const run_view& run, const pair_check& pc, bool* chain_
         const dsp::frame_output& out = pc.record.out;
         for (int s = 0; s < dsp::stage_count; ++s)
             pb.stage_ms[s] = run.cycles_ms(out.stage_cycles[s]);
-        pb.stage_ms[static_cast<int>(dsp::stage::capture)] +=
-            run.cycles_ms(run.config.capture_cycles);
+        pb.stage_ms[static_cast<int>(dsp::stage::capture)] += run.cycles_ms(run.capture_cycles);
         for (int s = 0; s < dsp::stage_count; ++s) pb.processing_ms += pb.stage_ms[s];
         pb.latency_ms = pc.latency_ms;
     }
@@ -268,7 +268,8 @@ budget_report check_budget(const platform_top& top, const scoreboard_report& sco
                        top.end_tick(),
                        static_cast<double>(eclk.period_num()) /
                            static_cast<double>(eclk.period_den()) / simtime::ticks_per_ns,
-                       static_cast<double>(config.dsk.cpu_hz)};
+                       static_cast<double>(config.dsk.cpu_hz),
+                       top.firmware_capture_cycles()};
     b.period_ms = ticks_to_ms(config.period);
     b.cpu_hz = run.cpu_hz;
 

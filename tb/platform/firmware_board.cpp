@@ -81,6 +81,9 @@ std::vector<double> plugin_values(const stereosim_fw_descriptor& d, const platfo
             for (uint32_t c = 0; c < key.choice_count; ++c)
                 if (std::strcmp(key.choices[c], chosen) == 0) value = c;
         }
+        // What the user set by the key's own name has the last word.
+        for (const auto& [name, set] : config.firmware_settings)
+            if (name == key.name) value = set;
         values.push_back(value);
     }
     return values;

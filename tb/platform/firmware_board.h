@@ -20,8 +20,9 @@ std::vector<double> reference_values(const platform_config& config);
 
 // A plugin's key values for a run: a key named and typed like one of the
 // reference firmware's takes the run's value of that setting (a choice by
-// its name, if the plugin has it), every other key its default. The
-// shipped firmware loaded as a plugin thus runs as the built-in one.
+// its name, if the plugin has it), every other key its default; a key the
+// user set (config.firmware_settings) takes that value. The shipped
+// firmware loaded as a plugin thus runs as the built-in one.
 std::vector<double> plugin_values(const stereosim_fw_descriptor& d, const platform_config& config);
 
 }  // namespace platform

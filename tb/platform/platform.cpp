@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <stdexcept>
 
 #include "dsp/c6416_regs.h"
@@ -143,6 +144,13 @@ void platform_top::firmware(dsp::hal& hal) {
     firmware_left();
     m_firmware->destroy(m_instance);
     m_instance = nullptr;
+}
+
+uint64_t platform_top::firmware_capture_cycles() const {
+    for (uint32_t k = 0; k < m_firmware->key_count && k < m_key_values.size(); ++k)
+        if (std::strcmp(m_firmware->keys[k].name, "capture_cycles") == 0)
+            return static_cast<uint64_t>(m_key_values[k]);
+    return 0;
 }
 
 void platform_top::advance_to(simtime::ticks t) {

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dsp/c64x_cost_model.h"
@@ -46,6 +47,10 @@ struct platform_config {
     // firmware.h (docs/firmware-abi.md); empty: the built-in reference
     // firmware of dsp/, with the settings below as its key values.
     std::string firmware;
+    // The firmware's own keys the user set (`--set firmware.KEY=V`), by name
+    // without the prefix; a choice as its index. Checked against the
+    // descriptor before the run (tb/app/cli/firmware_keys.h).
+    std::vector<std::pair<std::string, double>> firmware_settings;
 
     // ---- sensors -----------------------------------------------------------------------------
     sensor::sensor_profile profile = sensor::default_profile();

@@ -212,7 +212,124 @@ TEST(FirmwarePluginRun, ACrashingFirmwareIsOneLineWithItsTimeAndStage) {
     const std::string said = r.output;
     // 6,000,000 cycles at 600 MHz: 10 ms into the run.
     EXPECT_EQ(said, "stereosim: error: firmware crashed (signal 11) at 10.000 ms in stage think\n");
-    EXPECT_FALSE(testsupport::file_exists(dir + "/report.json"));
+    // Nothing half written: the output folder the run created is gone.
+    EXPECT_FALSE(testsupport::file_exists(dir));
+}
+
+// A firmware that polls for a flag without giving time back: simulated time
+// stands still, so the run would never end. The guard stops it after 10 s
+// of wall time with one line; exit 3; nothing written.
+TEST(FirmwarePluginRun, AFirmwareThatNeverGivesTimeBackIsStoppedWithOneLine) {
+    const std::string dir = testsupport::temp_dir("fw_hang") + "/out";
+    const auto r = testsupport::run_command(stereosim("run --quiet --frames 8 --firmware " +
+                                                      std::string(MINIMAL_FIRMWARE_HANG_IN_RUN) +
+                                                      " --out " + dir));
+    EXPECT_EQ(r.exit_code, 3) << r.output;
+    EXPECT_EQ(r.output,
+              "stereosim: error: firmware gave no time back for 10 s of wall time at 10.000 ms in "
+              "stage think (a loop that neither charges cycles nor waits)\n");
+    EXPECT_FALSE(testsupport::file_exists(dir));
+}
+
+// In a campaign a crashing firmware is a row with outcome `crash` (it breaks
+// the contract), and the campaign goes on to its other rows: the ones a
+// snapshot group's leader would have forked (its fault-free prefix crashed)
+// and the one run from the start alike.
+TEST(FirmwarePluginRun, ACrashingFirmwareInACampaignIsACrashRowAndTheCampaignGoesOn) {
+    const std::string dir = testsupport::temp_dir("fw_crash_campaign") + "/c";
+    const auto r = testsupport::run_command(stereosim(
+        "faults --campaign smoke --match 'skew:sensor=L,pixels=1@frame=2|drop-frame:sensor=R@"
+        "frame=4|dead:sensor=L@ms=80' --jobs 2 --out " + dir + " --firmware " +
+        std::string(MINIMAL_FIRMWARE_CRASH_IN_RUN)));
+    EXPECT_EQ(r.exit_code, 1) << r.output;  // the contract broken, the campaign complete
+    const json campaign = json::parse(testsupport::read_text(dir + "/campaign.json"));
+    ASSERT_EQ(campaign["rows"].size(), 3u);
+    EXPECT_EQ(campaign["crashed"], 3);
+    EXPECT_EQ(campaign["contract_broken"], 3);
+    EXPECT_TRUE(campaign["complete"].get<bool>());
+    for (const json& row : campaign["rows"]) {
+        EXPECT_EQ(row["actual"], "crash") << row.dump();
+        EXPECT_FALSE(row["contract_ok"].get<bool>());
+        EXPECT_EQ(row["error"],
+                  "exit 3, no report.json: stereosim: error: firmware crashed (signal 11) at "
+                  "10.000 ms in stage think");
+    }
+    EXPECT_NE(testsupport::read_text(dir + "/campaign.txt").find("CRASH: exit 3"),
+              std::string::npos);
+}
+
+}  // namespace
+
+namespace {
+
+// The firmware's own keys (docs/firmware-abi.md "Config keys"): `--set
+// firmware.KEY=V` reaches create() (the reference firmware's capture_cycles,
+// a key of its own beyond the platform's table: 600,000 cycles at 600 MHz
+// are exactly 1 ms per pair in stage capture), the report keeps it and
+// replays it, and a bad value or key is one line, exit 2, nothing written.
+TEST(FirmwareKeys, AFirmwaresOwnKeyReachesItAndIsKeptInTheReport) {
+    const std::string dir = testsupport::temp_dir("fw_keys");
+    const std::string args = "run --quiet --frames 6 --out ";
+    testsupport::run_command(stereosim(args + dir + "/default"));
+    testsupport::run_command(stereosim(args + dir + "/set --set firmware.capture_cycles=600000"));
+    const json plain = report_of(dir + "/default");
+    const json set = report_of(dir + "/set");
+    const auto capture_ms = [](const json& r) {
+        return r["summary"]["timing"]["stage_ms"]["capture"]["max"].get<double>();
+    };
+    EXPECT_LT(capture_ms(plain), 0.01);
+    EXPECT_DOUBLE_EQ(capture_ms(set), 1.0);
+    EXPECT_EQ(set["config"]["firmware"]["capture_cycles"], 600000);
+    EXPECT_FALSE(plain["config"]["firmware"].contains("capture_cycles"));
+    // The report replays the run it describes, the firmware's key included.
+    testsupport::run_command(
+        stereosim("run --quiet --config " + dir + "/set/report.json --out " + dir + "/replayed"));
+    EXPECT_DOUBLE_EQ(capture_ms(report_of(dir + "/replayed")), 1.0);
+}
+
+TEST(FirmwareKeys, ABadKeyOrValueIsOneLineAndNothingWritten) {
+    const std::string dir = testsupport::temp_dir("fw_keys_bad") + "/out";
+    const std::string minimal = std::string(" --firmware ") + MINIMAL_FIRMWARE;
+    const struct {
+        std::string args, said;
+    } cases[] = {
+        {" --set firmware.capture_cycles=2000000",
+         "config key 'firmware.capture_cycles': 2000000 is out of range 0..1000000"},
+        {" --set firmware.capture_cycles=many",
+         "config key 'firmware.capture_cycles': expected an integer, got 'many'"},
+        {minimal + " --set firmware.cycles_per_wait=1000001",
+         "config key 'firmware.cycles_per_wait': 1000001 is out of range 0..1000000"},
+        // The reference's key is not the plugin's.
+        {minimal + " --set firmware.capture_cycles=10",
+         "unknown config key 'firmware.capture_cycles' (the firmware 'minimal' declares of its "
+         "own: firmware.cycles_per_wait)"},
+        {" --set firmware.watchdg_ms=3",
+         "unknown config key 'firmware.watchdg_ms' (did you mean 'firmware.watchdog_ms'?)"},
+    };
+    for (const auto& c : cases) {
+        const auto r =
+            testsupport::run_command(stereosim("run --quiet --frames 4 --out " + dir + c.args));
+        EXPECT_EQ(r.exit_code, 2) << c.args;
+        EXPECT_EQ(r.output, "stereosim: error: " + c.said + "\n") << c.args;
+        EXPECT_FALSE(testsupport::file_exists(dir)) << c.args;
+    }
+}
+
+TEST(FirmwareKeys, ConfigListShowsTheFirmwaresOwnKeys) {
+    const auto built_in = testsupport::run_command(stereosim("config --list"));
+    EXPECT_NE(built_in.output.find("# the firmware 'stereosim-reference'"), std::string::npos);
+    EXPECT_NE(built_in.output.find("firmware.capture_cycles"), std::string::npos);
+    const auto minimal = testsupport::run_command(
+        stereosim(std::string("config --list --firmware ") + MINIMAL_FIRMWARE));
+    EXPECT_EQ(minimal.exit_code, 0);
+    EXPECT_NE(minimal.output.find("# the firmware 'minimal' 0.1 declares:\nfirmware.cycles_per_wait"
+                                  "       integer 0..1000000                 default 600 "),
+              std::string::npos)
+        << minimal.output;
+    EXPECT_EQ(minimal.output.find("firmware.capture_cycles"), std::string::npos);
+    const auto bad = testsupport::run_command(
+        stereosim(std::string("config --list --firmware ") + MINIMAL_FIRMWARE_BAD_ABI));
+    EXPECT_EQ(bad.exit_code, 2);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include "model/scene/replay.h"
 #include "model/sensor/profile.h"
+#include "tb/app/cli/firmware_keys.h"
 #include "tb/app/cli/scenarios.h"
 #include "tb/firmware/plugin.h"
 
@@ -282,17 +283,20 @@ const config_key* find_key(const std::string& name) {
     return nullptr;
 }
 
-std::string unknown_key_message(const std::string& name) {
-    const config_key* nearest = nullptr;
+std::string unknown_key_message(const std::string& name,
+                                const std::vector<std::string>& more_names) {
+    std::vector<std::string> names = more_names;
+    for (const config_key& k : config_keys()) names.push_back(k.name);
+    const std::string* nearest = nullptr;
     size_t best = std::string::npos;
-    for (const config_key& k : config_keys()) {
-        const size_t d = edit_distance(name, k.name);
-        if (d < best) best = d, nearest = &k;
+    for (const std::string& candidate : names) {
+        const size_t d = edit_distance(name, candidate);
+        if (d < best) best = d, nearest = &candidate;
     }
     std::string message = "unknown config key '" + name + "'";
     // A suggestion only when it is plausibly a typo (a third of the name).
-    if (nearest && best <= std::max<size_t>(3, nearest->name.size() / 3))
-        message += " (did you mean '" + nearest->name + "'?)";
+    if (nearest && best <= std::max<size_t>(3, nearest->size() / 3))
+        message += " (did you mean '" + *nearest + "'?)";
     else
         message += " (stereosim config --list shows the keys)";
     return message;
@@ -433,8 +437,13 @@ bool read_config_file(const std::string& path, std::vector<key_assignment>* out,
     std::vector<std::pair<std::string, json>> leaves;
     flatten(document, "", &leaves);
     std::map<std::string, json> by_name;
+    std::vector<key_assignment> firmware_own;
     for (const auto& [name, value] : leaves) {
         const config_key* key = find_key(name);
+        if (!key && is_firmware_own_key(name)) {
+            firmware_own.push_back({name, value});  // checked once the firmware is known
+            continue;
+        }
         if (!key) {
             *error = "config file '" + path + "': " + unknown_key_message(name);
             return false;
@@ -451,6 +460,7 @@ bool read_config_file(const std::string& path, std::vector<key_assignment>* out,
         const auto it = by_name.find(key.name);
         if (it != by_name.end()) out->push_back({key.name, it->second});
     }
+    out->insert(out->end(), firmware_own.begin(), firmware_own.end());
     return true;
 }
 
@@ -476,6 +486,10 @@ bool apply_assignments(const std::vector<key_assignment>& assignments, run_setup
     for (const key_assignment& a : assignments) {
         if (a.key == "scenario.name") continue;
         const config_key* key = find_key(a.key);
+        if (!key && is_firmware_own_key(a.key)) {
+            setup->firmware_settings.emplace_back(a.key, a.value);
+            continue;
+        }
         if (!key) {
             *error = unknown_key_message(a.key);
             return false;
@@ -518,6 +532,8 @@ bool validate_setup(const run_setup& setup, std::string* error) {
     // A plugin that cannot run is bad input now, not a failure after the
     // output folder exists.
     if (!setup.firmware.empty() && !firmware::plugin::load(setup.firmware, error)) return false;
+    std::vector<std::pair<std::string, double>> firmware_values;
+    if (!resolve_firmware_settings(setup, &firmware_values, error)) return false;
     if (!setup.scenario.replay.empty()) {
         try {
             scene::replay replay(setup.scenario.replay, profile.active_cols, profile.active_rows);
@@ -549,6 +565,8 @@ json config_json(const run_setup& setup) {
         const size_t dot = key.name.find('.');
         out[key.name.substr(0, dot)][key.name.substr(dot + 1)] = key.get(setup);
     }
+    for (const auto& [name, value] : setup.firmware_settings)
+        out["firmware"][name.substr(name.find('.') + 1)] = typed_setting(value);
     return out;
 }
 

@@ -49,7 +49,9 @@ const config_key* find_key(const std::string& name);
 
 // The one-line error for an unknown key, with the nearest key name:
 // "unknown config key 'rig.baselin' (did you mean 'rig.baseline_mm'?)".
-std::string unknown_key_message(const std::string& name);
+// more_names: further keys to suggest (a firmware's own).
+std::string unknown_key_message(const std::string& name,
+                                const std::vector<std::string>& more_names = {});
 
 // A value for a key from text (--set) or JSON (a file), type- and range-
 // checked. Returns false and sets *error (one line) if it does not fit.

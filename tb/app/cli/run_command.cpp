@@ -10,6 +10,7 @@
 
 #include "tb/app/cli/config_keys.h"
 #include "tb/app/cli/console.h"
+#include "tb/app/cli/firmware_keys.h"
 #include "tb/app/cli/run_report.h"
 #include "tb/app/cli/staged_files.h"
 #include "tb/platform/budget.h"
@@ -136,6 +137,10 @@ bool run_command::setup_from_options(run_setup* setup, std::string* error) const
             return false;
         }
         const std::string name = set.substr(0, eq);
+        if (is_firmware_own_key(name)) {  // checked once the firmware is known
+            assignments.push_back({name, json(set.substr(eq + 1))});
+            continue;
+        }
         if (!find_key(name)) {
             *error = unknown_key_message(name);
             return false;

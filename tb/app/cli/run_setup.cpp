@@ -1,9 +1,11 @@
 #include "tb/app/cli/run_setup.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "model/scene/replay.h"
 #include "model/sensor/profile.h"
+#include "tb/app/cli/firmware_keys.h"
 #include "tb/app/cli/scenarios.h"
 
 namespace cli {
@@ -80,6 +82,9 @@ platform::platform_config platform_config_of(const run_setup& s) {
     if (s.quantum_ns > 0) c.quantum = s.quantum_ns * simtime::ticks_per_ns;
     c.hash_pins = s.hash_pins;
     c.firmware = s.firmware;
+    std::string error;
+    if (!resolve_firmware_settings(s, &c.firmware_settings, &error))
+        throw std::logic_error("a setup that passed validate_setup: " + error);
     return c;
 }
 

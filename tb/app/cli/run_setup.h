@@ -7,6 +7,10 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "dsp/control_program.h"
 #include "dsp/controller.h"
@@ -72,6 +76,10 @@ struct run_setup {
     // The firmware under test: a plugin (docs/firmware-abi.md); empty: the
     // built-in reference firmware.
     std::string firmware;
+    // The firmware's own keys (`--set firmware.KEY=V`, a config file's
+    // "firmware" object) as given, in order: checked once the firmware is
+    // known (tb/app/cli/firmware_keys.h).
+    std::vector<std::pair<std::string, nlohmann::json>> firmware_settings;
     int64_t quantum_ns = 0;  // 0: one line of the profile (800 pclk = 46,667 ns by default)
     bool hash_pins = true;
 

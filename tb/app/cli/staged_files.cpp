@@ -8,6 +8,8 @@
 #include <fstream>
 #include <system_error>
 
+#include "tb/platform/firmware_crash.h"
+
 namespace cli {
 
 namespace fs = std::filesystem;
@@ -18,6 +20,7 @@ staged_files::~staged_files() {
 
 bool staged_files::open(const std::string& dir, std::string* error) {
     std::error_code ec;
+    const bool existed = fs::exists(dir, ec);
     fs::create_directories(dir, ec);
     if (ec || !fs::is_directory(dir)) {
         *error = "cannot create output folder '" + dir +
@@ -42,6 +45,7 @@ bool staged_files::open(const std::string& dir, std::string* error) {
     fs::remove(probe, ec);
     m_dir = dir;
     m_staging = staging;
+    platform::remove_on_firmware_failure(staging, existed ? std::string() : dir);
     return true;
 }
 
@@ -73,6 +77,7 @@ bool staged_files::commit(std::string* error) {
 
 void staged_files::discard() {
     if (m_staging.empty()) return;
+    platform::remove_on_firmware_failure("", "");
     std::error_code ec;
     fs::remove_all(m_staging, ec);
     m_staging.clear();

@@ -21,8 +21,10 @@
 #include "tb/app/cli/child_run.h"
 #include "tb/app/cli/firmware_identity.h"
 #include "tb/app/cli/interrupt.h"
+#include "tb/app/cli/run_command.h"
 #include "tb/app/faults/campaign_files.h"
 #include "tb/app/faults/child_exit.h"
+#include "tb/platform/firmware_crash.h"
 #include "tb/platform/platform_config.h"
 
 namespace faults {
@@ -80,6 +82,8 @@ void collect(campaign_row& row, const std::string& dir, int status) {
         const std::string last = cli::last_line_of(dir + "/log.txt");
         row.error = "exit " + std::to_string(row.exit_code) + ", no report.json" +
                     (last.empty() ? "" : ": " + last);
+        row.crashed =
+            row.exit_code == cli::exit_run_failed && platform::is_firmware_failure_line(last);
         return;
     }
     try {
@@ -117,6 +121,7 @@ json row_json(const campaign_row& r) {
               {"contract_ok", r.ok()}};
     if (!r.ran) {
         j["error"] = r.error;
+        if (r.crashed) j["actual"] = "crash";
         return j;
     }
     const run_observation& run = r.result.run;
@@ -322,6 +327,12 @@ class plan_runner {
         if (m_o.stop_on_violation && !row.ok() && m_broken < 0) m_broken = row.run.index;
     }
 
+    // The line of a group leader's firmware crash or hang ("" if none).
+    std::string leader_failure(const unit& u) const {
+        const std::string line = cli::last_line_of(run_dir(u.runs[0]) + "/leader.txt");
+        return platform::is_firmware_failure_line(line) ? line : std::string();
+    }
+
   public:
     // The plan index of the run that stopped the campaign, -1 if none did.
     int broken() const { return m_broken; }
@@ -329,7 +340,12 @@ class plan_runner {
   private:
     // A group's runs as their leader's child statuses say.
     void finish_group(const unit& u, int leader_status) {
+        // A leader whose firmware crashed or hung in the fault-free prefix:
+        // the runs it had not forked yet end as it did, with its line.
+        const std::string leader_line = leader_failure(u);
         for (size_t i : u.runs) {
+            if (!leader_line.empty() && !fs::exists(run_dir(i) + "/status"))
+                std::ofstream(run_dir(i) + "/log.txt", std::ios::app) << leader_line << "\n";
             double wall = 0;
             const int status =
                 member_status(run_dir(i), leader_status, &wall, &m_rows[i].snapshot_ms);
@@ -388,8 +404,12 @@ class plan_runner {
             std::chrono::duration<double>(std::chrono::steady_clock::now() - m_started[it->second])
                 .count();
         m_running.erase(it);
-        // A run's token comes back here; a leader gave its own back unless it was killed.
-        if (!u.group || WIFSIGNALED(status)) m_tokens.put();
+        // A run's token comes back here; a leader gave its own back unless it
+        // was killed or its firmware ended it (the crash report's _exit).
+        const bool leader_failed = u.group && WIFEXITED(status) &&
+                                   WEXITSTATUS(status) == cli::exit_run_failed &&
+                                   !leader_failure(u).empty();
+        if (!u.group || WIFSIGNALED(status) || leader_failed) m_tokens.put();
         if (u.group)
             finish_group(u, status);
         else

@@ -76,6 +76,9 @@ struct campaign_row {
     double wall_s = 0;
     double snapshot_ms = -1;  // forked from a snapshot at this simulated time; -1: from the start
     std::string error;        // why it did not run
+    // The firmware under test crashed or hung (the child's exit 3 and its
+    // one line, tb/platform/firmware_crash.h): the row's outcome `crash`.
+    bool crashed = false;
     // What the run was too short to judge: its report's not_judged (a stage
     // that never ran) and the contract's rules, "; "-joined; empty: all.
     std::string not_judged;

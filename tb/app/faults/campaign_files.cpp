@@ -101,10 +101,11 @@ std::string table_row(const json& r) {
     char line[512];
     const std::string fault = r.at("fault");
     if (!r.at("ran").get<bool>()) {
-        std::snprintf(line, sizeof line, "%-4d %-46s %5llu %3d  NOT RUN: %s\n",
-                      r.at("index").get<int>(), fault.c_str(),
-                      static_cast<unsigned long long>(r.at("seed").get<uint64_t>()),
-                      r.at("frames").get<int>(), r.value("error", std::string()).c_str());
+        const bool crashed = r.value("actual", std::string()) == "crash";
+        std::snprintf(line, sizeof line, "%-4d %-46s %5llu %3d  %s: %s\n", r.at("index").get<int>(),
+                      fault.c_str(), static_cast<unsigned long long>(r.at("seed").get<uint64_t>()),
+                      r.at("frames").get<int>(), crashed ? "CRASH" : "NOT RUN",
+                      r.value("error", std::string()).c_str());
         return line;
     }
     const bool faulty = r.contains("detected_by");
@@ -132,9 +133,10 @@ std::string table_row(const json& r) {
 
 json campaign_document(const std::string& name, const std::string& shard, int seeds, int jobs,
                        bool snapshots, double wall_s, json rows) {
-    int broken = 0, clean_frames = 0, false_alarms = 0;
+    int broken = 0, clean_frames = 0, false_alarms = 0, crashed = 0;
     for (const json& r : rows) {
         broken += !r.at("contract_ok").get<bool>();
+        crashed += r.value("actual", std::string()) == "crash";
         if (r.at("ran").get<bool>() && r.at("fault") == "clean") {
             clean_frames += r.at("frames").get<int>();
             false_alarms += r.at("false_alarms").get<int>();
@@ -149,6 +151,7 @@ json campaign_document(const std::string& name, const std::string& shard, int se
             {"snapshots", snapshots},
             {"runs", rows.size()},
             {"contract_broken", broken},
+            {"crashed", crashed},
             {"clean_frames", clean_frames},
             {"clean_false_alarms", false_alarms},
             {"wall_s", wall_s},
@@ -174,12 +177,13 @@ std::string campaign_table(const json& campaign) {
         forked += r.at("snapshot_ms").is_number();
     }
     std::snprintf(line, sizeof line,
-                  "\ncampaign %s shard %s: %zu runs, %d break the contract; clean "
+                  "\ncampaign %s shard %s: %zu runs, %d break the contract (%d crashed); clean "
                   "frames %d with %d false alarms; unsynced pairs used (all runs) %d; wall %.1f s "
                   "with %d jobs, %d runs forked from snapshots\n",
                   campaign.at("campaign").get<std::string>().c_str(),
                   campaign.at("shard").get<std::string>().c_str(), campaign.at("rows").size(),
-                  campaign.at("contract_broken").get<int>(), campaign.at("clean_frames").get<int>(),
+                  campaign.at("contract_broken").get<int>(), campaign.value("crashed", 0),
+                  campaign.at("clean_frames").get<int>(),
                   campaign.at("clean_false_alarms").get<int>(), unsynced,
                   campaign.at("wall_s").get<double>(), campaign.at("jobs").get<int>(), forked);
     out << line;

@@ -3,7 +3,9 @@
  * stop, and reports each step. Built several times with one defect each
  * (BAD_ABI, NO_ENTRY, TOO_MANY_STAGES, BAD_KEY_DEFAULT, NO_DESCRIPTOR) to
  * show the loader refusing it, or with a bug (CRASH_IN_RUN: a null pointer
- * written 10 ms into stage think) to show the platform reporting its crash. */
+ * written 10 ms into stage think; HANG_IN_RUN: a busy loop 10 ms into stage
+ * think that only asks whether to stop) to show the platform reporting its
+ * crash or its hang. */
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -68,6 +70,14 @@ static void run(void* instance) {
         m->hw->stage_begin(m->hw->ctx, 1);
         m->hw->charge(m->hw->ctx, 1, 6000000u, NULL);
         *nowhere = 1;
+    }
+#endif
+#ifdef HANG_IN_RUN
+    /* The bug: waits for a flag by polling, never giving time back, so the
+     * flag can never change. */
+    m->hw->stage_begin(m->hw->ctx, 1);
+    m->hw->charge(m->hw->ctx, 1, 6000000u, NULL);
+    while (!m->hw->stop_requested(m->hw->ctx)) {
     }
 #endif
     m->hw->set_interrupt_enable(m->hw->ctx, 1u << 4);
