@@ -239,8 +239,8 @@ TEST(FirmwarePluginRun, ACrashingFirmwareInACampaignIsACrashRowAndTheCampaignGoe
     const std::string dir = testsupport::temp_dir("fw_crash_campaign") + "/c";
     const auto r = testsupport::run_command(stereosim(
         "faults --campaign smoke --match 'skew:sensor=L,pixels=1@frame=2|drop-frame:sensor=R@"
-        "frame=4|dead:sensor=L@ms=80' --jobs 2 --out " + dir + " --firmware " +
-        std::string(MINIMAL_FIRMWARE_CRASH_IN_RUN)));
+        "frame=4|dead:sensor=L@ms=80' --jobs 2 --out " +
+        dir + " --firmware " + std::string(MINIMAL_FIRMWARE_CRASH_IN_RUN)));
     EXPECT_EQ(r.exit_code, 1) << r.output;  // the contract broken, the campaign complete
     const json campaign = json::parse(testsupport::read_text(dir + "/campaign.json"));
     ASSERT_EQ(campaign["rows"].size(), 3u);
@@ -330,6 +330,52 @@ TEST(FirmwareKeys, ConfigListShowsTheFirmwaresOwnKeys) {
     const auto bad = testsupport::run_command(
         stereosim(std::string("config --list --firmware ") + MINIMAL_FIRMWARE_BAD_ABI));
     EXPECT_EQ(bad.exit_code, 2);
+}
+
+}  // namespace
+
+namespace {
+
+// `stereosim firmware check`: the shipped firmware is deterministic (the
+// default scenario twice, two fault runs forked from a snapshot against
+// their runs from the start); a firmware whose first charge depends on the
+// process id is caught, with the first difference named (the first pair
+// period's CPU time, which that charge lengthens).
+TEST(FirmwareCheck, TheReferenceIsDeterministic) {
+    const auto r =
+        testsupport::run_command(stereosim(std::string("firmware check ") + REFERENCE_FIRMWARE));
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("the default scenario twice (12 frames): the same report.json and "
+                            "frames.csv"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("2 of them forked from a snapshot"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("deterministic: yes"), std::string::npos) << r.output;
+}
+
+TEST(FirmwareCheck, AFirmwareThatReadsTheHostIsCaught) {
+    const auto r = testsupport::run_command(
+        stereosim(std::string("firmware check ") + MINIMAL_FIRMWARE_NONDETERMINISTIC));
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_NE(r.output.find("stereosim: error: firmware 'minimal' is not deterministic: the "
+                            "default scenario run twice differs first at report.json "
+                            "frames[0].budget.cpu_busy_ms ("),
+              std::string::npos)
+        << r.output;
+    // Alike in two runs one process starts, not in a run forked from a
+    // snapshot (its parent the group's leader) and its run from the start.
+    const auto forked = testsupport::run_command(
+        stereosim(std::string("firmware check ") + MINIMAL_FIRMWARE_PARENT_DEPENDENT));
+    EXPECT_EQ(forked.exit_code, 1) << forked.output;
+    EXPECT_NE(forked.output.find("the same report.json and frames.csv"), std::string::npos)
+        << forked.output;
+    EXPECT_NE(forked.output.find("is not deterministic: a fault run forked from a snapshot differs "
+                                 "from its run from the start first at report.json "),
+              std::string::npos)
+        << forked.output;
+    const auto bad = testsupport::run_command(
+        stereosim(std::string("firmware check ") + MINIMAL_FIRMWARE_BAD_ABI));
+    EXPECT_EQ(bad.exit_code, 2) << bad.output;
 }
 
 }  // namespace

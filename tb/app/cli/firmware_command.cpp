@@ -1,8 +1,10 @@
 #include "tb/app/cli/firmware_command.h"
 
 #include <cstdio>
+#include <filesystem>
 
 #include "dsp/plugin/reference_firmware.h"
+#include "tb/app/cli/firmware_check.h"
 #include "tb/app/cli/run_command.h"
 #include "tb/firmware/plugin.h"
 
@@ -49,9 +51,19 @@ firmware_command::firmware_command(CLI::App& app) {
     m_info = m_app->add_subcommand(
         "info", "what a firmware plugin declares (without PATH: the built-in firmware)");
     m_info->add_option("path", m_path, "the plugin (.so)");
+    m_check = m_app->add_subcommand(
+        "check",
+        "whether a firmware is deterministic: the default scenario twice, and fault runs forked "
+        "from a snapshot against their runs from the start (without PATH: the built-in one)");
+    m_check->add_option("path", m_path, "the plugin (.so)");
 }
 
 int firmware_command::execute() {
+    if (*m_check) {
+        std::error_code ec;
+        const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+        return check_firmware(ec ? std::string("stereosim") : self.string(), m_path);
+    }
     std::unique_ptr<firmware::plugin> plugin;
     if (!m_path.empty()) {
         std::string error;

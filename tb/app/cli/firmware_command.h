@@ -1,6 +1,8 @@
 // `stereosim firmware info [PATH]` (docs/firmware-abi.md): what a firmware
 // plugin declares, or the built-in firmware without PATH: name, version, ABI
 // version, file and SHA-256, stages, tracker states and config keys.
+// `stereosim firmware check [PATH]`: whether it is deterministic
+// (firmware_check.h).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -19,6 +21,7 @@ class firmware_command {
   private:
     CLI::App* m_app = nullptr;
     CLI::App* m_info = nullptr;
+    CLI::App* m_check = nullptr;
     std::string m_path;
 };
 

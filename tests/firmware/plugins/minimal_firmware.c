@@ -5,7 +5,15 @@
  * show the loader refusing it, or with a bug (CRASH_IN_RUN: a null pointer
  * written 10 ms into stage think; HANG_IN_RUN: a busy loop 10 ms into stage
  * think that only asks whether to stop) to show the platform reporting its
- * crash or its hang. */
+ * crash or its hang; NONDETERMINISTIC: a first charge that depends on the
+ * process id, which `stereosim firmware check` must catch; PARENT_DEPENDENT:
+ * the same on the parent's process id, alike in two runs started by one
+ * process, so only the check's forked runs against their runs from the
+ * start catch it. */
+#if defined(NONDETERMINISTIC) || defined(PARENT_DEPENDENT)
+#define _POSIX_C_SOURCE 200809L /* getpid */
+#include <unistd.h>
+#endif
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -71,6 +79,17 @@ static void run(void* instance) {
         m->hw->charge(m->hw->ctx, 1, 6000000u, NULL);
         *nowhere = 1;
     }
+#endif
+#ifdef NONDETERMINISTIC
+    /* The bug: work sized by something of the host's, here the process id. */
+    m->hw->stage_begin(m->hw->ctx, 1);
+    m->hw->charge(m->hw->ctx, 1, 1000u + (uint64_t)(getpid() % 4096), NULL);
+    m->hw->stage_end(m->hw->ctx, 1);
+#endif
+#ifdef PARENT_DEPENDENT
+    m->hw->stage_begin(m->hw->ctx, 1);
+    m->hw->charge(m->hw->ctx, 1, 1000u + (uint64_t)(getppid() % 4096), NULL);
+    m->hw->stage_end(m->hw->ctx, 1);
 #endif
 #ifdef HANG_IN_RUN
     /* The bug: waits for a flag by polling, never giving time back, so the
