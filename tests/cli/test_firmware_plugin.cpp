@@ -379,3 +379,42 @@ TEST(FirmwareCheck, AFirmwareThatReadsTheHostIsCaught) {
 }
 
 }  // namespace
+
+namespace {
+
+// `sweep --firmware PATH`: every point runs the plugin (the shipped
+// firmware loaded as one gives the built-in sweep's co-simulated figures),
+// sweep.json names it, and the closed form says per point that a plugin has
+// no host estimate of its processing.
+TEST(FirmwareSweep, EveryPointRunsThePlugin) {
+    const std::string dir = testsupport::temp_dir("fw_sweep");
+    const std::string grid = "sweep --grid dsk.cpu_mhz=300,600 --frames 3 --jobs 2 --out ";
+    const auto a = testsupport::run_command(stereosim(grid + dir + "/built_in"));
+    const auto b = testsupport::run_command(
+        stereosim(grid + dir + "/plugin --firmware " + std::string(REFERENCE_FIRMWARE)));
+    ASSERT_EQ(a.exit_code, 0) << a.output;
+    ASSERT_EQ(b.exit_code, 0) << b.output;
+    const json built_in = json::parse(testsupport::read_text(dir + "/built_in/sweep.json"));
+    const json plugin = json::parse(testsupport::read_text(dir + "/plugin/sweep.json"));
+    EXPECT_TRUE(built_in["firmware"]["file"].is_null());
+    EXPECT_EQ(plugin["firmware"]["file"], REFERENCE_FIRMWARE);
+    EXPECT_EQ(plugin["firmware"]["name"], "stereosim-reference");
+    ASSERT_EQ(plugin["points"].size(), 2u);
+    for (size_t i = 0; i < 2; ++i) {
+        const json& p = plugin["points"][i];
+        const json& q = built_in["points"][i];
+        for (const char* field : {"verdict", "cpu_busy_ms_max", "emif_busy_ms_max", "capture_ms",
+                                  "processing_ms_max", "stage_ms_max", "fifo_peak_words"})
+            EXPECT_EQ(p[field], q[field]) << field;
+        EXPECT_TRUE(p["closed_form"]["processing_ms"].is_null());
+        EXPECT_NE(p["closed_form"].value("processing_note", "").find("plugin"), std::string::npos);
+        EXPECT_TRUE(q["closed_form"]["processing_ms"].is_number());
+    }
+    // The plugin's shards do not merge with the built-in firmware's.
+    const auto mixed = testsupport::run_command(
+        stereosim("merge " + dir + "/built_in " + dir + "/plugin --out " + dir + "/mixed"));
+    EXPECT_EQ(mixed.exit_code, 2) << mixed.output;
+    EXPECT_NE(mixed.output.find("not shards of one sweep"), std::string::npos) << mixed.output;
+}
+
+}  // namespace

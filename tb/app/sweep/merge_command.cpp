@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tb/app/cli/firmware_identity.h"
 #include "tb/app/faults/campaign_files.h"
 #include "tb/app/sweep/sweep_files.h"
 #include "tb/app/sweep/sweep_plan.h"
@@ -63,10 +64,11 @@ bool merge_sweeps(const std::vector<json>& shards, json* merged, int* code, std:
         int k = 0, m = 0;
         if (!shard_of(s, &k, &m) || s.at("grid") != first.at("grid") ||
             s.at("base") != first.at("base") || s.at("screen") != first.at("screen") ||
+            cli::firmware_of_document(s) != cli::firmware_of_document(first) ||
             (count && m != count)) {
             *error =
-                "merge: the folders are not shards of one sweep (grid, base settings, screen or "
-                "shard count differ)";
+                "merge: the folders are not shards of one sweep (grid, base settings, screen, "
+                "firmware or shard count differ)";
             return false;
         }
         count = m;

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <map>
 
+#include "tb/app/cli/firmware_identity.h"
 #include "tb/app/cli/interrupt.h"
 #include "tb/app/sweep/sweep_files.h"
 #include "tb/app/sweep/sweep_plan.h"
@@ -96,6 +97,11 @@ sweep_command::sweep_command(CLI::App& app) {
         ->required();
     m_app->add_option("--config", o.config_file, "config file under every point (docs/config.md)");
     m_app->add_option("--set", o.sets, "KEY=VALUE under every point (repeatable)");
+    m_app
+        ->add_option("--firmware", o.firmware,
+                     "the firmware under test at every point, a plugin .so (run.firmware, "
+                     "docs/firmware-abi.md)")
+        ->type_name("PATH");
     m_app->add_option("--frames", o.frames, "sync periods per point (run.frames)");
     m_app->add_option("--jobs", o.jobs, "points in parallel (default 2)");
     m_app->add_option("--shard", o.shard, "K/M: the K-th of M deterministic slices");
@@ -117,6 +123,14 @@ sweep_command::sweep_command(CLI::App& app) {
 
 int sweep_command::execute() {
     sweep_options& o = m_options;
+    // The plugin is one more base setting (every point's run, the Slurm
+    // tasks, --resume and merge compare it), by its absolute path.
+    std::string plugin;
+    if (!o.firmware.empty()) {
+        plugin = cli::absolute_path(o.firmware);
+        o.sets.push_back("run.firmware=" + plugin);
+        o.firmware.clear();
+    }
     if (!o.resume.empty()) {
         if (!o.out_dir.empty() && o.out_dir != o.resume)
             return bad_input("--resume DIR writes into DIR: no other --out");
@@ -166,6 +180,7 @@ int sweep_command::execute() {
     const cli::interrupt_catcher held;
     const int failed = run_points(request, plan.points, stderr, &interrupted);
     json sweep = sweep_header(o, plan);
+    sweep["firmware"] = cli::firmware_identity_of(plugin, &error);
     sweep["complete"] = interrupted == 0;
     if (interrupted) sweep["interrupted_by"] = cli::signal_name(interrupted);
     sweep["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -24,6 +24,7 @@ struct sweep_options {
     std::vector<std::string> grid;  // KEY=V1,V2,... | KEY=LO:HI:STEP
     std::string config_file;
     std::vector<std::string> sets;  // KEY=VALUE, under every point
+    std::string firmware;           // the firmware under test (a plugin); empty: built in
     std::string frames;             // run.frames, empty: the config's
     int jobs = 2;
     std::string shard = "1/1";

@@ -119,7 +119,10 @@ json closed_form_cache::estimate(const cli::run_setup& setup) {
     const platform::platform_config config = cli::platform_config_of(setup);
     const double cpu_mhz = static_cast<double>(config.dsk.cpu_hz) / 1e6;
     double processing_ms = std::numeric_limits<double>::quiet_NaN();
-    if (config.replay_manifest.empty()) {
+    // The host estimate runs the built-in firmware; a plugin has no host
+    // entry (ABI version 1), so its points get no processing estimate.
+    const bool plugin = !setup.firmware.empty();
+    if (config.replay_manifest.empty() && !plugin) {
         const std::string key = processing_key(setup);
         auto it = m_cycles.find(key);
         if (it == m_cycles.end()) it = m_cycles.emplace(key, host_max_pair_cycles(config)).first;
@@ -131,6 +134,10 @@ json closed_form_cache::estimate(const cli::run_setup& setup) {
     json j = {{"capture_ms", round6(b.capture_ms)}, {"traffic_ms", round6(b.traffic_ms)}};
     if (std::isnan(processing_ms)) {
         j["processing_ms"] = j["need_ms"] = j["slack_ms"] = j["verdict"] = json(nullptr);
+        if (plugin)
+            j["processing_note"] =
+                "the firmware under test is a plugin without a host entry: no processing "
+                "estimate";
         return j;
     }
     j["processing_ms"] = round6(processing_ms);
