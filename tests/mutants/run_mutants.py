@@ -11,16 +11,20 @@ RelWithDebInfo, ccache with the source copy as CCACHE_BASEDIR). The build
 tree sits where the main build sits (the Makefile's build/, built with the
 repository as CCACHE_BASEDIR), so every compile line is the main build's
 and only the mutated file recompiles, even in the first tree of a run.
-Only `stereosim` and the test executables of the mutant's label are built; a
-mutant that does not compile is `stillborn`.
+Only what the mutant's checks need is built: a firmware mutant's dsp tests
+and its reference-firmware plugin (libstereosim_fw_reference.so; the
+unmutated stereosim of the main build runs it, docs/firmware-abi.md), an RTL
+mutant's rtl tests and then stereosim; a mutant that does not compile is
+`stillborn`.
 
 First a baseline: the unmutated tree, built and checked the same way (skip
 with --no-baseline); campaign rows and tests that fail there are never
 counted as kills, and make the run exit 1.
 
 Kill checks, stopping at the first that kills:
-  firmware: the smoke campaign (`stereosim faults --campaign smoke`, exit 1 =
-            killed, by the rows that broke the contract), then `ctest -L dsp`
+  firmware: the smoke campaign of its plugin (`stereosim faults --campaign
+            smoke --firmware PLUGIN --stop-on-violation`, exit 1 = killed, by
+            the rows that broke the contract before it stopped), then `ctest -L dsp`
             only if the campaign did not kill (column campaign_kills: the
             campaign alone killed it, the qualification requirement);
   rtl:      `ctest -L rtl` first (fast), then the smoke campaign.
@@ -344,9 +348,9 @@ def label_targets(src_dir, label):
     return sorted(f"{label}_{p.stem}" for p in (src_dir / "tests" / label).glob("test_*.cpp"))
 
 
-def build_tree(tree_dir, labels, jobs, log_path, with_stereosim=True):
-    """Configures (once) and builds the labels' tests, and stereosim unless
-    with_stereosim is false. Returns (ok, seconds)."""
+def build_tree(tree_dir, labels, jobs, log_path, with_stereosim=True, extra_targets=()):
+    """Configures (once) and builds the labels' tests, stereosim unless
+    with_stereosim is false, and extra_targets. Returns (ok, seconds)."""
     src, build = tree_dir / "src", tree_build_dir(tree_dir)
     env = build_env(tree_dir)
     seconds = 0.0
@@ -361,7 +365,7 @@ def build_tree(tree_dir, labels, jobs, log_path, with_stereosim=True):
         if code != 0:
             shutil.copyfile(configure_log, log_path)
             return False, seconds
-    targets = (["stereosim"] if with_stereosim else []) + \
+    targets = (["stereosim"] if with_stereosim else []) + list(extra_targets) + \
         [t for label in labels for t in label_targets(src, label)]
     command = ["cmake", "--build", build, "-j", str(jobs), "--target", *targets]
     code, build_s = run_step(command, tree_dir, log_path, BUILD_TIMEOUT_S, env)
@@ -424,22 +428,52 @@ def campaign_rows_broken(campaign_json):
     return broken
 
 
-def run_campaign(build, out_dir, campaign_jobs):
-    """The smoke campaign: (exit code or None on timeout, seconds, broken rows)."""
+def run_campaign(build, out_dir, campaign_jobs, plugin=None, binary=None, stop=False):
+    """The smoke campaign: (exit code or None on timeout, seconds, broken
+    rows). With a firmware plugin, `binary` (an unmutated stereosim) runs
+    it; `stop`: the campaign ends at its first broken row."""
     campaign_dir = out_dir / "campaign"
     shutil.rmtree(campaign_dir, ignore_errors=True)
-    code, seconds = run_step(
-        [build / "stereosim", "faults", "--campaign", "smoke", "--jobs", str(campaign_jobs),
-         "--out", campaign_dir], build, out_dir / "campaign.log", CAMPAIGN_TIMEOUT_S)
+    command = [binary or build / "stereosim", "faults", "--campaign", "smoke", "--jobs",
+               str(campaign_jobs), "--out", campaign_dir]
+    if plugin:
+        command += ["--firmware", plugin]
+    if stop:
+        command.append("--stop-on-violation")
+    code, seconds = run_step(command, build, out_dir / "campaign.log", CAMPAIGN_TIMEOUT_S)
     json_path = campaign_dir / "campaign.json"
     broken = campaign_rows_broken(json_path) if code == 1 and json_path.exists() else []
     return code, seconds, broken
 
 
-def check_campaign(result, build, out_dir, campaign_jobs, baseline):
+# A firmware mutant is the reference firmware's plugin built in its tree,
+# run by an unmutated stereosim: only dsp/ and the plugin are rebuilt.
+PLUGIN_TARGET = "stereosim_fw_reference"
+PLUGIN_PATH = Path("dsp") / "libstereosim_fw_reference.so"
+
+
+def platform_binary():
+    """The unmutated stereosim that runs the firmware mutants' plugins: the
+    main build's, or the baseline tree's."""
+    for candidate in (REPO / "build" / "stereosim",
+                      WORK_DIR / "trees" / "baseline" / "src" / "build" / "stereosim"):
+        if candidate.exists():
+            return candidate
+    raise RuntimeError("no unmutated stereosim to run the firmware plugins: build it first "
+                       "(make build) or run with the baseline")
+
+
+def check_campaign(result, build, out_dir, campaign_jobs, baseline, plugin=None):
     """The smoke campaign. Returns True when it killed the mutant: exit 1 with
-    a broken row the unmutated baseline keeps, a crash, or a timeout."""
-    code, result.campaign_s, broken = run_campaign(build, out_dir, campaign_jobs)
+    a broken row the unmutated baseline keeps, a crash, or a timeout. A
+    plugin's campaign stops at its first broken row; if that row is one the
+    baseline breaks too, it runs again whole."""
+    binary = platform_binary() if plugin else None
+    code, result.campaign_s, broken = run_campaign(build, out_dir, campaign_jobs, plugin, binary,
+                                                   stop=plugin is not None)
+    if plugin and code == 1 and broken and all(k in baseline.broken_rows for k, _ in broken):
+        code, seconds, broken = run_campaign(build, out_dir, campaign_jobs, plugin, binary)
+        result.campaign_s += seconds
     if code is None:
         result.killed_by = [f"crash: campaign timed out after {CAMPAIGN_TIMEOUT_S} s"]
         add_note(result, "campaign timeout")
@@ -620,9 +654,10 @@ def judge_mutant(mutant, result, tree, out_dir, settings, baseline):
     label = label_of(mutant.kind)
     # An RTL mutant's tests come first: they need no stereosim, whose fast
     # card evaluation may not fit a mutated netlist (below).
+    firmware = mutant.kind == "firmware"
     built, result.build_s = build_tree(tree, [label], settings.build_jobs,
-                                       out_dir / "build.log",
-                                       with_stereosim=mutant.kind == "firmware")
+                                       out_dir / "build.log", with_stereosim=False,
+                                       extra_targets=[PLUGIN_TARGET] if firmware else [])
     if not built:
         log_text = (out_dir / "build.log").read_text(errors="replace")
         in_mutated = failure_in_mutated_file(log_text, mutant.file)
@@ -636,10 +671,10 @@ def judge_mutant(mutant, result, tree, out_dir, settings, baseline):
                      first_error_line(log_text))
         return
     build, jobs = tree_build_dir(tree), settings.build_jobs
-    if mutant.kind == "firmware":
-        log(f"[{mutant.id}] smoke campaign")
+    if firmware:
+        log(f"[{mutant.id}] smoke campaign (its plugin, stopping at the first broken row)")
         result.campaign_kills = check_campaign(result, build, out_dir, settings.campaign_jobs,
-                                               baseline)
+                                               baseline, plugin=build / PLUGIN_PATH)
         killed = result.campaign_kills
         if not killed:
             log(f"[{mutant.id}] ctest -L dsp")

@@ -171,6 +171,44 @@ class Baseline(unittest.TestCase):
             self.assertEqual(result.killed_by, ["campaign:clean(seed=3): v"])
             self.assertEqual(rm.exit_code([], baseline), 1)
 
+    def test_a_firmware_mutant_is_its_plugin_run_by_the_unmutated_stereosim(self):
+        """The campaign of a firmware mutant: the platform's stereosim with
+        --firmware <the tree's plugin> --stop-on-violation; a stop on a row the
+        baseline breaks too runs it again whole."""
+        rows = [{"index": 0, "fault": "clean", "seed": 3, "ran": True, "contract_ok": False,
+                 "violations": ["v"]}]
+        with tempfile.TemporaryDirectory() as tmp:
+            root = Path(tmp)
+            platform = root / "platform"
+            platform.mkdir()
+            rows_json = json.dumps({"rows": rows})
+            (platform / "stereosim").write_text(
+                "#!/bin/sh\n"
+                f"echo \"$@\" >> {root}/calls\n"
+                f"mkdir -p \"$7\"; echo '{rows_json}' > \"$7/campaign.json\"; exit 1\n")
+            (platform / "stereosim").chmod(0o755)
+            build = root / "tree"
+            build.mkdir()
+            saved = rm.platform_binary
+            rm.platform_binary = lambda: platform / "stereosim"
+            try:
+                result = rm.Result("m", "firmware", "f", "d")
+                plugin = build / rm.PLUGIN_PATH
+                self.assertTrue(rm.check_campaign(result, build, root, 1, rm.Baseline(),
+                                                  plugin=plugin))
+                calls = (root / "calls").read_text().splitlines()
+                self.assertEqual(len(calls), 1)
+                self.assertTrue(calls[0].endswith(f"--firmware {plugin} --stop-on-violation"))
+                result = rm.Result("m", "firmware", "f", "d")
+                baseline = rm.Baseline(broken_rows={"0:clean:3"})
+                self.assertFalse(rm.check_campaign(result, build, root, 1, baseline,
+                                                   plugin=plugin))
+                calls = (root / "calls").read_text().splitlines()
+                self.assertEqual(len(calls), 3)
+                self.assertTrue(calls[2].endswith(f"--firmware {plugin}"))
+            finally:
+                rm.platform_binary = saved
+
     def test_the_eval_shape_test_alone_does_not_kill(self):
         """A fake ctest whose only failure is the lean-eval shape test: noted,
         not a kill; with a behaviour test failing beside it, killed."""
