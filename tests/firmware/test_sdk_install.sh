@@ -2,7 +2,10 @@
 # The SDK as an outside firmware project uses it (docs/firmware-abi.md):
 # cmake --install into a fresh prefix, a C-only project elsewhere that does
 # find_package(stereosim) and stereosim_add_firmware(), built there, then run
-# by the installed stereosim. Usage: test_sdk_install.sh BUILD_DIR SOURCE_DIR
+# by the installed stereosim; then the example firmware in C
+# (examples/firmware-c) built the same way and run on the default scenario,
+# where it must track the ball and keep the budget and the contract.
+# Usage: test_sdk_install.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
 build=$1
 source=$2
@@ -40,3 +43,30 @@ ref=$("$work/prefix/bin/stereosim" firmware info "$work/prefix/lib/stereosim/lib
 echo "$ref" | head -1 | grep -qx "firmware  stereosim-reference 1.0 (ABI version 1)" ||
   { echo "firmware info said: $ref"; exit 1; }
 echo "sdk: installed, an outside C firmware built against it and loaded by the installed stereosim"
+
+# The example firmware: copied out of the repository (no path back into it),
+# built against the installed SDK alone, run by the installed stereosim.
+cp -r "$source/examples/firmware-c" "$work/paper"
+rm -rf "$work/paper/build"
+cmake -S "$work/paper" -B "$work/paper/build" -DCMAKE_PREFIX_PATH="$work/prefix" \
+  > "$work/paper-configure.log"
+cmake --build "$work/paper/build" > "$work/paper-build.log" ||
+  { cat "$work/paper-build.log"; exit 1; }
+paper="$work/paper/build/libpaper_fw.so"
+"$work/prefix/bin/stereosim" run --quiet --frames 12 --firmware "$paper" --out "$work/run" ||
+  { echo "the example firmware's run exited $?"; exit 1; }
+python3 - "$work/run/report.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["tool"]["firmware"]["name"] == "paper-c", r["tool"]["firmware"]
+s = r["summary"]
+acc = s["accuracy"]
+# Independent figures: the scene's ground truth, scored by the platform.
+assert acc["frames_tracked"] >= 5, acc
+assert acc["depth_err_pct_max"] is not None and acc["depth_err_pct_max"] < 3.0, acc
+assert acc["box_err_px_max"] is not None and acc["box_err_px_max"] < 10.0, acc
+assert s["timing"]["frames_over_budget"] == 0, s["timing"]
+assert s["sync"]["unsynced_pairs_used"] == 0, s["sync"]
+print("example firmware: %d frames tracked, box error max %.2f px, depth error max %.2f %%"
+      % (acc["frames_tracked"], acc["box_err_px_max"], acc["depth_err_pct_max"]))
+PY
