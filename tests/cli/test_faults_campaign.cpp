@@ -14,13 +14,13 @@
 #include <sstream>
 #include <string>
 
-#include "tests/support/host_figures.h"
+#include "tb/app/cli/host_figures.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+using cli::without_host_figures;
 using nlohmann::json;
-using testsupport::without_host_figures;
 
 struct command_result {
     int exit_code = -1;

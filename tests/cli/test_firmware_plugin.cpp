@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "tests/support/host_figures.h"
+#include "tb/app/cli/host_figures.h"
 #include "tests/support/shell.h"
 
 namespace {
@@ -34,8 +34,8 @@ TEST(FirmwarePluginRun, TheReferenceAsAPluginRunsAsTheBuiltIn) {
     ASSERT_TRUE(built_in.exit_code == 0 || built_in.exit_code == 1) << built_in.output;
     ASSERT_EQ(plugin.exit_code, built_in.exit_code) << plugin.output;
 
-    json a = testsupport::without_host_figures(report_of(dir + "/built_in"));
-    json b = testsupport::without_host_figures(report_of(dir + "/plugin"));
+    json a = cli::without_host_figures(report_of(dir + "/built_in"));
+    json b = cli::without_host_figures(report_of(dir + "/plugin"));
     const json& fw = b["tool"]["firmware"];
     EXPECT_EQ(fw["name"], "stereosim-reference");
     EXPECT_EQ(fw["abi_version"], 1);
@@ -90,8 +90,8 @@ TEST(FirmwarePluginRun, ACampaignOfThePluginJudgesTheSameRuns) {
         stereosim("faults --campaign smoke --keep-runs" + match + dir + "/plugin" + plugin));
     ASSERT_EQ(a.exit_code, 0) << a.output;
     ASSERT_EQ(b.exit_code, 0) << b.output;
-    json built_in = testsupport::without_host_figures(campaign_of(dir + "/built_in"));
-    json loaded = testsupport::without_host_figures(campaign_of(dir + "/plugin"));
+    json built_in = cli::without_host_figures(campaign_of(dir + "/built_in"));
+    json loaded = cli::without_host_figures(campaign_of(dir + "/plugin"));
     EXPECT_TRUE(built_in["firmware"]["file"].is_null());
     EXPECT_EQ(loaded["firmware"]["file"], REFERENCE_FIRMWARE);
     ASSERT_EQ(loaded["rows"].size(), 3u);

@@ -18,13 +18,13 @@
 #include <string>
 #include <vector>
 
-#include "tests/support/host_figures.h"
+#include "tb/app/cli/host_figures.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+using cli::without_host_figures;
 using nlohmann::json;
-using testsupport::without_host_figures;
 
 // stereosim with `args`, its stdout and stderr into one pipe.
 struct child {

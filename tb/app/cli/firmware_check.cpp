@@ -11,6 +11,7 @@
 
 #include "dsp/plugin/reference_firmware.h"
 #include "tb/app/cli/child_run.h"
+#include "tb/app/cli/host_figures.h"
 #include "tb/app/cli/run_command.h"
 #include "tb/firmware/plugin.h"
 
@@ -122,26 +123,6 @@ std::string first_difference(const json& a, const json& b, const std::string& pa
     }
     if (a != b) return here + " (" + a.dump() + " / " + b.dump() + ")";
     return "";
-}
-
-json without_host_figures(const json& j) {
-    if (j.is_object()) {
-        json out = json::object();
-        for (auto it = j.begin(); it != j.end(); ++it) {
-            const std::string& key = it.key();
-            if (key.find("wall") != std::string::npos || key == "ratio" ||
-                key.find("snapshot") != std::string::npos)
-                continue;
-            out[key] = without_host_figures(it.value());
-        }
-        return out;
-    }
-    if (j.is_array()) {
-        json out = json::array();
-        for (const json& x : j) out.push_back(without_host_figures(x));
-        return out;
-    }
-    return j;
 }
 
 int check_firmware(const std::string& binary, const std::string& path) {

@@ -18,10 +18,6 @@ namespace cli {
 std::string first_difference(const nlohmann::json& a, const nlohmann::json& b,
                              const std::string& path = "");
 
-// A report without what depends on the host's speed (wall times, ratios) or
-// on how the run was started (from a snapshot or not).
-nlohmann::json without_host_figures(const nlohmann::json& report);
-
 // Runs the check with `binary` (this stereosim) on the plugin at `path`
 // (empty: the built-in firmware). Prints what it compared; returns 0 if
 // every pair agreed, 1 with one line naming the first difference, 2 if the

@@ -1,8 +1,8 @@
-#include "tests/support/host_figures.h"
+#include "tb/app/cli/host_figures.h"
 
 #include <string>
 
-namespace testsupport {
+namespace cli {
 
 nlohmann::json without_host_figures(const nlohmann::json& j) {
     if (j.is_object()) {
@@ -24,4 +24,4 @@ nlohmann::json without_host_figures(const nlohmann::json& j) {
     return j;
 }
 
-}  // namespace testsupport
+}  // namespace cli
