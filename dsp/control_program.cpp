@@ -515,8 +515,10 @@ void control_program::process_buffer(int buffer) {
             m_awaiting_in_step = false;
             report(firmware_event::in_step, pair, verdict);
         }
-        const uint8_t* left = m_hal->memory(left_address(buffer), frame_bytes());
-        const uint8_t* right = m_hal->memory(right_address(buffer), frame_bytes());
+        const uint32_t left_at = left_address(buffer), right_at = right_address(buffer);
+        const uint8_t* left = m_hal->memory(left_at, frame_bytes());
+        const uint8_t* right = m_hal->memory(right_at, frame_bytes());
+        report(firmware_event::frames_used, pair, left_at, right_at);
         const int w = static_cast<int>(m_width), h = static_cast<int>(m_height);
         const frame_output out =
             m_controller.process_pair(gray_cplane{left, w, h, w}, gray_cplane{right, w, h, w});

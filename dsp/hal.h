@@ -47,6 +47,8 @@ enum class firmware_event : uint8_t {
     stopped,          // the frame loop ended; value: pairs processed
     hard_error,       // the firmware gave up on the card (docs/fault-contract.md): OE low, no
                       // capture; value: the last rearm_cause, detail: consecutive failures
+    frames_used,      // the pipeline reads the pair's frames; value / detail: the left / right
+                      // frame's address (the ABI's left / right)
 };
 
 constexpr const char* firmware_event_name(firmware_event e) {
@@ -85,6 +87,8 @@ constexpr const char* firmware_event_name(firmware_event e) {
             return "stopped";
         case firmware_event::hard_error:
             return "hard_error";
+        case firmware_event::frames_used:
+            return "frames_used";
     }
     return "?";
 }

@@ -105,7 +105,11 @@ int services_hal::wait_for_interrupt() {
 
 void services_hal::report(const event_record& e) {
     stereosim_event out{static_cast<uint32_t>(e.kind), e.pair, e.value, e.detail, 0, 0};
-    if (e.kind == firmware_event::pair_captured && m_program != nullptr) {
+    if (e.kind == firmware_event::frames_used) {
+        out.left = e.value;
+        out.right = e.detail;
+        out.value = out.detail = 0;
+    } else if (e.kind == firmware_event::pair_captured && m_program != nullptr) {
         const int buffer = static_cast<int>(e.detail);
         out.left = m_program->left_address(buffer);
         out.right = m_program->right_address(buffer);

@@ -390,9 +390,13 @@ void fw_release(paper_fw* fw, int buffer) {
             fw->awaiting_in_step = 0;
             fw_event(fw, STEREOSIM_EV_IN_STEP, pair, verdict, 0);
         }
-        /* Left, then right: the platform sees which frames are read, in order. */
+        /* The frames the pipeline reads, named in FRAMES_USED: rule 7 checks
+         * they are the pair's own and that these are the frames read. */
         const uint8_t* left = fw->hw->memory(fw->hw->ctx, e.left, bytes);
         const uint8_t* right = fw->hw->memory(fw->hw->ctx, e.right, bytes);
+        e.kind = STEREOSIM_EV_FRAMES_USED;
+        e.value = e.detail = 0;
+        fw->hw->report(fw->hw->ctx, &e);
         vision_pair(fw, left, right, &r);
         r.pair = pair;
         r.stage_cycles[ST_CAPTURE] += CAPTURE_CYCLES;

@@ -128,7 +128,7 @@ period_budget measure_period(const run_view& run, size_t k, const period_sample&
 void count_drops(const run_view& run, budget_report& b) {
     const std::vector<simtime::ticks>& ready = run.isl.irq_rises(0);
     for (const fw_event& e : run.probe.fw_events()) {
-        if (e.event.kind != dsp::firmware_event::pair_dropped) continue;
+        if (e.event.kind != STEREOSIM_EV_PAIR_DROPPED) continue;
         for (uint32_t n = e.event.pair - e.event.value; n < e.event.pair; ++n) {
             if (n == 0 || n > ready.size()) continue;
             const simtime::ticks t = ready[n - 1];

@@ -61,12 +61,7 @@ uint64_t kernel_cycles(void* ctx, const stereosim_kernel_profile* kernel,
 }
 
 void report(void* ctx, const stereosim_event* e) {
-    dsp::event_record r;
-    r.kind = static_cast<dsp::firmware_event>(e->kind);
-    r.pair = e->pair;
-    r.value = e->value;
-    r.detail = e->detail;
-    probe_of(ctx).report(r, e->left, e->right);
+    probe_of(ctx).report(*e);
 }
 
 void report_result(void* ctx, const stereosim_result* r) {

@@ -113,10 +113,8 @@ void platform_top::firmware(dsp::hal& hal) {
     // EMIF ratio, dsp/kernel_costs.h) and compiled-C factor.
     m_probe = std::make_unique<probe_hal>(hal, m_timeline, cost_model_of(m_config));
     m_probe->set_event_hook([this](const fw_event& e) { on_firmware_event(e); });
-    m_probe->set_memory_hook([this](uint32_t, uint32_t bytes, const uint8_t* p) {
-        const auto frame =
-            static_cast<uint32_t>(m_island->frame_width() * m_island->frame_height());
-        if (p && bytes == frame) m_frame_reads.push_back(fnv1a(p, bytes));
+    m_probe->set_memory_hook([this](uint32_t address, uint32_t bytes) {
+        m_reads.push_back({address, bytes});
     });
     m_probe->start();
     // The firmware behind the ABI: it sees the board, its key values and the
@@ -141,6 +139,7 @@ void platform_top::firmware(dsp::hal& hal) {
     // The CPU thread starts the firmware at time 0.
     firmware_entered(0, -1, m_firmware->stage_names, static_cast<int>(m_firmware->stage_count));
     m_firmware->run(m_instance);
+    m_probe->halted();
     firmware_left();
     m_firmware->destroy(m_instance);
     m_instance = nullptr;
@@ -219,33 +218,66 @@ int64_t platform_top::frame_before(int camera, simtime::ticks tick) const {
 }
 
 void platform_top::on_firmware_event(const fw_event& e) {
-    if (e.event.kind == dsp::firmware_event::pair_processed) check_used(e.event.pair);
-    if (e.event.kind != dsp::firmware_event::pair_captured) return;
+    if (e.event.kind == STEREOSIM_EV_FRAMES_USED) check_used(e.event);
+    if (e.event.kind == STEREOSIM_EV_PAIR_PROCESSED) check_processed(e.event.pair);
+    if (e.event.kind != STEREOSIM_EV_PAIR_CAPTURED) return;
     captured_pair p;
     p.pair = e.event.pair;
     p.buffer = static_cast<int>(e.event.detail);
-    p.address[0] = e.left;
-    p.address[1] = e.right;
+    p.address[0] = e.event.left;
+    p.address[1] = e.event.right;
     p.verdict = e.event.value;
     p.tick = e.tick;
     check_captured(p);
     m_captured.push_back(p);
-    m_frame_reads.clear();  // the firmware's own reads of this pair start now
+    m_reads.clear();  // the firmware's reads of this pair start now
 }
 
-// Pair identity at the point of use (docs/fault-contract.md, rule 8).
-void platform_top::check_used(uint32_t pair) {
+// Pair identity at the point of use (docs/fault-contract.md, rule 7): the
+// frames at the addresses the report names, as they are when the pipeline
+// reads them, against the sensors' frames of the pair it names.
+void platform_top::check_used(const stereosim_event& frames_used) {
     used_pair u;
-    u.pair = pair;
+    u.pair = frames_used.pair;
+    u.reported = true;
+    u.address[0] = frames_used.left;
+    u.address[1] = frames_used.right;
     const captured_pair* named = nullptr;
     for (const captured_pair& c : m_captured)
-        if (c.pair == pair) named = &c;
-    const size_t reads = m_frame_reads.size();
-    if (named && reads >= 2 && named->sensor_checksum_known[0] && named->sensor_checksum_known[1]) {
+        if (c.pair == u.pair) named = &c;
+    const uint32_t bytes =
+        static_cast<uint32_t>(m_island->frame_width() * m_island->frame_height());
+    const uint8_t* left = m_probe->peek(u.address[0], bytes);
+    const uint8_t* right = m_probe->peek(u.address[1], bytes);
+    if (named && named->sensor_checksum_known[0] && named->sensor_checksum_known[1]) {
         u.checked = true;
-        u.matches = m_frame_reads[reads - 2] == named->sensor_checksum[0] &&
-                    m_frame_reads[reads - 1] == named->sensor_checksum[1];
+        u.matches = left && right && fnv1a(left, bytes) == named->sensor_checksum[0] &&
+                    fnv1a(right, bytes) == named->sensor_checksum[1];
     }
+    m_used.push_back(u);
+}
+
+// At pair_processed: the frames named must be frames the firmware read
+// (memory() since the pair was captured), or the report names frames the
+// pipeline did not use; a pair whose frames were never named is kept
+// unreported.
+void platform_top::check_processed(uint32_t pair) {
+    const uint32_t bytes =
+        static_cast<uint32_t>(m_island->frame_width() * m_island->frame_height());
+    const auto was_read = [&](uint32_t address) {
+        for (const memory_read& r : m_reads)
+            if (r.address <= address && uint64_t{address} + bytes <= uint64_t{r.address} + r.bytes)
+                return true;
+        return false;
+    };
+    for (used_pair& u : m_used) {
+        if (u.pair != pair || !u.reported) continue;
+        u.read = was_read(u.address[0]) && was_read(u.address[1]);
+        u.matches = u.matches && u.read;
+        return;
+    }
+    used_pair u;
+    u.pair = pair;
     m_used.push_back(u);
 }
 
@@ -259,7 +291,7 @@ void platform_top::check_captured(captured_pair& p) {
     for (int c = 0; c < 2; ++c) {
         // Both frames at one address: the report named none.
         if (p.address[0] == p.address[1]) break;
-        const uint8_t* memory = m_probe->memory(p.address[c], bytes);
+        const uint8_t* memory = m_probe->peek(p.address[c], bytes);
         if (!memory) continue;
         p.memory_checksum[c] = fnv1a(memory, bytes);
         if (p.ready < 0) continue;

@@ -52,13 +52,23 @@ struct captured_pair {
     uint8_t differing_bits[2] = {};     // OR of (memory XOR sensor) over the frame
 };
 
-// A pair the firmware processed (its pair_processed report), checked at the
-// point of use: the two frames it read from memory after taking the pair
-// (left, then right) against the sensors' frames of the pair it names.
+// The frames the firmware used for a pair, checked at its FRAMES_USED report
+// (docs/fault-contract.md, rule 7): the two frames at the addresses it names
+// against the sensors' frames of the pair it names. A pair_processed with no
+// FRAMES_USED for its pair since the pair was captured is kept too, with
+// `reported` false: rule 7 could not judge it, which is a violation.
 struct used_pair {
     uint32_t pair = 0;
-    bool checked = false;  // two frame reads and both sensors' checksums known
-    bool matches = false;
+    bool reported = false;  // FRAMES_USED came before pair_processed
+    bool checked = false;   // the pair was captured and both sensors' checksums are known
+    bool matches = false;   // the frames named are the pair's own and were read
+    bool read = false;      // memory() covered both named frames since the pair was captured
+    uint32_t address[2] = {};
+};
+
+// A memory() the firmware asked for (what it reads of DSP memory).
+struct memory_read {
+    uint32_t address = 0, bytes = 0;
 };
 
 class platform_top {
@@ -132,7 +142,8 @@ class platform_top {
     void firmware(dsp::hal& hal);
     void on_firmware_event(const fw_event& e);
     void check_captured(captured_pair& pair);
-    void check_used(uint32_t pair);
+    void check_used(const stereosim_event& frames_used);
+    void check_processed(uint32_t pair);
 
     platform_config m_config;
     scene::sequence m_sequence;
@@ -153,8 +164,8 @@ class platform_top {
     bool m_init_failed = false;
     std::string m_init_error;
     std::vector<captured_pair> m_captured;
-    std::vector<uint64_t> m_frame_reads;  // checksums of frame-sized reads since the last take
     std::vector<used_pair> m_used;
+    std::vector<memory_read> m_reads;  // the firmware's memory() since the last pair_captured
     simtime::ticks m_end_tick = 0;
     double m_wall_s = 0.0;
     std::function<void(int)> m_progress;

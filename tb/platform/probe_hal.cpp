@@ -87,9 +87,8 @@ void probe_hal::write32(uint32_t address, uint32_t value) {
 }
 
 uint8_t* probe_hal::memory(uint32_t address, uint32_t bytes) {
-    uint8_t* p = m_inner.memory(address, bytes);
-    if (m_memory_hook) m_memory_hook(address, bytes, p);
-    return p;
+    if (m_memory_hook) m_memory_hook(address, bytes);
+    return m_inner.memory(address, bytes);
 }
 
 void probe_hal::set_interrupt_enable(uint32_t ier) {
@@ -118,13 +117,25 @@ int probe_hal::wait_for_interrupt() {
     return n;
 }
 
-void probe_hal::report(const dsp::event_record& e, uint32_t left, uint32_t right) {
+void probe_hal::report(const dsp::event_record& e) {
+    report(stereosim_event{static_cast<uint32_t>(e.kind), e.pair, e.value, e.detail, 0, 0});
+}
+
+void probe_hal::report(const stereosim_event& e) {
     enter();
-    const fw_event te{now(), e, left, right};
+    const fw_event te{now(), e};
     if (m_hook) m_hook(te);
     m_fw_events.push_back(te);
     m_events.add(te.tick, event_kind::firmware, static_cast<uint8_t>(e.kind), e.pair, e.value);
-    m_inner.report(e);
+    // The C6416 model keeps the reports it knows (its own tests read them).
+    if (e.kind <= STEREOSIM_EV_HARD_ERROR) {
+        dsp::event_record r;
+        r.kind = static_cast<dsp::firmware_event>(e.kind);
+        r.pair = e.pair;
+        r.value = e.value;
+        r.detail = e.detail;
+        m_inner.report(r);
+    }
     leave();
 }
 

@@ -15,6 +15,7 @@
 #include "dsp/controller.h"
 #include "dsp/hal.h"
 #include "model/time/ticks.h"
+#include "tb/platform/firmware_report.h"
 #include "tb/platform/island/timeline.h"
 
 namespace platform {
@@ -28,13 +29,6 @@ struct charge_record {
 
 struct tick_interval {
     simtime::ticks begin = 0, end = 0;
-};
-
-struct fw_event {
-    simtime::ticks tick = 0;
-    dsp::event_record event;
-    // A captured pair's frames in DSP memory, as its report names them.
-    uint32_t left = 0, right = 0;
 };
 
 // A register write of the DSP as it completed on the bus.
@@ -52,8 +46,8 @@ struct fw_result {
 class probe_hal final : public dsp::hal {
   public:
     using event_hook = std::function<void(const fw_event&)>;
-    // Every memory() the firmware asks for, with what it points at then.
-    using memory_hook = std::function<void(uint32_t address, uint32_t bytes, const uint8_t*)>;
+    // Every memory() the firmware asks for: what it reads of DSP memory.
+    using memory_hook = std::function<void(uint32_t address, uint32_t bytes)>;
 
     // The firmware's kernels are priced with `model` (kernel_cycles).
     probe_hal(dsp::hal& inner, timeline& events, const dsp::c64x::cost_model& model)
@@ -64,6 +58,8 @@ class probe_hal final : public dsp::hal {
     // Called by report() before the event is recorded (scoreboard checks).
     void set_event_hook(event_hook hook) { m_hook = std::move(hook); }
     void set_memory_hook(memory_hook hook) { m_memory_hook = std::move(hook); }
+    // The platform's own look at DSP memory: not a read of the firmware's.
+    const uint8_t* peek(uint32_t address, uint32_t bytes) { return m_inner.memory(address, bytes); }
     // The firmware's stage names, for a crash report (firmware_crash.h).
     void set_stage_names(const char* const* names, int count) {
         m_stage_names = names;
@@ -85,9 +81,9 @@ class probe_hal final : public dsp::hal {
     uint32_t interrupt_flags() override;
     void clear_interrupt_flags(uint32_t mask) override;
     int wait_for_interrupt() override;
-    void report(const dsp::event_record& e) override { report(e, 0, 0); }
-    // A report with the frame addresses of a captured pair (the firmware ABI's).
-    void report(const dsp::event_record& e, uint32_t left, uint32_t right);
+    void report(const dsp::event_record& e) override;
+    // A report as the firmware ABI has it (the frames' addresses included).
+    void report(const stereosim_event& e);
     void report_result(uint32_t pair, const dsp::frame_output& out) override;
     bool stop_requested() override;
 
@@ -96,6 +92,15 @@ class probe_hal final : public dsp::hal {
     const std::vector<tick_interval>& sleeps() const { return m_sleeps; }
     // Tick the CPU went to sleep if it is asleep now, else -1.
     simtime::ticks asleep_since() const { return m_asleep_since; }
+    // The firmware's run() returned (a give-up, a missing card): the CPU
+    // does no more work, so the budget counts it idle from now on.
+    void halted() {
+        m_asleep_since = m_halted_at = now();
+        m_halted_on_request = stop_requested();
+    }
+    // When run() returned, -1 while it runs; whether a stop was asked for then.
+    simtime::ticks halted_at() const { return m_halted_at; }
+    bool halted_on_request() const { return m_halted_on_request; }
     const std::vector<fw_event>& fw_events() const { return m_fw_events; }
     // Every write of the card's CTRL (ENABLE: OE on / off), the truth the
     // contract judges the firmware's re-arms by, whatever it reports.
@@ -133,6 +138,8 @@ class probe_hal final : public dsp::hal {
     uint64_t m_open_cycles = 0;
     int m_open_stage = -1;
     simtime::ticks m_asleep_since = -1;
+    simtime::ticks m_halted_at = -1;
+    bool m_halted_on_request = false;
     bool m_started = false;
     std::chrono::steady_clock::time_point m_left;
     double m_firmware_wall_s = 0.0;

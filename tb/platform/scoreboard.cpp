@@ -126,7 +126,7 @@ std::vector<platform::frame_record> check_pairs(const platform_top& top, scorebo
     std::set<uint32_t> captured, rejected;
     for (const captured_pair& c : top.captured()) captured.insert(c.pair);
     for (const fw_event& e : top.probe().fw_events()) {
-        if (e.event.kind == dsp::firmware_event::pair_rejected) rejected.insert(e.event.pair);
+        if (e.event.kind == STEREOSIM_EV_PAIR_REJECTED) rejected.insert(e.event.pair);
     }
     std::multimap<uint32_t, const fw_result*> results_by_pair;
     for (const fw_result& res : top.probe().results()) results_by_pair.emplace(res.pair, &res);
@@ -179,8 +179,8 @@ void count_verdicts(const platform_top& top, scoreboard_report& r) {
     const island& isl = top.cycle_island();
     r.card_sync_errors = static_cast<int>(isl.irq_rises(1).size());
     for (const fw_event& e : top.probe().fw_events()) {
-        if (e.event.kind == dsp::firmware_event::sync_error) ++r.firmware_sync_errors;
-        if (e.event.kind == dsp::firmware_event::in_step && r.firmware_in_step_pair < 0)
+        if (e.event.kind == STEREOSIM_EV_SYNC_ERROR) ++r.firmware_sync_errors;
+        if (e.event.kind == STEREOSIM_EV_IN_STEP && r.firmware_in_step_pair < 0)
             r.firmware_in_step_pair = e.event.pair;
     }
 }

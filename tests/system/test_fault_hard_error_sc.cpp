@@ -29,18 +29,18 @@ TEST(FaultHardError, FirmwareGivesUpOnADeadSensorWithinTheBound) {
     simtime::ticks hard_error = -1, stopped = -1;
     int hard_errors = 0, rearms = 0, sync_errors_before = 0;
     for (const platform::fw_event& e : events) {
-        if (e.event.kind == dsp::firmware_event::hard_error) {
+        if (e.event.kind == STEREOSIM_EV_HARD_ERROR) {
             ++hard_errors;
             hard_error = e.tick;
             EXPECT_EQ(e.event.value, static_cast<uint32_t>(dsp::rearm_cause::hard_error));
             EXPECT_EQ(e.event.detail, 2u);  // the second consecutive card hard error
         }
-        if (e.event.kind == dsp::firmware_event::card_rearmed) {
+        if (e.event.kind == STEREOSIM_EV_CARD_REARMED) {
             ++rearms;
             EXPECT_EQ(e.event.value, static_cast<uint32_t>(dsp::rearm_cause::hard_error));
         }
-        if (e.event.kind == dsp::firmware_event::sync_error && hard_error < 0) ++sync_errors_before;
-        if (e.event.kind == dsp::firmware_event::stopped) stopped = e.tick;
+        if (e.event.kind == STEREOSIM_EV_SYNC_ERROR && hard_error < 0) ++sync_errors_before;
+        if (e.event.kind == STEREOSIM_EV_STOPPED) stopped = e.tick;
     }
     ASSERT_EQ(hard_errors, 1);
     // Two card hard errors of RETRY_LIMIT + 1 = 3 failed checks each, one re-arm between.

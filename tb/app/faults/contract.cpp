@@ -342,6 +342,7 @@ void invariants(const run_observation& run, verdict* v, bool allow_stale) {
                 " overflow(s) reported but not followed by the configured re-arm "
                 "(rearm_on_overflow: an OE restart within " +
                 std::to_string(static_cast<int>(rearm_window_ms)) + " ms)");
+    for (const std::string& missing : run.missing_reports) violate(missing);
     if (run.identity_mismatches > 0)
         violate("rule 7: " + std::to_string(run.identity_mismatches) +
                 " pair(s) processed with frames that are not the pair's own (pairs " +

@@ -186,6 +186,7 @@ json fault_run_json(const fault_run_result& r) {
         {"identity_checked", run.identity_checked},
         {"identity_mismatches", run.identity_mismatches},
         {"mismatched_pairs", run.mismatched_pairs},
+        {"missing_reports", run.missing_reports},
         {"card_sync_errors", run.card_sync_errors},
         {"card_overflows", run.card_overflows},
         {"firmware_sync_errors", run.firmware_sync_errors},
@@ -234,6 +235,7 @@ run_observation run_of(const json& j) {
     run.identity_checked = integer(j, "identity_checked");
     run.identity_mismatches = integer(j, "identity_mismatches");
     run.mismatched_pairs = pair_list(j, "mismatched_pairs");
+    run.missing_reports = j.value("missing_reports", json::array()).get<std::vector<std::string>>();
     run.card_sync_errors = integer(j, "card_sync_errors");
     run.card_overflows = integer(j, "card_overflows");
     run.firmware_sync_errors = integer(j, "firmware_sync_errors");

@@ -127,6 +127,9 @@ struct run_observation {
     // each processed pair against the sensors' frames of the pair it names.
     int identity_checked = 0, identity_mismatches = 0;
     std::vector<uint32_t> mismatched_pairs;  // the first few
+    // Reports a rule needs that the firmware never sent, each one line
+    // naming the report and the rule (report_protocol.h).
+    std::vector<std::string> missing_reports;
     int card_sync_errors = 0, card_overflows = 0, firmware_sync_errors = 0;
     int oe_starts = 0, rearms = 0;
     int unsynced_pairs_used = 0;  // scoreboard: processed pairs out of step by truth

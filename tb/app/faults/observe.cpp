@@ -3,6 +3,8 @@
 #include "tb/app/faults/fault_report.h"
 #include "tb/app/faults/pair_accounting.h"
 #include "tb/app/faults/recovery_rule.h"
+#include "tb/app/faults/report_protocol.h"
+#include "tb/platform/firmware_report.h"
 
 #include <algorithm>
 #include <cmath>
@@ -144,7 +146,7 @@ bool attributable(const platform::platform_top& top, const platform::scoreboard_
 // The pair numbers a pair_dropped report names ([pair - count, pair)),
 // clipped to the pairs the card forwarded: a firmware that garbles the
 // report must not make the testbench enumerate billions of numbers.
-std::vector<uint32_t> dropped_by(const dsp::event_record& e, size_t forwarded) {
+std::vector<uint32_t> dropped_by(const stereosim_event& e, size_t forwarded) {
     std::vector<uint32_t> out;
     const uint64_t end = std::min<uint64_t>(e.pair, forwarded + 1);
     const uint64_t begin = e.value < e.pair ? e.pair - e.value : 1;
@@ -178,8 +180,8 @@ bool explains(const platform::platform_top& top, const platform::scoreboard_repo
 // ticks after them, counted up to `until` (the give-up, or a window before
 // the end). Pulses that the CPU saw as one latched flag share a report.
 int unreported(const std::vector<simtime::ticks>& pulses,
-               const std::vector<platform::fw_event>& events, dsp::firmware_event kind,
-               simtime::ticks window, simtime::ticks until) {
+               const std::vector<platform::fw_event>& events, uint32_t kind, simtime::ticks window,
+               simtime::ticks until) {
     int missing = 0;
     for (simtime::ticks t : pulses) {
         if (t > until) break;
@@ -204,7 +206,7 @@ std::set<uint32_t> reported_dropped(const platform::scoreboard_report& score,
                                     const std::vector<platform::fw_event>& events) {
     std::set<uint32_t> dropped;
     for (const platform::fw_event& e : events)
-        if (e.event.kind == dsp::firmware_event::pair_dropped)
+        if (e.event.kind == STEREOSIM_EV_PAIR_DROPPED)
             for (uint32_t n : dropped_by(e.event, score.pairs.size())) dropped.insert(n);
     return dropped;
 }
@@ -214,9 +216,9 @@ std::set<uint32_t> reported_dropped(const platform::scoreboard_report& score,
 void pair_times(const std::vector<platform::fw_event>& events, simtime::ticks onset,
                 fault_observation* f) {
     for (const platform::fw_event& done : events) {
-        if (done.event.kind != dsp::firmware_event::pair_processed) continue;
+        if (done.event.kind != STEREOSIM_EV_PAIR_PROCESSED) continue;
         for (const platform::fw_event& taken : events) {
-            if (taken.event.kind != dsp::firmware_event::pair_captured ||
+            if (taken.event.kind != STEREOSIM_EV_PAIR_CAPTURED ||
                 taken.event.pair != done.event.pair || taken.tick > done.tick)
                 continue;
             const double ms = to_ms(done.tick - taken.tick);
@@ -234,17 +236,16 @@ void pair_times(const std::vector<platform::fw_event>& events, simtime::ticks on
 // names this fault's effect at or after it.
 void find_report(const fault_spec& s, const std::vector<platform::fw_event>& events,
                  simtime::ticks detect, fault_observation* f) {
-    using ev = dsp::firmware_event;
     for (const platform::fw_event& e : events) {
         if (e.tick < detect) continue;
-        const ev k = e.event.kind;
-        const bool names_it =
-            k == ev::hard_error || (is_sensor_fault(s.type)           ? k == ev::sync_error
-                                    : s.type == fault_type::emif_wait ? k == ev::overflow
-                                                                      : k == ev::pair_dropped);
+        const uint32_t k = e.event.kind;
+        const uint32_t names_effect = is_sensor_fault(s.type)           ? STEREOSIM_EV_SYNC_ERROR
+                                      : s.type == fault_type::emif_wait ? STEREOSIM_EV_OVERFLOW
+                                                                        : STEREOSIM_EV_PAIR_DROPPED;
+        const bool names_it = k == STEREOSIM_EV_HARD_ERROR || k == names_effect;
         if (!names_it) continue;
         f->reported = true;
-        f->reported_by = dsp::firmware_event_name(k);
+        f->reported_by = platform::report_name(k);
         f->report_ms = to_ms(e.tick);
         return;
     }
@@ -279,20 +280,20 @@ void count_run(const run_sources& in, run_observation* run) {
     run->max_depth_err_pct = in.score.summary.max_abs_depth_err_pct;
     for (const platform::fw_event& e : in.events) {
         switch (e.event.kind) {
-            case dsp::firmware_event::pair_rejected:
+            case STEREOSIM_EV_PAIR_REJECTED:
                 ++run->pairs_rejected;
                 break;
-            case dsp::firmware_event::pair_dropped:
+            case STEREOSIM_EV_PAIR_DROPPED:
                 run->pairs_dropped +=
                     static_cast<int>(dropped_by(e.event, in.score.pairs.size()).size());
                 break;
-            case dsp::firmware_event::sync_error:
+            case STEREOSIM_EV_SYNC_ERROR:
                 ++run->firmware_sync_errors;
                 break;
-            case dsp::firmware_event::card_rearmed:
+            case STEREOSIM_EV_CARD_REARMED:
                 ++run->rearms;
                 break;
-            case dsp::firmware_event::hard_error:
+            case STEREOSIM_EV_HARD_ERROR:
                 if (!run->hard_error) run->hard_error_ms = to_ms(e.tick);
                 run->hard_error = true;
                 break;
@@ -329,7 +330,7 @@ simtime::ticks detect_fault(const run_sources& in, const fault_spec& s, simtime:
             }
     } else {
         for (const platform::fw_event& e : in.events)
-            if (e.event.kind == dsp::firmware_event::pair_dropped && e.tick >= onset) {
+            if (e.event.kind == STEREOSIM_EV_PAIR_DROPPED && e.tick >= onset) {
                 f->detected_by = "pair_dropped";
                 return e.tick;
             }
@@ -386,7 +387,7 @@ void observe_pairs(const run_sources& in, simtime::ticks onset, fault_observatio
         f->stale_pairs_used += repeated;
     }
     for (const platform::fw_event& e : in.events)
-        if (e.event.kind == dsp::firmware_event::pair_dropped && e.tick >= onset) {
+        if (e.event.kind == STEREOSIM_EV_PAIR_DROPPED && e.tick >= onset) {
             for (uint32_t n : dropped_by(e.event, in.score.pairs.size()))
                 f->dropped_pairs.push_back(n);
             f->pairs_dropped = static_cast<int>(f->dropped_pairs.size());
@@ -417,7 +418,7 @@ fault_observation observe_fault(const run_sources& in, const fault_spec& s, size
         f.detect_ms = to_ms(detect);
         f.frames_to_detect = static_cast<int>((detect - *onset) / in.period);
         for (const platform::fw_event& e : in.events)
-            if (e.event.kind == dsp::firmware_event::sync_error && e.tick >= detect) {
+            if (e.event.kind == STEREOSIM_EV_SYNC_ERROR && e.tick >= detect) {
                 f.causes = e.event.value & 0xFFu;
                 break;
             }
@@ -468,7 +469,7 @@ int unrearmed_overflows(const run_sources& in, simtime::ticks stop) {
     const auto window = static_cast<simtime::ticks>(rearm_window_ms * 1e6 * simtime::ticks_per_ns);
     int missing = 0;
     for (const platform::fw_event& e : in.events) {
-        if (e.event.kind != dsp::firmware_event::overflow) continue;
+        if (e.event.kind != STEREOSIM_EV_OVERFLOW) continue;
         if (e.tick >= stop || e.tick + window > in.top.end_tick()) continue;
         bool restarted = false;
         for (const platform::start_check& c : in.score.starts)
@@ -499,7 +500,7 @@ void observe_run_rules(const run_sources& in, const std::vector<fault_spec>& spe
         static_cast<simtime::ticks>((1.0 + slow_factor(specs)) * static_cast<double>(in.period));
     simtime::ticks stop = in.top.end_tick();
     for (const platform::fw_event& e : in.events)
-        if (e.event.kind == dsp::firmware_event::hard_error) stop = std::min(stop, e.tick);
+        if (e.event.kind == STEREOSIM_EV_HARD_ERROR) stop = std::min(stop, e.tick);
     const simtime::ticks until = std::min(stop, in.top.end_tick() - window);
     std::vector<forwarded_pair> forwarded;
     for (const platform::pair_check& p : in.score.pairs)
@@ -519,19 +520,14 @@ void observe_run_rules(const run_sources& in, const std::vector<fault_spec>& spe
             run->failed_checks_before_give_up += t > last_good && t <= stop;
     }
     run->unreported_sync_errors =
-        unreported(in.sync_errors, in.events, dsp::firmware_event::sync_error, window, until);
+        unreported(in.sync_errors, in.events, STEREOSIM_EV_SYNC_ERROR, window, until);
     run->unreported_overflows =
-        unreported(in.overflows, in.events, dsp::firmware_event::overflow, window, until);
-    bool awaiting = false;  // an OE raise not yet followed by in_step
-    for (const platform::fw_event& e : in.events) {
-        if (e.event.kind == dsp::firmware_event::oe_raised) awaiting = true;
-        if (e.event.kind == dsp::firmware_event::in_step) awaiting = false;
-        if (e.event.kind == dsp::firmware_event::pair_processed && awaiting) {
-            ++run->unreported_in_step;
-            awaiting = false;
-        }
-    }
-    if (platform::program_config(in.top.config()).rearm_on_overflow)
+        unreported(in.overflows, in.events, STEREOSIM_EV_OVERFLOW, window, until);
+    const protocol_inputs protocol = gather_protocol_inputs(in.top, in.events, window, until);
+    run->unreported_in_step = in_step_unreported(protocol);
+    for (const missing_report& m : find_missing_reports(protocol))
+        run->missing_reports.push_back(violation_text(m));
+    if (in.top.firmware_policy().rearm_on_overflow != 0)
         run->unrearmed_overflows = unrearmed_overflows(in, stop);
     for (const platform::used_pair& u : in.top.used_pairs()) {
         if (!u.checked) continue;

@@ -33,4 +33,11 @@ recovery_inputs gather_recovery_inputs(const platform::platform_top& top,
                                        const std::vector<fault_spec>& specs,
                                        const std::vector<simtime::ticks>& onsets);
 
+struct protocol_inputs;
+// The reporting protocol's inputs from the run (report_protocol_inputs.cpp):
+// reports due `window` after their cause, up to `until`.
+protocol_inputs gather_protocol_inputs(const platform::platform_top& top,
+                                       const std::vector<platform::fw_event>& events,
+                                       simtime::ticks window, simtime::ticks until);
+
 }  // namespace faults

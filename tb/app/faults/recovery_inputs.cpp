@@ -30,9 +30,9 @@ recovery_inputs gather_recovery_inputs(const platform::platform_top& top,
         for (const platform::register_write& w : top.probe().card_control_writes())
             in.enable_writes.push_back({w.tick, w.value});
         for (const platform::fw_event& e : top.probe().fw_events()) {
-            if (e.event.kind == dsp::firmware_event::watchdog)
+            if (e.event.kind == STEREOSIM_EV_WATCHDOG)
                 in.watchdog_reports.push_back(e.tick);
-            if (e.event.kind == dsp::firmware_event::hard_error)
+            if (e.event.kind == STEREOSIM_EV_HARD_ERROR)
                 in.give_up = std::min(in.give_up, e.tick);
         }
     }

@@ -1,6 +1,7 @@
 #include "tb/app/output/trace_events.h"
 
 #include "tb/app/faults/fault_spec.h"
+#include "tb/platform/firmware_report.h"
 
 #include <nlohmann/json.hpp>
 
@@ -57,10 +58,8 @@ struct stage_pairs {
             next_processed[i] = next_processed[i + 1];
             next_captured[i] = next_captured[i + 1];
             if (tl[i].kind != event_kind::firmware) continue;
-            if (tl[i].a == static_cast<uint8_t>(dsp::firmware_event::pair_processed))
-                next_processed[i] = tl[i].b;
-            if (tl[i].a == static_cast<uint8_t>(dsp::firmware_event::pair_captured))
-                next_captured[i] = tl[i].b;
+            if (tl[i].a == STEREOSIM_EV_PAIR_PROCESSED) next_processed[i] = tl[i].b;
+            if (tl[i].a == STEREOSIM_EV_PAIR_CAPTURED) next_captured[i] = tl[i].b;
         }
     }
     uint32_t of(dsp::stage s, size_t i) const {
@@ -137,8 +136,7 @@ class timeline_tracks {
     }
 
     void firmware(const platform::timeline_event& e) {
-        const auto kind = static_cast<dsp::firmware_event>(e.a);
-        json x = instant(dsp::firmware_event_name(kind), "firmware", cpu, e.tick);
+        json x = instant(platform::report_name(e.a), "firmware", cpu, e.tick);
         x["args"] = {{"pair", e.b}, {"value", e.c}};
         m_events.push_back(x);
     }

@@ -1,5 +1,7 @@
 #include "tb/platform/island/timeline.h"
 
+#include "tb/platform/firmware_report.h"
+
 #include "dsp/controller.h"
 #include "dsp/hal.h"
 #include "dsp/stage.h"
@@ -68,7 +70,7 @@ const char* event_name(const timeline_event& e) {
         case event_kind::stage_end:
             return dsp::stage_name(static_cast<dsp::stage>(e.a));
         case event_kind::firmware:
-            return dsp::firmware_event_name(static_cast<dsp::firmware_event>(e.a));
+            return platform::report_name(e.a);
         case event_kind::result:
             return dsp::tracker_state_name(static_cast<dsp::tracker_state>(e.a));
         default:

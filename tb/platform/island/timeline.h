@@ -20,7 +20,7 @@ enum class event_kind : uint8_t {
     sensor_frame,  // a: camera (0 L, 1 R), b: truth index; VSYNC rose
     stage_begin,   // a: dsp::stage
     stage_end,     // a: dsp::stage, b: cycles charged in it
-    firmware,      // a: dsp::firmware_event, b: pair, c: value
+    firmware,      // a: the report's stereosim_event_kind, b: pair, c: value
     cpu_sleep,     // the CPU waits for an interrupt
     cpu_wake,      // a: interrupt taken (-1 as 255: stop)
     result,        // a: dsp::tracker_state after the pair, b: pair, c: 1 with a 3D point
