@@ -143,6 +143,8 @@ class c6416_sc : public sc_core::sc_module {
     const std::vector<timed_event>& events() const { return m_events; }
 
     // ---- statistics ------------------------------------------------------------------------
+    // Stages a firmware may charge (the firmware ABI's 15, and a spare).
+    static constexpr int max_stages = 16;
     uint64_t charged_cycles(dsp::stage s) const { return m_stage_cycles[static_cast<int>(s)]; }
     uint64_t charged_cycles_total() const;
     sc_core::sc_time cpu_busy_time() const { return m_cpu_busy; }  // charge_cycles
@@ -230,7 +232,7 @@ class c6416_sc : public sc_core::sc_module {
     stage_observer m_stage_observer;
     std::vector<timed_event> m_events;
 
-    uint64_t m_stage_cycles[dsp::stage_count] = {};
+    uint64_t m_stage_cycles[max_stages] = {};
     sc_core::sc_time m_cpu_busy, m_cpu_bus, m_edma_busy;
     uint64_t m_edma_bytes = 0;
     uint64_t m_bus_errors = 0;

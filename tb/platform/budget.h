@@ -23,10 +23,15 @@
 #include <vector>
 
 #include "dsp/stage.h"
+#include "stereosim/firmware.h"
 #include "tb/platform/platform.h"
 #include "tb/platform/scoreboard.h"
 
 namespace platform {
+
+// Stages a firmware may declare (the ABI's limit); the tables show the
+// reference's seven.
+inline constexpr int max_stages = STEREOSIM_FW_MAX_STAGES;
 
 enum class resource : uint8_t { cpu, emif, fifo, pair_buffers };
 const char* resource_name(resource r);
@@ -51,7 +56,7 @@ struct period_budget {
     uint32_t fifo_peak_words[2] = {};
     bool overflow = false;
     int drops = 0;
-    double stage_ms[dsp::stage_count] = {};  // CPU time charged per stage in the period
+    double stage_ms[max_stages] = {};  // CPU time charged per stage in the period
 };
 
 struct pair_budget {
@@ -60,7 +65,7 @@ struct pair_budget {
     bool judged = false;
     double capture_ms = 0.0;     // FRAME_READY to the last EDMA burst of its chain
     double processing_ms = 0.0;  // the CPU cycles of the pair, capture stage included
-    double stage_ms[dsp::stage_count] = {};
+    double stage_ms[max_stages] = {};
     double latency_ms = 0.0;  // first active pixel to the 3D output
 };
 
@@ -79,9 +84,9 @@ struct budget_report {
     uint32_t fifo_peak_words[2] = {};                      // whole run
     int drops = 0;
     int overflows = 0;
-    double stage_ms_max[dsp::stage_count] = {};          // per processed pair
-    double stage_ms_mean[dsp::stage_count] = {};         // per processed pair
-    uint64_t stage_cycles_total[dsp::stage_count] = {};  // whole run, as charged
+    double stage_ms_max[max_stages] = {};          // per processed pair
+    double stage_ms_mean[max_stages] = {};         // per processed pair
+    uint64_t stage_cycles_total[max_stages] = {};  // whole run, as charged
     double latency_ms_max = 0.0;
     // The firmware's stages of the configured pipeline (the stereo method's
     // only) that never ran: the budget says nothing about them.

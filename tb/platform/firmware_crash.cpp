@@ -181,6 +181,19 @@ void firmware_left() {
     g_in_firmware.store(false);
 }
 
+void firmware_broke_abi(const std::string& what) {
+    line l;
+    l.add(firmware_broke_abi_prefix);
+    l.add(": ");
+    l.add(what.c_str());
+    add_whereabouts(l);
+    l.add("\n");
+    remove_half_written();
+    const ssize_t ignored = write(STDERR_FILENO, l.text, l.n);
+    (void)ignored;
+    _exit(3);
+}
+
 void remove_on_firmware_failure(const std::string& staging, const std::string& created_out) {
     // Cleared first, so that a crash meanwhile never reads half a path.
     g_staging[0] = 0;

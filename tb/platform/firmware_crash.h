@@ -20,8 +20,11 @@ namespace platform {
 // The first words of the two lines, for a campaign that reads a child's log.
 inline constexpr const char* firmware_crashed_prefix = "stereosim: error: firmware crashed";
 inline constexpr const char* firmware_hung_prefix = "stereosim: error: firmware gave no time back";
+inline constexpr const char* firmware_broke_abi_prefix = "stereosim: error: firmware broke the ABI";
 inline bool is_firmware_failure_line(const std::string& line) {
-    return line.rfind(firmware_crashed_prefix, 0) == 0 || line.rfind(firmware_hung_prefix, 0) == 0;
+    return line.rfind(firmware_crashed_prefix, 0) == 0 ||
+           line.rfind(firmware_hung_prefix, 0) == 0 ||
+           line.rfind(firmware_broke_abi_prefix, 0) == 0;
 }
 // Wall time with control in the firmware and simulated time standing still
 // before the guard ends the run: far above any kernel's host time between
@@ -36,6 +39,10 @@ void install_firmware_crash_report();
 void firmware_entered(int64_t tick, int stage, const char* const* stage_names, int stage_count);
 // Control is back in the platform.
 void firmware_left();
+// The firmware called a service outside what it declared (a stage or a
+// tracker state it has not got): "firmware broke the ABI: <what> at T ms",
+// the half-written output removed, exit 3, as for a crash.
+[[noreturn]] void firmware_broke_abi(const std::string& what);
 
 // What a crash or hang report removes before the exit, so that nothing half
 // written is left: the run's staging folder and, if the run created it, its

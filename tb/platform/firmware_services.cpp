@@ -1,18 +1,31 @@
 #include "tb/platform/firmware_services.h"
 
+#include <string>
+
+#include "model/c6416/c6416_sc.h"
+#include "tb/platform/firmware_crash.h"
+
 #include "dsp/controller.h"
 #include "dsp/kernel_costs.h"
 
 namespace platform {
 
+static_assert(STEREOSIM_FW_MAX_STAGES <= c6416::c6416_sc::max_stages,
+              "the C6416 model keeps the cycles of every stage a firmware may declare");
+
 namespace {
 
-probe_hal& probe_of(void* ctx) {
-    return *static_cast<probe_hal*>(ctx);
+const firmware_services& services_of(void* ctx) {
+    return *static_cast<const firmware_services*>(ctx);
 }
 
-dsp::stage stage_of(uint32_t s) {
-    return static_cast<dsp::stage>(s);
+probe_hal& probe_of(void* ctx) {
+    return services_of(ctx).probe();
+}
+
+// The declared stage `s` in the form the probe keeps.
+dsp::stage stage_of(void* ctx, uint32_t s) {
+    return static_cast<dsp::stage>(services_of(ctx).stage(s));
 }
 
 dsp::box box_of(const stereosim_box& b) {
@@ -42,11 +55,11 @@ dsp::frame_output output_of(const stereosim_result& r) {
 }
 
 void charge(void* ctx, uint32_t s, uint64_t cycles, const stereosim_sdram_traffic* traffic) {
-    if (traffic == nullptr) return probe_of(ctx).charge_cycles(stage_of(s), cycles);
+    if (traffic == nullptr) return probe_of(ctx).charge_cycles(stage_of(ctx, s), cycles);
     dsp::sdram_traffic t;
     t.bytes_read = traffic->bytes_read;
     t.bytes_written = traffic->bytes_written;
-    probe_of(ctx).charge_with_traffic(stage_of(s), cycles, t);
+    probe_of(ctx).charge_with_traffic(stage_of(ctx, s), cycles, t);
 }
 
 uint64_t kernel_cycles(void* ctx, const stereosim_kernel_profile* kernel,
@@ -65,10 +78,25 @@ void report(void* ctx, const stereosim_event* e) {
 }
 
 void report_result(void* ctx, const stereosim_result* r) {
+    services_of(ctx).state(r->state);
     probe_of(ctx).report_result(r->pair, output_of(*r));
 }
 
 }  // namespace
+
+uint32_t firmware_services::stage(uint32_t s) const {
+    if (s >= m_stage_count)
+        firmware_broke_abi("stage " + std::to_string(s) + " used, of the " +
+                           std::to_string(m_stage_count) + " it declares");
+    return s;
+}
+
+uint32_t firmware_services::state(uint32_t s) const {
+    if (s >= m_state_count)
+        firmware_broke_abi("tracker state " + std::to_string(s) + " reported, of the " +
+                           std::to_string(m_state_count) + " it declares");
+    return s;
+}
 
 dsp::c64x::kernel_profile model_profile(const stereosim_kernel_profile& kernel) {
     dsp::c64x::kernel_profile k(kernel.name != nullptr ? kernel.name : "");
@@ -98,14 +126,15 @@ dsp::c64x::kernel_profile model_profile(const stereosim_kernel_profile& kernel) 
     return k;
 }
 
-firmware_services::firmware_services(probe_hal& probe) : m_probe(probe) {
+firmware_services::firmware_services(probe_hal& probe, uint32_t stage_count, uint32_t state_count)
+    : m_probe(probe), m_stage_count(stage_count), m_state_count(state_count) {
     stereosim_services& s = m_table;
     s.abi_version = STEREOSIM_FIRMWARE_ABI_VERSION;
-    s.ctx = &m_probe;
+    s.ctx = this;
     s.charge = charge;
     s.kernel_cycles = kernel_cycles;
-    s.stage_begin = [](void* ctx, uint32_t st) { probe_of(ctx).stage_begin(stage_of(st)); };
-    s.stage_end = [](void* ctx, uint32_t st) { probe_of(ctx).stage_end(stage_of(st)); };
+    s.stage_begin = [](void* ctx, uint32_t st) { probe_of(ctx).stage_begin(stage_of(ctx, st)); };
+    s.stage_end = [](void* ctx, uint32_t st) { probe_of(ctx).stage_end(stage_of(ctx, st)); };
     s.read32 = [](void* ctx, uint32_t a) { return probe_of(ctx).read32(a); };
     s.write32 = [](void* ctx, uint32_t a, uint32_t v) { probe_of(ctx).write32(a, v); };
     s.memory = [](void* ctx, uint32_t a, uint32_t n) { return probe_of(ctx).memory(a, n); };

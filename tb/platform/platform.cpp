@@ -63,6 +63,10 @@ platform_top::platform_top(const platform_config& config)
     } else {
         m_firmware = &dsp::plugin::reference_firmware();
     }
+    m_timeline.set_firmware_names(
+        {m_firmware->stage_names, m_firmware->stage_names + m_firmware->stage_count},
+        {m_firmware->tracker_state_names,
+         m_firmware->tracker_state_names + m_firmware->tracker_state_count});
     if (!config.replay_manifest.empty()) {
         // Throws std::runtime_error naming the file for a bad manifest or image.
         m_replay = std::make_unique<scene::replay>(
@@ -119,7 +123,8 @@ void platform_top::firmware(dsp::hal& hal) {
     m_probe->start();
     // The firmware behind the ABI: it sees the board, its key values and the
     // services; the platform sees its reports.
-    m_services = std::make_unique<firmware_services>(*m_probe);
+    m_services = std::make_unique<firmware_services>(*m_probe, m_firmware->stage_count,
+                                                     m_firmware->tracker_state_count);
     const stereosim_board board = board_of(m_config);
     // A member, not a local: the simulation usually stops with this thread
     // suspended in run(), so its stack never unwinds.

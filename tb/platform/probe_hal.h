@@ -133,8 +133,9 @@ class probe_hal final : public dsp::hal {
     std::vector<fw_event> m_fw_events;
     std::vector<register_write> m_card_control;
     std::vector<fw_result> m_results;
-    uint64_t m_stage_cycles[dsp::stage_count] = {};
-    dsp::sdram_traffic m_stage_traffic[dsp::stage_count];
+    // Per stage the firmware may declare (the ABI's limit, not the reference's 7).
+    uint64_t m_stage_cycles[STEREOSIM_FW_MAX_STAGES] = {};
+    dsp::sdram_traffic m_stage_traffic[STEREOSIM_FW_MAX_STAGES];
     uint64_t m_open_cycles = 0;
     int m_open_stage = -1;
     simtime::ticks m_asleep_since = -1;

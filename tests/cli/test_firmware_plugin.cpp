@@ -231,6 +231,34 @@ TEST(FirmwarePluginRun, AFirmwareThatNeverGivesTimeBackIsStoppedWithOneLine) {
     EXPECT_FALSE(testsupport::file_exists(dir));
 }
 
+// The ABI allows 15 stages: a firmware charging its last runs (the platform
+// keeps every declared stage's cycles; under the sanitizer build, no access
+// outside them), and one charging a stage it never declared is stopped with
+// one line, exit 3 and nothing written, as for a crash.
+TEST(FirmwarePluginRun, AllFifteenStagesRunAndAnUndeclaredStageIsOneLine) {
+    const std::string dir = testsupport::temp_dir("fw_stages");
+    const auto many = testsupport::run_command(
+        stereosim("run --quiet --frames 4 --timeline-csv --firmware " +
+                  std::string(MINIMAL_FIRMWARE_MANY_STAGES) + " --out " + dir + "/many"));
+    EXPECT_TRUE(many.exit_code == 0 || many.exit_code == 1) << many.output;
+    // 600 cycles charged to stage 14 at boot, on the timeline by its name.
+    const std::string timeline = testsupport::read_text(dir + "/many/timeline.csv");
+    EXPECT_NE(timeline.find(",stage_begin,s14,14,0,0\n"), std::string::npos) << timeline;
+    EXPECT_NE(timeline.find(",stage_end,s14,14,600,0\n"), std::string::npos) << timeline;
+
+    const auto bad = testsupport::run_command(
+        stereosim("run --quiet --frames 4 --firmware " +
+                  std::string(MINIMAL_FIRMWARE_UNDECLARED_STAGE) + " --out " + dir + "/bad"));
+    EXPECT_EQ(bad.exit_code, 3) << bad.output;
+    EXPECT_EQ(bad.output.rfind("stereosim: error: firmware broke the ABI: stage 5 used, of the 2 "
+                               "it declares at ",
+                               0),
+              0u)
+        << bad.output;
+    EXPECT_EQ(std::count(bad.output.begin(), bad.output.end(), '\n'), 1) << bad.output;
+    EXPECT_FALSE(testsupport::file_exists(dir + "/bad"));
+}
+
 // In a campaign a crashing firmware is a row with outcome `crash` (it breaks
 // the contract), and the campaign goes on to its other rows: the ones a
 // snapshot group's leader would have forked (its fault-free prefix crashed)

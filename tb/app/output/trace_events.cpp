@@ -71,8 +71,8 @@ struct stage_pairs {
 // sleeps, OE high) close at their end event, instants as they come.
 class timeline_tracks {
   public:
-    timeline_tracks(json& events, const std::vector<platform::timeline_event>& tl)
-        : m_events(events), m_pairs(tl) {}
+    timeline_tracks(json& events, const platform::timeline& tl)
+        : m_events(events), m_timeline(tl), m_pairs(tl.events()) {}
 
     void add(size_t i, const platform::timeline_event& e) {
         switch (e.kind) {
@@ -121,7 +121,7 @@ class timeline_tracks {
     void stage_end(size_t i, const platform::timeline_event& e) {
         if (m_stage_begin < 0) return;
         const auto s = static_cast<dsp::stage>(e.a);
-        json x = complete(dsp::stage_name(s), "stage", cpu, m_stage_begin, e.tick);
+        json x = complete(m_timeline.stage_name(e.a), "stage", cpu, m_stage_begin, e.tick);
         x["args"] = {{"cycles", e.b}, {"pair", m_pairs.of(s, i)}};
         m_events.push_back(x);
         m_stage_begin = -1;
@@ -160,6 +160,7 @@ class timeline_tracks {
     }
 
     json& m_events;
+    const platform::timeline& m_timeline;
     const stage_pairs m_pairs;
     ticks m_stage_begin = -1, m_sleep_begin = -1, m_oe_begin = -1;
 };
@@ -199,7 +200,7 @@ std::string trace_events_json(const platform::platform_top& top) {
 
     // CPU (stages, sleeps, interrupts taken, reports), card and sensors.
     const std::vector<platform::timeline_event>& tl = top.events().events();
-    timeline_tracks tracks(events, tl);
+    timeline_tracks tracks(events, top.events());
     for (size_t i = 0; i < tl.size(); ++i) tracks.add(i, tl[i]);
     tracks.close(end);
 

@@ -2,10 +2,6 @@
 
 #include "tb/platform/firmware_report.h"
 
-#include "dsp/controller.h"
-#include "dsp/hal.h"
-#include "dsp/stage.h"
-
 namespace platform {
 
 const char* event_kind_name(event_kind k) {
@@ -64,15 +60,15 @@ size_t timeline::count(event_kind k) const {
 
 namespace {
 
-const char* event_name(const timeline_event& e) {
+const char* event_name(const timeline& t, const timeline_event& e) {
     switch (e.kind) {
         case event_kind::stage_begin:
         case event_kind::stage_end:
-            return dsp::stage_name(static_cast<dsp::stage>(e.a));
+            return t.stage_name(e.a);
         case event_kind::firmware:
             return platform::report_name(e.a);
         case event_kind::result:
-            return dsp::tracker_state_name(static_cast<dsp::tracker_state>(e.a));
+            return t.state_name(e.a);
         default:
             return "";
     }
@@ -87,7 +83,7 @@ bool timeline::write_csv(const std::string& path) const {
     for (const timeline_event& e : m_events) {
         std::fprintf(f, "%lld,%.3f,%s,%s,%u,%u,%u\n", static_cast<long long>(e.tick),
                      static_cast<double>(e.tick) / simtime::ticks_per_ns, event_kind_name(e.kind),
-                     event_name(e), e.a, e.b, e.c);
+                     event_name(*this, e), e.a, e.b, e.c);
     }
     return std::fclose(f) == 0;
 }

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model/time/ticks.h"
@@ -71,6 +72,14 @@ class timeline {
         m_events.insert(m_events.begin() + static_cast<std::ptrdiff_t>(at), {tick, kind, a, b, c});
     }
     const std::vector<timeline_event>& events() const { return m_events; }
+    // The firmware's stage and tracker-state names (its descriptor's), for
+    // the events that carry a stage or state number.
+    void set_firmware_names(std::vector<std::string> stages, std::vector<std::string> states) {
+        m_stage_names = std::move(stages);
+        m_state_names = std::move(states);
+    }
+    const char* stage_name(int s) const { return name_of(m_stage_names, s); }
+    const char* state_name(int s) const { return name_of(m_state_names, s); }
     // Inserts an event at its place in time, after the events of its tick:
     // markers known only after the run (a fault's onset).
     void insert(simtime::ticks tick, event_kind kind, uint8_t a = 0, uint32_t b = 0,
@@ -86,6 +95,11 @@ class timeline {
     bool write_csv(const std::string& path) const;
 
   private:
+    static const char* name_of(const std::vector<std::string>& names, int i) {
+        return i >= 0 && i < static_cast<int>(names.size()) ? names[static_cast<size_t>(i)].c_str()
+                                                            : "?";
+    }
+    std::vector<std::string> m_stage_names, m_state_names;
     std::vector<timeline_event> m_events;
 };
 

@@ -9,7 +9,9 @@
  * process id, which `stereosim firmware check` must catch; PARENT_DEPENDENT:
  * the same on the parent's process id, alike in two runs started by one
  * process, so only the check's forked runs against their runs from the
- * start catch it. */
+ * start catch it; MANY_STAGES: all 15 stages the ABI allows, the work
+ * charged to the last; UNDECLARED_STAGE: work charged to stage 5 of the 2
+ * it declares, which the platform must refuse. */
 #if defined(NONDETERMINISTIC) || defined(PARENT_DEPENDENT)
 #define _POSIX_C_SOURCE 200809L /* getpid */
 #include <unistd.h>
@@ -18,6 +20,15 @@
 #include <stdlib.h>
 
 #include "stereosim/firmware.h"
+
+/* The stage the work after each interrupt is charged to. */
+#if defined(MANY_STAGES)
+#define WORK_STAGE 14u
+#elif defined(UNDECLARED_STAGE)
+#define WORK_STAGE 5u
+#else
+#define WORK_STAGE 1u
+#endif
 
 typedef struct minimal {
     const stereosim_services* hw;
@@ -91,6 +102,12 @@ static void run(void* instance) {
     m->hw->charge(m->hw->ctx, 1, 1000u + (uint64_t)(getppid() % 4096), NULL);
     m->hw->stage_end(m->hw->ctx, 1);
 #endif
+#if defined(MANY_STAGES) || defined(UNDECLARED_STAGE)
+    /* Work in WORK_STAGE at once: no interrupt comes to a card never enabled. */
+    m->hw->stage_begin(m->hw->ctx, WORK_STAGE);
+    m->hw->charge(m->hw->ctx, WORK_STAGE, m->cycles_per_wait, NULL);
+    m->hw->stage_end(m->hw->ctx, WORK_STAGE);
+#endif
 #ifdef HANG_IN_RUN
     /* The bug: waits for a flag by polling, never giving time back, so the
      * flag can never change. */
@@ -104,9 +121,9 @@ static void run(void* instance) {
         int32_t n = m->hw->wait_for_interrupt(m->hw->ctx);
         if (n == STEREOSIM_FW_NO_INTERRUPT || m->hw->stop_requested(m->hw->ctx)) break;
         ++interrupts;
-        m->hw->stage_begin(m->hw->ctx, 1);
-        m->hw->charge(m->hw->ctx, 1, m->cycles_per_wait, NULL);
-        m->hw->stage_end(m->hw->ctx, 1);
+        m->hw->stage_begin(m->hw->ctx, WORK_STAGE);
+        m->hw->charge(m->hw->ctx, WORK_STAGE, m->cycles_per_wait, NULL);
+        m->hw->stage_end(m->hw->ctx, WORK_STAGE);
         if (m->mode == 1) report(m, STEREOSIM_EV_WATCHDOG, (uint32_t)n);
     }
     report(m, STEREOSIM_EV_STOPPED, interrupts);
@@ -132,8 +149,10 @@ static const stereosim_fw_descriptor descriptor = {
     STEREOSIM_FIRMWARE_ABI_VERSION,
 #endif
     "minimal", "0.1",
-#ifdef TOO_MANY_STAGES
+#if defined(TOO_MANY_STAGES)
     16u,
+#elif defined(MANY_STAGES)
+    15u,
 #else
     2u,
 #endif
