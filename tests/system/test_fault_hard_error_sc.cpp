@@ -72,4 +72,22 @@ TEST(FaultHardError, FirmwareGivesUpOnADeadSensorWithinTheBound) {
         rearms, oe_rises);
 }
 
+// A firmware whose loop returned does no more work: the budget counts the
+// CPU idle from then on, not busy to the end of the run.
+TEST(FaultHardError, TheCpuIsIdleAfterTheGiveUp) {
+    const system_test::system_run& r = dead_sensor_run();
+    simtime::ticks stopped = -1;
+    for (const platform::fw_event& e : r.top->probe().fw_events())
+        if (e.event.kind == STEREOSIM_EV_STOPPED) stopped = e.tick;
+    ASSERT_GE(stopped, 0);
+    EXPECT_EQ(r.top->probe().halted_at(), stopped);
+    int after = 0;
+    for (const platform::period_budget& p : r.budget.periods) {
+        if (p.begin <= stopped) continue;
+        ++after;
+        EXPECT_EQ(p.cpu_busy_ms, 0.0) << "period " << p.index;
+    }
+    EXPECT_GE(after, 1);
+}
+
 }  // namespace
