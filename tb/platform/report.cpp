@@ -261,9 +261,13 @@ void print_budget(std::FILE* out, const budget_report& budget) {
         out, "  fifo peak words L %u R %u (of %u); latency max %.3f ms; drops %d; overflows %d\n",
         budget.fifo_peak_words[0], budget.fifo_peak_words[1], card_fifo_words,
         budget.latency_ms_max, budget.drops, budget.overflows);
+    // No period judged (no in-step pair ever forwarded) is no fit, but not
+    // an overrun either: say which.
     std::fprintf(out, "VERDICT: %s (%d judged periods, %zu overruns)\n",
-                 budget.fits ? "within budget" : "OVER BUDGET", budget.judged_periods,
-                 budget.overruns.size());
+                 budget.fits                  ? "within budget"
+                 : budget.judged_periods == 0 ? "NOT JUDGED: no period could be judged"
+                                              : "OVER BUDGET",
+                 budget.judged_periods, budget.overruns.size());
     const size_t shown = std::min<size_t>(budget.overruns.size(), 8);
     for (size_t i = 0; i < shown; ++i)
         std::fprintf(out, "  %s\n", budget.overruns[i].describe().c_str());

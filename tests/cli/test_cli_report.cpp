@@ -375,3 +375,28 @@ TEST(cli_report, a_maximum_over_no_frame_is_null) {
         << text.substr(text.find("-- track:"), 300);
     fs::remove_all(dir);
 }
+
+// A run in which no period could be judged (two frames: no pair is
+// forwarded yet) is no fit, exit 1, but no overrun: report.txt and the
+// summary say NOT JUDGED, not OVER BUDGET.
+TEST(cli_report, a_run_that_judged_no_period_says_not_judged) {
+    const std::string dir = testing::TempDir() + "cli_report_unjudged";
+    fs::remove_all(dir);
+    const run_output r =
+        run_binary("run --frames 2 --summary --out " + dir + " > " + dir + ".summary");
+    EXPECT_EQ(r.status, 1) << r.err;
+    const json report = json::parse(read_file(dir + "/report.json"));
+    EXPECT_EQ(report["verdict"], "over_budget");
+    EXPECT_EQ(report["judged"], false);
+    const std::string text = read_file(dir + "/report.txt");
+    EXPECT_NE(text.find("\nVERDICT: NOT JUDGED: no period could be judged (0 judged periods, 0 "
+                        "overruns)\n"),
+              std::string::npos)
+        << text.substr(text.find("VERDICT"));
+    const std::string summary = read_file(dir + ".summary");
+    EXPECT_NE(summary.find("\nVERDICT  NOT JUDGED: no period could be judged: 0 of 0 judged"),
+              std::string::npos)
+        << summary;
+    fs::remove_all(dir);
+    fs::remove(dir + ".summary");
+}

@@ -116,13 +116,14 @@ void print_summary(std::FILE* out, const json& report, const std::vector<std::st
         static_cast<long long>(config.at("run").at("seed").get<int64_t>()));
     const bool fits = report.at("verdict") == "within_budget";
     const bool judged = report.at("judged").get<bool>();
-    std::fprintf(out,
-                 "\nVERDICT  %s: %d of %d judged frames over the %.1f ms budget, %zu overruns\n",
-                 !fits     ? "OVER BUDGET"
-                 : !judged ? "NOT JUDGED, within budget for the stages that ran"
-                           : "within budget",
-                 timing.at("frames_over_budget").get<int>(), timing.at("judged_periods").get<int>(),
-                 budget_ms, report.at("overruns").size());
+    std::fprintf(
+        out, "\nVERDICT  %s: %d of %d judged frames over the %.1f ms budget, %zu overruns\n",
+        timing.at("judged_periods").get<int>() == 0 ? "NOT JUDGED: no period could be judged"
+        : !fits                                     ? "OVER BUDGET"
+        : !judged ? "NOT JUDGED, within budget for the stages that ran"
+                  : "within budget",
+        timing.at("frames_over_budget").get<int>(), timing.at("judged_periods").get<int>(),
+        budget_ms, report.at("overruns").size());
     if (report.at("not_judged").is_string())
         std::fprintf(out, "         %s\n", report.at("not_judged").get<std::string>().c_str());
     const json& overruns = report.at("overruns");
