@@ -247,9 +247,11 @@ void platform_top::check_used(const stereosim_event& frames_used) {
     u.reported = true;
     u.address[0] = frames_used.left;
     u.address[1] = frames_used.right;
+    // The pair named is the one captured last (searched from the end: the
+    // run's every pair is in the list).
     const captured_pair* named = nullptr;
-    for (const captured_pair& c : m_captured)
-        if (c.pair == u.pair) named = &c;
+    for (auto c = m_captured.rbegin(); c != m_captured.rend() && !named; ++c)
+        if (c->pair == u.pair) named = &*c;
     const uint32_t bytes =
         static_cast<uint32_t>(m_island->frame_width() * m_island->frame_height());
     const uint8_t* left = m_probe->peek(u.address[0], bytes);
@@ -275,10 +277,11 @@ void platform_top::check_processed(uint32_t pair) {
                 return true;
         return false;
     };
-    for (used_pair& u : m_used) {
-        if (u.pair != pair || !u.reported) continue;
-        u.read = was_read(u.address[0]) && was_read(u.address[1]);
-        u.matches = u.matches && u.read;
+    // Its FRAMES_USED, if any, is among the last entries (pair numbers rise).
+    for (auto u = m_used.rbegin(); u != m_used.rend() && u->pair >= pair; ++u) {
+        if (u->pair != pair || !u->reported) continue;
+        u->read = was_read(u->address[0]) && was_read(u->address[1]);
+        u->matches = u->matches && u->read;
         return;
     }
     used_pair u;

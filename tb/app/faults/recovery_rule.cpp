@@ -208,16 +208,7 @@ class recovery_judge {
         }
     }
 
-    std::vector<ticks> raises() const {
-        std::vector<ticks> out;
-        bool enabled = false;
-        for (const tick_value& w : m_in.enable_writes) {
-            const bool on = (w.value & 1u) != 0;
-            if (on && !enabled) out.push_back(w.tick);
-            enabled = on;
-        }
-        return out;
-    }
+    std::vector<ticks> raises() const { return enable_raises(m_in.enable_writes); }
 
     // The firmware's own watchdog reports: each after a whole period of silence.
     void watchdog_reports() {
@@ -287,6 +278,17 @@ class recovery_judge {
 
 recovery_observation judge_recovery(const recovery_inputs& in) {
     return recovery_judge(in).judge();
+}
+
+std::vector<ticks> enable_raises(const std::vector<tick_value>& writes) {
+    std::vector<ticks> raises;
+    bool enabled = false;
+    for (const tick_value& w : writes) {
+        const bool on = (w.value & 1u) != 0;
+        if (on && !enabled) raises.push_back(w.tick);
+        enabled = on;
+    }
+    return raises;
 }
 
 }  // namespace faults

@@ -67,4 +67,8 @@ inline constexpr simtime::ticks watchdog_slack = 100000 * simtime::ticks_per_ns;
 
 recovery_observation judge_recovery(const recovery_inputs& in);
 
+// The ticks of ENABLE 0 -> 1 among the DSP's CTRL writes (the first write
+// counts from ENABLE 0).
+std::vector<simtime::ticks> enable_raises(const std::vector<tick_value>& writes);
+
 }  // namespace faults

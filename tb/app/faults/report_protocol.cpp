@@ -10,29 +10,16 @@ namespace {
 
 using simtime::ticks;
 
-// ENABLE 0 -> 1 on the bus (the first write counts from ENABLE 0).
-std::vector<ticks> enable_raises(const std::vector<tick_value>& writes) {
-    std::vector<ticks> raises;
-    bool enabled = false;
-    for (const tick_value& w : writes) {
-        const bool on = (w.value & 1u) != 0;
-        if (on && !enabled) raises.push_back(w.tick);
-        enabled = on;
-    }
-    return raises;
-}
-
-bool reported_near(const std::vector<platform::fw_event>& events, uint32_t kind, ticks t,
-                   ticks window) {
-    for (const platform::fw_event& e : events)
-        if (e.event.kind == kind && e.tick >= t - window && e.tick <= t + window) return true;
-    return false;
-}
-
 class protocol_check {
   public:
+    // Per kind the reports in time order, and the first tick each pair was
+    // named: every lookup below is a search, not a pass over the run.
     explicit protocol_check(const protocol_inputs& in) : m_in(in) {
-        for (const platform::fw_event& e : in.events) m_kinds[e.event.kind].push_back(&e);
+        for (const platform::fw_event& e : in.events) {
+            m_kinds[e.event.kind].push_back(&e);
+            m_ticks[e.event.kind].push_back(e.tick);
+            m_first[e.event.kind].emplace(e.event.pair, e.tick);
+        }
     }
 
     std::vector<missing_report> run() {
@@ -57,12 +44,20 @@ class protocol_check {
         m_found.push_back(m);
     }
 
+    // A report of `kind` naming `pair` at or before `before`.
     bool has(uint32_t kind, uint32_t pair, ticks before = no_tick) const {
-        const auto it = m_kinds.find(kind);
-        if (it == m_kinds.end()) return false;
-        for (const platform::fw_event* e : it->second)
-            if (e->event.pair == pair && e->tick <= before) return true;
-        return false;
+        const auto k = m_first.find(kind);
+        if (k == m_first.end()) return false;
+        const auto it = k->second.find(pair);
+        return it != k->second.end() && it->second <= before;
+    }
+
+    // A report of `kind` within `window` of t, either side.
+    bool near(uint32_t kind, ticks t) const {
+        const auto k = m_ticks.find(kind);
+        if (k == m_ticks.end()) return false;
+        const auto it = std::lower_bound(k->second.begin(), k->second.end(), t - m_in.window);
+        return it != k->second.end() && *it <= t + m_in.window;
     }
 
     // Every raise of ENABLE needs OE_RAISED; every one after the boot's is a
@@ -72,10 +67,8 @@ class protocol_check {
         int no_raise = 0, no_rearm = 0;
         for (size_t i = 0; i < up.size(); ++i) {
             if (up[i] > m_in.until) break;
-            no_raise += !reported_near(m_in.events, STEREOSIM_EV_OE_RAISED, up[i], m_in.window);
-            if (i > 0)
-                no_rearm +=
-                    !reported_near(m_in.events, STEREOSIM_EV_CARD_REARMED, up[i], m_in.window);
+            no_raise += !near(STEREOSIM_EV_OE_RAISED, up[i]);
+            if (i > 0) no_rearm += !near(STEREOSIM_EV_CARD_REARMED, up[i]);
         }
         add(6, "OE_RAISED", {}, no_raise, "raise(s) of ENABLE on the bus");
         add(11, "CARD_REARMED", {}, no_rearm,
@@ -131,8 +124,7 @@ class protocol_check {
         for (uint32_t kind : {STEREOSIM_EV_CARD_REARMED, STEREOSIM_EV_HARD_ERROR})
             for (const platform::fw_event* e : m_kinds[kind])
                 if (e->event.value == STEREOSIM_REARM_WATCHDOG)
-                    unreported +=
-                        !reported_near(m_in.events, STEREOSIM_EV_WATCHDOG, e->tick, m_in.window);
+                    unreported += !near(STEREOSIM_EV_WATCHDOG, e->tick);
         add(11, "WATCHDOG", {}, unreported, "re-arm(s) or give-up(s) for the watchdog");
     }
 
@@ -149,6 +141,8 @@ class protocol_check {
 
     const protocol_inputs& m_in;
     std::map<uint32_t, std::vector<const platform::fw_event*>> m_kinds;
+    std::map<uint32_t, std::vector<ticks>> m_ticks;
+    std::map<uint32_t, std::map<uint32_t, ticks>> m_first;  // kind -> pair -> first tick
     std::vector<missing_report> m_found;
 };
 
