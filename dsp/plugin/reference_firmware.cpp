@@ -124,6 +124,11 @@ void policy(const void* fw, stereosim_fw_policy* out) {
     out->rearm_on_every_sync_error = c.rearm_on_every_sync_error ? 1u : 0u;
     out->watchdog_ms = c.watchdog_ms;
     out->overlapped = c.mode == pipeline_mode::overlapped ? 1u : 0u;
+    // The stereo method not asked for never runs.
+    const stereo_method m = c.pipeline.method;
+    out->optional_stages = m == stereo_method::sad    ? 1u << static_cast<int>(stage::stereo_edge)
+                           : m == stereo_method::edge ? 1u << static_cast<int>(stage::stereo_sad)
+                                                      : 0u;
 }
 
 camera_rig rig_of(const stereosim_board& b) {

@@ -118,7 +118,11 @@ void services_hal::report(const event_record& e) {
 }
 
 void services_hal::report_result(uint32_t pair, const frame_output& out) {
-    const stereosim_result r = abi_result(pair, out);
+    stereosim_result r = abi_result(pair, out);
+    // The ABI's result holds every cycle charged for the pair: the control
+    // program's capture work too, which the controller's output leaves out.
+    if (m_program != nullptr)
+        r.stage_cycles[static_cast<int>(stage::capture)] += m_program->config().capture_cycles;
     m_s.report_result(m_s.ctx, &r);
 }
 

@@ -119,6 +119,7 @@ static void policy(const void* instance, stereosim_fw_policy* out) {
     out->rearm_on_every_sync_error = 0;
     out->watchdog_ms = fw->watchdog_ms;
     out->overlapped = fw->overlapped;
+    out->optional_stages = 1u << ST_UNUSED_EDGE; /* declared for the reference's order only */
 }
 
 static const stereosim_fw_descriptor descriptor = {STEREOSIM_FIRMWARE_ABI_VERSION,

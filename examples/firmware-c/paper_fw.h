@@ -11,9 +11,10 @@
 
 #include "stereosim/firmware.h"
 
-/* The stages and tracker states, in the reference firmware's order: the
- * platform's budget and scoreboard (ABI version 1) read stage k and state k
- * by those names. */
+/* The stages and tracker states. The platform names them as the descriptor
+ * does; they follow the reference firmware's names and order so that the
+ * two firmware's tables line up side by side. The edge stage never runs
+ * (the policy's optional_stages says so). */
 enum { ST_CAPTURE, ST_GRAY, ST_DETECT, ST_TRACK, ST_STEREO, ST_UNUSED_EDGE, ST_XYZ, ST_COUNT };
 enum { TRACKER_DETECT, TRACKER_TRACK, TRACKER_LOST };
 

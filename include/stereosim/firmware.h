@@ -158,7 +158,9 @@ typedef struct stereosim_result {
     int32_t x_um;         /* the right camera's frame, micrometres */
     int32_t y_um;
     int32_t z_um;
-    uint64_t stage_cycles[STEREOSIM_FW_MAX_STAGES]; /* cycles charged per stage for this pair */
+    /* Every cycle charged for this pair, per stage: the budget reads the
+     * pair's processing time from these alone. */
+    uint64_t stage_cycles[STEREOSIM_FW_MAX_STAGES];
 } stereosim_result;
 
 /* ---- the board, as the run configured it ---- */
@@ -272,6 +274,10 @@ typedef struct stereosim_fw_policy {
     uint32_t rearm_on_every_sync_error;
     uint32_t watchdog_ms; /* 0: no watchdog */
     uint32_t overlapped;  /* 1: two pair buffers, 0: one (sequential) */
+    /* Bit s set: stage s may never run in this configuration (an alternative
+     * it was not asked for). Any other declared stage that never runs leaves
+     * the run's budget not judged (docs/budget.md). 0: all are expected. */
+    uint32_t optional_stages;
 } stereosim_fw_policy;
 
 typedef struct stereosim_fw_descriptor {

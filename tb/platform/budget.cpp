@@ -26,24 +26,24 @@ std::string overrun::describe() const {
             text, sizeof text,
             "pair_buffers over budget in period %d: pair %u was dropped (ready while stage "
             "%s ran, no pair buffer free)",
-            period, pair, dsp::stage_name(stage));
+            period, pair, stage_name.c_str());
     } else if (what == resource::fifo) {
         std::snprintf(text, sizeof text,
                       "fifo over budget in period %d: a card FIFO overflowed (stage %s)", period,
-                      dsp::stage_name(stage));
+                      stage_name.c_str());
     } else if (period >= 0 && value_ms >= limit_ms) {
         // Busy the whole period: the work runs on into the next one.
         std::snprintf(text, sizeof text,
                       "%s over budget in period %d (stage %s): busy the whole %.3f ms period, "
                       "its work carried into the next",
-                      resource_name(what), period, dsp::stage_name(stage), limit_ms);
+                      resource_name(what), period, stage_name.c_str(), limit_ms);
     } else if (period >= 0) {
         std::snprintf(text, sizeof text,
                       "%s over budget in period %d (stage %s): %.3f ms of the %.3f ms budget",
-                      resource_name(what), period, dsp::stage_name(stage), value_ms, limit_ms);
+                      resource_name(what), period, stage_name.c_str(), value_ms, limit_ms);
     } else {
         std::snprintf(text, sizeof text, "%s over budget for pair %u (stage %s): %.3f ms > %.3f ms",
-                      resource_name(what), pair, dsp::stage_name(stage), value_ms, limit_ms);
+                      resource_name(what), pair, stage_name.c_str(), value_ms, limit_ms);
     }
     return text;
 }
@@ -67,8 +67,8 @@ simtime::ticks overlap(simtime::ticks a0, simtime::ticks a1, simtime::ticks b0, 
 
 // The stage the CPU was in at tick t: the charge covering it, else the last
 // one before it.
-dsp::stage stage_at(const std::vector<charge_record>& charges, simtime::ticks t) {
-    dsp::stage s = dsp::stage::capture;
+int stage_at(const std::vector<charge_record>& charges, simtime::ticks t) {
+    int s = 0;
     for (const charge_record& c : charges) {
         if (c.begin > t) break;
         s = c.stage;
@@ -79,7 +79,7 @@ dsp::stage stage_at(const std::vector<charge_record>& charges, simtime::ticks t)
 
 int largest(const double* ms) {
     int best = 0;
-    for (int i = 1; i < dsp::stage_count; ++i)
+    for (int i = 1; i < max_stages; ++i)
         if (ms[i] > ms[best]) best = i;
     return best;
 }
@@ -97,7 +97,6 @@ struct run_view {
     simtime::ticks run_end;
     double eclk_ns;
     double cpu_hz;
-    uint64_t capture_cycles;  // what the firmware charges per pair outside its kernels
     double cycles_ms(uint64_t cycles) const { return 1e3 * static_cast<double>(cycles) / cpu_hz; }
 };
 
@@ -119,8 +118,7 @@ period_budget measure_period(const run_view& run, size_t k, const period_sample&
     for (int c = 0; c < 2; ++c) p.fifo_peak_words[c] = sample.fifo_peak_words[c];
     p.overflow = sample.fifo_overflow[0] || sample.fifo_overflow[1];
     for (const charge_record& c : run.probe.charges())
-        p.stage_ms[static_cast<int>(c.stage)] +=
-            ticks_to_ms(overlap(c.begin, c.end, p.begin, p.end));
+        p.stage_ms[c.stage] += ticks_to_ms(overlap(c.begin, c.end, p.begin, p.end));
     return p;
 }
 
@@ -161,7 +159,7 @@ void judge_periods(budget_report& b) {
         if (p.cpu_busy_ms >= b.period_ms - saturated_slack_ms) {
             overrun o;
             o.what = resource::cpu;
-            o.stage = static_cast<dsp::stage>(largest(p.stage_ms));
+            o.stage = largest(p.stage_ms);
             o.period = p.index;
             o.value_ms = p.cpu_busy_ms;
             o.limit_ms = b.period_ms;
@@ -201,11 +199,9 @@ pair_budget measure_pair(const run_view& run, const pair_check& pc, bool* chain_
     if (*chain_done) pb.capture_ms = ticks_to_ms(last - pc.ready);
     if (pc.processed) {
         pb.processed = true;
-        const dsp::frame_output& out = pc.record.out;
-        for (int s = 0; s < dsp::stage_count; ++s)
-            pb.stage_ms[s] = run.cycles_ms(out.stage_cycles[s]);
-        pb.stage_ms[static_cast<int>(dsp::stage::capture)] += run.cycles_ms(run.capture_cycles);
-        for (int s = 0; s < dsp::stage_count; ++s) pb.processing_ms += pb.stage_ms[s];
+        const stereosim_result& out = pc.record.out;
+        for (int s = 0; s < max_stages; ++s) pb.stage_ms[s] = run.cycles_ms(out.stage_cycles[s]);
+        for (int s = 0; s < max_stages; ++s) pb.processing_ms += pb.stage_ms[s];
         pb.latency_ms = pc.latency_ms;
     }
     return pb;
@@ -216,7 +212,7 @@ struct pair_sums {
     int captures = 0;
     double capture_ms = 0.0;
     int processed = 0;
-    double stage_ms[dsp::stage_count] = {};
+    double stage_ms[max_stages] = {};
 };
 
 // A pair's maxima, means and overruns (capture longer than a period,
@@ -224,7 +220,7 @@ struct pair_sums {
 void judge_pair(budget_report& b, const pair_budget& pb, bool chain_done, pair_sums& sums) {
     if (pb.processed) {
         ++sums.processed;
-        for (int s = 0; s < dsp::stage_count; ++s) {
+        for (int s = 0; s < max_stages; ++s) {
             sums.stage_ms[s] += pb.stage_ms[s];
             b.stage_ms_max[s] = std::max(b.stage_ms_max[s], pb.stage_ms[s]);
         }
@@ -247,7 +243,7 @@ void judge_pair(budget_report& b, const pair_budget& pb, bool chain_done, pair_s
     if (pb.judged && pb.processed && pb.processing_ms > b.period_ms) {
         overrun o;
         o.what = resource::cpu;
-        o.stage = static_cast<dsp::stage>(largest(pb.stage_ms));
+        o.stage = largest(pb.stage_ms);
         o.pair = pb.pair;
         o.value_ms = pb.processing_ms;
         o.limit_ms = b.period_ms;
@@ -268,10 +264,11 @@ budget_report check_budget(const platform_top& top, const scoreboard_report& sco
                        top.end_tick(),
                        static_cast<double>(eclk.period_num()) /
                            static_cast<double>(eclk.period_den()) / simtime::ticks_per_ns,
-                       static_cast<double>(config.dsk.cpu_hz),
-                       top.firmware_capture_cycles()};
+                       static_cast<double>(config.dsk.cpu_hz)};
     b.period_ms = ticks_to_ms(config.period);
     b.cpu_hz = run.cpu_hz;
+    const stereosim_fw_descriptor& firmware = top.firmware_descriptor();
+    b.stage_names.assign(firmware.stage_names, firmware.stage_names + firmware.stage_count);
 
     const std::vector<period_sample>& samples = run.isl.periods();
     for (size_t k = 0; k < samples.size(); ++k)
@@ -287,17 +284,14 @@ budget_report check_budget(const platform_top& top, const scoreboard_report& sco
         b.pairs.push_back(pb);
     }
     if (sums.captures > 0) b.mean_capture_ms = sums.capture_ms / sums.captures;
-    for (int s = 0; s < dsp::stage_count; ++s) {
+    const uint32_t optional = top.firmware_policy().optional_stages;
+    for (uint32_t s = 0; s < firmware.stage_count; ++s) {
         if (sums.processed > 0) b.stage_ms_mean[s] = sums.stage_ms[s] / sums.processed;
-        b.stage_cycles_total[s] = run.probe.stage_cycles(static_cast<dsp::stage>(s));
+        b.stage_cycles_total[s] = run.probe.stage_cycles(static_cast<int>(s));
+        if (b.stage_cycles_total[s] == 0 && (optional >> s & 1u) == 0)
+            b.stages_not_run.push_back(static_cast<int>(s));
     }
-    for (int s = 0; s < dsp::stage_count; ++s) {
-        const dsp::stage st = static_cast<dsp::stage>(s);
-        const dsp::stereo_method m = top.config().stereo_method;
-        const bool configured = (st != dsp::stage::stereo_sad || m != dsp::stereo_method::edge) &&
-                                (st != dsp::stage::stereo_edge || m != dsp::stereo_method::sad);
-        if (configured && b.stage_cycles_total[s] == 0) b.stages_not_run.push_back(st);
-    }
+    for (overrun& o : b.overruns) o.stage_name = b.stage_names[static_cast<size_t>(o.stage)];
     b.fits = b.judged_periods > 0 && b.overruns.empty();
     return b;
 }

@@ -22,15 +22,14 @@
 #include <string>
 #include <vector>
 
-#include "dsp/stage.h"
 #include "stereosim/firmware.h"
 #include "tb/platform/platform.h"
 #include "tb/platform/scoreboard.h"
 
 namespace platform {
 
-// Stages a firmware may declare (the ABI's limit); the tables show the
-// reference's seven.
+// Stages a firmware may declare (the ABI's limit); the tables show the ones
+// the firmware under test declares, by its names.
 inline constexpr int max_stages = STEREOSIM_FW_MAX_STAGES;
 
 enum class resource : uint8_t { cpu, emif, fifo, pair_buffers };
@@ -38,9 +37,10 @@ const char* resource_name(resource r);
 
 struct overrun {
     resource what = resource::cpu;
-    dsp::stage stage = dsp::stage::capture;
-    int period = -1;    // index of the sync period, -1 if a pair's figure
-    uint32_t pair = 0;  // the pair concerned, 0 if a period's figure
+    int stage = 0;           // the firmware's declared stage index ...
+    std::string stage_name;  // ... and its name
+    int period = -1;         // index of the sync period, -1 if a pair's figure
+    uint32_t pair = 0;       // the pair concerned, 0 if a period's figure
     double value_ms = 0.0;
     double limit_ms = 0.0;
     std::string describe() const;
@@ -72,6 +72,7 @@ struct pair_budget {
 struct budget_report {
     double period_ms = 0.0;
     double cpu_hz = 0.0;
+    std::vector<std::string> stage_names;  // the firmware's declared stages, in order
     std::vector<period_budget> periods;
     std::vector<pair_budget> pairs;
     std::vector<overrun> overruns;
@@ -88,9 +89,10 @@ struct budget_report {
     double stage_ms_mean[max_stages] = {};         // per processed pair
     uint64_t stage_cycles_total[max_stages] = {};  // whole run, as charged
     double latency_ms_max = 0.0;
-    // The firmware's stages of the configured pipeline (the stereo method's
-    // only) that never ran: the budget says nothing about them.
-    std::vector<dsp::stage> stages_not_run;
+    // The firmware's declared stages that never ran, but those its policy
+    // names optional (stereosim_fw_policy::optional_stages): the budget says
+    // nothing about them.
+    std::vector<int> stages_not_run;
 
     // The first overrun of a resource, or nullptr.
     const overrun* first(resource r) const;

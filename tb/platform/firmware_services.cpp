@@ -5,7 +5,6 @@
 #include "model/c6416/c6416_sc.h"
 #include "tb/platform/firmware_crash.h"
 
-#include "dsp/controller.h"
 #include "dsp/kernel_costs.h"
 
 namespace platform {
@@ -23,43 +22,13 @@ probe_hal& probe_of(void* ctx) {
     return services_of(ctx).probe();
 }
 
-// The declared stage `s` in the form the probe keeps.
-dsp::stage stage_of(void* ctx, uint32_t s) {
-    return static_cast<dsp::stage>(services_of(ctx).stage(s));
-}
-
-dsp::box box_of(const stereosim_box& b) {
-    dsp::box out;
-    out.x = b.x;
-    out.y = b.y;
-    out.width = b.w;
-    out.height = b.h;
-    return out;
-}
-
-// What the platform reads of a result, in the form its observers keep.
-dsp::frame_output output_of(const stereosim_result& r) {
-    dsp::frame_output out;
-    out.state = static_cast<dsp::tracker_state>(r.state);
-    out.detected = r.detected != 0;
-    out.has_object = r.has_object != 0;
-    out.box_left = box_of(r.box_left);
-    out.box_right = box_of(r.box_right);
-    out.has_point = r.has_point != 0;
-    out.disparity_q8 = r.disparity_q8;
-    out.point.x = r.x_um;
-    out.point.y = r.y_um;
-    out.point.z = r.z_um;
-    for (int s = 0; s < dsp::stage_count; ++s) out.stage_cycles[s] = r.stage_cycles[s];
-    return out;
+// The declared stage `s` (the firmware's index; one it did not declare ends the run).
+int stage_of(void* ctx, uint32_t s) {
+    return static_cast<int>(services_of(ctx).stage(s));
 }
 
 void charge(void* ctx, uint32_t s, uint64_t cycles, const stereosim_sdram_traffic* traffic) {
-    if (traffic == nullptr) return probe_of(ctx).charge_cycles(stage_of(ctx, s), cycles);
-    dsp::sdram_traffic t;
-    t.bytes_read = traffic->bytes_read;
-    t.bytes_written = traffic->bytes_written;
-    probe_of(ctx).charge_with_traffic(stage_of(ctx, s), cycles, t);
+    probe_of(ctx).charge(stage_of(ctx, s), cycles, traffic);
 }
 
 uint64_t kernel_cycles(void* ctx, const stereosim_kernel_profile* kernel,
@@ -79,7 +48,7 @@ void report(void* ctx, const stereosim_event* e) {
 
 void report_result(void* ctx, const stereosim_result* r) {
     services_of(ctx).state(r->state);
-    probe_of(ctx).report_result(r->pair, output_of(*r));
+    probe_of(ctx).report_result(*r);
 }
 
 }  // namespace

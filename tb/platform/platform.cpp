@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstring>
 #include <stdexcept>
 
 #include "dsp/c6416_regs.h"
@@ -150,11 +149,13 @@ void platform_top::firmware(dsp::hal& hal) {
     m_instance = nullptr;
 }
 
-uint64_t platform_top::firmware_capture_cycles() const {
-    for (uint32_t k = 0; k < m_firmware->key_count && k < m_key_values.size(); ++k)
-        if (std::strcmp(m_firmware->keys[k].name, "capture_cycles") == 0)
-            return static_cast<uint64_t>(m_key_values[k]);
-    return 0;
+const char* platform_top::stage_name(int s) const {
+    return s >= 0 && static_cast<uint32_t>(s) < m_firmware->stage_count ? m_firmware->stage_names[s]
+                                                                        : "?";
+}
+
+const char* platform_top::tracker_state_name(uint32_t s) const {
+    return s < m_firmware->tracker_state_count ? m_firmware->tracker_state_names[s] : "?";
 }
 
 void platform_top::advance_to(simtime::ticks t) {

@@ -117,10 +117,10 @@ class platform_top {
     const stereosim_fw_descriptor& firmware_descriptor() const { return *m_firmware; }
     const firmware::plugin* firmware_plugin() const { return m_plugin.get(); }
     const stereosim_fw_policy& firmware_policy() const { return m_policy; }
-    // The CPU cycles the firmware charges to stage capture per pair beyond
-    // its kernels: its key capture_cycles as it was created (the reference
-    // firmware's), 0 for a firmware without that key.
-    uint64_t firmware_capture_cycles() const;
+    // The firmware's names of its declared stage s and tracker state s
+    // ("?" for an index it did not declare).
+    const char* stage_name(int s) const;
+    const char* tracker_state_name(uint32_t s) const;
     const timeline& events() const { return m_timeline; }
     // An injected fault's onset on the timeline (tb/app/faults, after the run).
     void mark_fault(simtime::ticks tick, uint8_t index, uint32_t type, uint32_t frame) {

@@ -31,43 +31,43 @@ void probe_hal::leave() {
     if (m_started) m_left = std::chrono::steady_clock::now();
 }
 
-void probe_hal::charge_cycles(dsp::stage s, uint64_t cycles) {
+void probe_hal::charge(int stage, uint64_t cycles, const stereosim_sdram_traffic* traffic) {
     enter();
     const simtime::ticks begin = now();
-    m_inner.charge_cycles(s, cycles);
-    m_charges.push_back({begin, now(), s, cycles, {}});
-    m_stage_cycles[static_cast<int>(s)] += cycles;
+    // The model's stage tables hold every stage the ABI allows.
+    const auto s = static_cast<dsp::stage>(stage);
+    if (traffic == nullptr) {
+        m_inner.charge_cycles(s, cycles);
+    } else {
+        dsp::sdram_traffic t;
+        t.bytes_read = traffic->bytes_read;
+        t.bytes_written = traffic->bytes_written;
+        m_inner.charge_with_traffic(s, cycles, t);
+        m_stage_traffic[stage].bytes_read += t.bytes_read;
+        m_stage_traffic[stage].bytes_written += t.bytes_written;
+    }
+    m_charges.push_back(
+        {begin, now(), stage, cycles, traffic != nullptr ? *traffic : stereosim_sdram_traffic{}});
+    m_stage_cycles[stage] += cycles;
     m_open_cycles += cycles;
     leave();
 }
 
-void probe_hal::charge_with_traffic(dsp::stage s, uint64_t cycles,
-                                    const dsp::sdram_traffic& traffic) {
+void probe_hal::stage_begin(int stage) {
     enter();
-    const simtime::ticks begin = now();
-    m_inner.charge_with_traffic(s, cycles, traffic);
-    m_charges.push_back({begin, now(), s, cycles, traffic});
-    m_stage_cycles[static_cast<int>(s)] += cycles;
-    m_stage_traffic[static_cast<int>(s)] += traffic;
-    m_open_cycles += cycles;
-    leave();
-}
-
-void probe_hal::stage_begin(dsp::stage s) {
-    enter();
-    m_open_stage = static_cast<int>(s);
+    m_open_stage = stage;
     m_open_cycles = 0;
-    m_events.add(now(), event_kind::stage_begin, static_cast<uint8_t>(s));
-    m_inner.stage_begin(s);
+    m_events.add(now(), event_kind::stage_begin, static_cast<uint8_t>(stage));
+    m_inner.stage_begin(static_cast<dsp::stage>(stage));
     leave();
 }
 
-void probe_hal::stage_end(dsp::stage s) {
+void probe_hal::stage_end(int stage) {
     enter();
-    m_events.add(now(), event_kind::stage_end, static_cast<uint8_t>(s),
+    m_events.add(now(), event_kind::stage_end, static_cast<uint8_t>(stage),
                  static_cast<uint32_t>(m_open_cycles));
     m_open_stage = -1;
-    m_inner.stage_end(s);
+    m_inner.stage_end(static_cast<dsp::stage>(stage));
     leave();
 }
 
@@ -117,10 +117,6 @@ int probe_hal::wait_for_interrupt() {
     return n;
 }
 
-void probe_hal::report(const dsp::event_record& e) {
-    report(stereosim_event{static_cast<uint32_t>(e.kind), e.pair, e.value, e.detail, 0, 0});
-}
-
 void probe_hal::report(const stereosim_event& e) {
     enter();
     const fw_event te{now(), e};
@@ -139,13 +135,11 @@ void probe_hal::report(const stereosim_event& e) {
     leave();
 }
 
-void probe_hal::report_result(uint32_t pair, const dsp::frame_output& out) {
+void probe_hal::report_result(const stereosim_result& r) {
     enter();
     const simtime::ticks t = now();
-    m_results.push_back({t, pair, out});
-    m_events.add(t, event_kind::result, static_cast<uint8_t>(out.state), pair,
-                 out.has_point ? 1 : 0);
-    m_inner.report_result(pair, out);
+    m_results.push_back({t, r.pair, r});
+    m_events.add(t, event_kind::result, static_cast<uint8_t>(r.state), r.pair, r.has_point ? 1 : 0);
     leave();
 }
 

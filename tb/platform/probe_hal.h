@@ -1,5 +1,6 @@
-// The HAL the firmware runs on in the platform: it forwards every call to
-// the C6416 model's HAL unchanged and records, with the simulated tick of
+// What the platform's services (firmware_services.h) run on: every call the
+// firmware makes through the ABI goes to the C6416 model's HAL unchanged,
+// and the probe records, with the simulated tick of
 // each, what the firmware did: stage intervals and the cycles charged in
 // them, when the CPU slept in wait_for_interrupt, every report and result
 // (docs/platform.md, "Timeline"). It also measures the host time the
@@ -12,9 +13,9 @@
 #include <functional>
 #include <vector>
 
-#include "dsp/controller.h"
 #include "dsp/hal.h"
 #include "model/time/ticks.h"
+#include "stereosim/firmware.h"
 #include "tb/platform/firmware_report.h"
 #include "tb/platform/island/timeline.h"
 
@@ -22,9 +23,9 @@ namespace platform {
 
 struct charge_record {
     simtime::ticks begin = 0, end = 0;  // simulated interval the CPU spent on it
-    dsp::stage stage = dsp::stage::capture;
+    int stage = 0;                      // the firmware's declared stage index
     uint64_t cycles = 0;
-    dsp::sdram_traffic traffic;  // SDRAM bytes its kernels moved (replayed on the EMIF)
+    stereosim_sdram_traffic traffic{};  // SDRAM bytes its kernels moved (replayed on the EMIF)
 };
 
 struct tick_interval {
@@ -39,11 +40,11 @@ struct register_write {
 
 struct fw_result {
     simtime::ticks tick = 0;
-    uint32_t pair = 0;  // the pair's number, as the firmware reports it
-    dsp::frame_output out;
+    uint32_t pair = 0;       // the pair's number, as the firmware reports it
+    stereosim_result out{};  // as the firmware reported it
 };
 
-class probe_hal final : public dsp::hal {
+class probe_hal {
   public:
     using event_hook = std::function<void(const fw_event&)>;
     // Every memory() the firmware asks for: what it reads of DSP memory.
@@ -66,26 +67,25 @@ class probe_hal final : public dsp::hal {
         m_stage_count = count;
     }
 
-    void charge_cycles(dsp::stage s, uint64_t cycles) override;
-    void charge_with_traffic(dsp::stage s, uint64_t cycles,
-                             const dsp::sdram_traffic& traffic) override;
-    uint64_t kernel_cycles(const dsp::c64x::kernel_profile& kernel) override {
+    // Stage indices are the firmware's declared ones (firmware_services
+    // checked them); traffic may be null.
+    void charge(int stage, uint64_t cycles, const stereosim_sdram_traffic* traffic);
+    uint64_t kernel_cycles(const dsp::c64x::kernel_profile& kernel) const {
         return m_model.cycles(kernel);
     }
-    void stage_begin(dsp::stage s) override;
-    void stage_end(dsp::stage s) override;
-    uint32_t read32(uint32_t address) override;
-    void write32(uint32_t address, uint32_t value) override;
-    uint8_t* memory(uint32_t address, uint32_t bytes) override;
-    void set_interrupt_enable(uint32_t ier) override;
-    uint32_t interrupt_flags() override;
-    void clear_interrupt_flags(uint32_t mask) override;
-    int wait_for_interrupt() override;
-    void report(const dsp::event_record& e) override;
+    void stage_begin(int stage);
+    void stage_end(int stage);
+    uint32_t read32(uint32_t address);
+    void write32(uint32_t address, uint32_t value);
+    uint8_t* memory(uint32_t address, uint32_t bytes);
+    void set_interrupt_enable(uint32_t ier);
+    uint32_t interrupt_flags();
+    void clear_interrupt_flags(uint32_t mask);
+    int wait_for_interrupt();
     // A report as the firmware ABI has it (the frames' addresses included).
     void report(const stereosim_event& e);
-    void report_result(uint32_t pair, const dsp::frame_output& out) override;
-    bool stop_requested() override;
+    void report_result(const stereosim_result& r);
+    bool stop_requested();
 
     const std::vector<charge_record>& charges() const { return m_charges; }
     // Intervals the CPU was asleep in wait_for_interrupt.
@@ -106,11 +106,9 @@ class probe_hal final : public dsp::hal {
     // contract judges the firmware's re-arms by, whatever it reports.
     const std::vector<register_write>& card_control_writes() const { return m_card_control; }
     const std::vector<fw_result>& results() const { return m_results; }
-    uint64_t stage_cycles(dsp::stage s) const { return m_stage_cycles[static_cast<int>(s)]; }
-    // SDRAM bytes charged per stage (dsp::hal::charge_with_traffic), whole run.
-    const dsp::sdram_traffic& stage_traffic(dsp::stage s) const {
-        return m_stage_traffic[static_cast<int>(s)];
-    }
+    uint64_t stage_cycles(int stage) const { return m_stage_cycles[stage]; }
+    // SDRAM bytes charged per stage, whole run.
+    const stereosim_sdram_traffic& stage_traffic(int stage) const { return m_stage_traffic[stage]; }
     double firmware_wall_s() const { return m_firmware_wall_s; }
     // The stage the firmware is in (between stage_begin and stage_end), -1 none.
     int open_stage() const { return m_open_stage; }
@@ -135,7 +133,7 @@ class probe_hal final : public dsp::hal {
     std::vector<fw_result> m_results;
     // Per stage the firmware may declare (the ABI's limit, not the reference's 7).
     uint64_t m_stage_cycles[STEREOSIM_FW_MAX_STAGES] = {};
-    dsp::sdram_traffic m_stage_traffic[STEREOSIM_FW_MAX_STAGES];
+    stereosim_sdram_traffic m_stage_traffic[STEREOSIM_FW_MAX_STAGES] = {};
     uint64_t m_open_cycles = 0;
     int m_open_stage = -1;
     simtime::ticks m_asleep_since = -1;

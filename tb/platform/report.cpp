@@ -103,13 +103,14 @@ void print_sync(std::FILE* out, const scoreboard_report& score) {
 }
 
 // One row of the per-pair table; the firmware's columns only for a processed pair.
-void print_pair_row(std::FILE* out, const pair_check& p, const pair_budget& pb) {
+void print_pair_row(std::FILE* out, const platform_top& top, const pair_check& p,
+                    const pair_budget& pb) {
     std::fprintf(out, "  %3u %9.3f  %3lld,%-3lld %4llu %s %s %s", p.pair, ticks_to_ms(p.ready),
                  static_cast<long long>(p.frame[0]), static_cast<long long>(p.frame[1]),
                  static_cast<unsigned long long>(p.scene_frame), p.truth_in_step ? "yes" : "NO ",
                  p.captured ? "yes" : "no ", p.processed ? "yes" : "no ");
     if (p.processed) {
-        std::fprintf(out, "  %-6s", dsp::tracker_state_name(p.record.out.state));
+        std::fprintf(out, "  %-6s", top.tracker_state_name(p.record.out.state));
         if (p.errors.box_scored)
             std::fprintf(out, "  %6.2f", p.errors.box_centre_err_px);
         else
@@ -125,12 +126,13 @@ void print_pair_row(std::FILE* out, const pair_check& p, const pair_budget& pb) 
     std::fprintf(out, "\n");
 }
 
-void print_pairs(std::FILE* out, const scoreboard_report& score, const budget_report& budget) {
+void print_pairs(std::FILE* out, const platform_top& top, const scoreboard_report& score,
+                 const budget_report& budget) {
     std::fprintf(out,
                  "\n-- pairs (times ms): pair ready  frames(L,R) scene step captured processed  "
                  "state  box_err_px  depth_err_%%  latency capture processing\n");
     for (size_t i = 0; i < score.pairs.size(); ++i)
-        print_pair_row(out, score.pairs[i], budget.pairs[i]);
+        print_pair_row(out, top, score.pairs[i], budget.pairs[i]);
 }
 
 // The firmware's track against the scene's truth.
@@ -154,22 +156,29 @@ void print_tracking(std::FILE* out, const scoreboard_report& score) {
                  near, all, s.rmse_x_mm, s.rmse_y_mm, s.rmse_z_mm);
 }
 
+// The index of the firmware's stage called `name`, or -1.
+int stage_index(const budget_report& budget, const char* name) {
+    for (size_t s = 0; s < budget.stage_names.size(); ++s)
+        if (budget.stage_names[s] == name) return static_cast<int>(s);
+    return -1;
+}
+
 // Each stage's modelled time, beside the paper's DSK figures.
 void print_stages(std::FILE* out, const budget_report& budget) {
     std::fprintf(
         out,
         "\n-- stages (modelled, %s at %.0f MHz): mean / max per processed pair, ms; total cycles\n",
         dsp::cost::default_model().id(), budget.cpu_hz / 1e6);
-    for (int s = 0; s < dsp::stage_count; ++s) {
-        std::fprintf(out, "  %-11s %8.3f %8.3f  %12llu\n",
-                     dsp::stage_name(static_cast<dsp::stage>(s)), budget.stage_ms_mean[s],
-                     budget.stage_ms_max[s],
+    const int stages = static_cast<int>(budget.stage_names.size());
+    for (int s = 0; s < stages; ++s) {
+        std::fprintf(out, "  %-11s %8.3f %8.3f  %12llu\n", budget.stage_names[s].c_str(),
+                     budget.stage_ms_mean[s], budget.stage_ms_max[s],
                      static_cast<unsigned long long>(budget.stage_cycles_total[s]));
     }
-    const int track = static_cast<int>(dsp::stage::track);
-    const int sad = static_cast<int>(dsp::stage::stereo_sad);
-    const int edge = static_cast<int>(dsp::stage::stereo_edge);
-    const int xyz = static_cast<int>(dsp::stage::xyz);
+    // The paper's figures are of its stages: shown for a firmware that has them.
+    const int track = stage_index(budget, "track"), sad = stage_index(budget, "stereo_sad"),
+              edge = stage_index(budget, "stereo_edge"), xyz = stage_index(budget, "xyz");
+    if (track < 0 || sad < 0 || edge < 0 || xyz < 0) return;
     std::fprintf(
         out,
         "  paper (DSK): track ~%.3f ms (ours max %.3f), stereo_sad ~%.2f ms (ours max %.3f), "
@@ -232,11 +241,11 @@ void print_sdram_traffic(std::FILE* out, const platform_top& top) {
                  chip.sdram_transfer_time().to_seconds() * 1e3,
                  chip.sdram_late_time().to_seconds() * 1e3);
     if (!top.firmware_started()) return;
-    for (int s = 0; s < dsp::stage_count; ++s) {
-        const dsp::sdram_traffic& t = top.probe().stage_traffic(static_cast<dsp::stage>(s));
-        if (t.empty()) continue;
+    for (uint32_t s = 0; s < top.firmware_descriptor().stage_count; ++s) {
+        const stereosim_sdram_traffic& t = top.probe().stage_traffic(static_cast<int>(s));
+        if (t.bytes_read == 0 && t.bytes_written == 0) continue;
         std::fprintf(out, "   %-11s read %llu B, written %llu B\n",
-                     dsp::stage_name(static_cast<dsp::stage>(s)),
+                     top.stage_name(static_cast<int>(s)),
                      static_cast<unsigned long long>(t.bytes_read),
                      static_cast<unsigned long long>(t.bytes_written));
     }
@@ -254,7 +263,8 @@ void print_budget(std::FILE* out, const budget_report& budget) {
                      p.judged ? "*" : " ", p.cpu_busy_ms, p.emif_busy_ms,
                      static_cast<unsigned long long>(p.cpu_words), p.fifo_peak_words[0],
                      p.fifo_peak_words[1], p.overflow ? 1 : 0, p.drops);
-        for (int s = 0; s < dsp::stage_count; ++s) std::fprintf(out, " %6.3f", p.stage_ms[s]);
+        for (size_t s = 0; s < budget.stage_names.size(); ++s)
+            std::fprintf(out, " %6.3f", p.stage_ms[s]);
         std::fprintf(out, "\n");
     }
     std::fprintf(
@@ -281,7 +291,7 @@ void print_report(std::FILE* out, const platform_top& top, const scoreboard_repo
                   const budget_report& budget, bool per_pair) {
     print_run(out, top);
     print_sync(out, score);
-    if (per_pair) print_pairs(out, score, budget);
+    if (per_pair) print_pairs(out, top, score, budget);
     print_tracking(out, score);
     print_stages(out, budget);
     print_closed_forms(out, top, budget);

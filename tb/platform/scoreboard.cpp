@@ -60,7 +60,7 @@ simtime::ticks first_rise_between(const std::vector<simtime::ticks>& rises, simt
 
 // The firmware's output for a pair with the scene's truth at its frame.
 platform::frame_record record_of(const platform_top& top, uint64_t scene_frame,
-                                 const dsp::frame_output& out) {
+                                 const stereosim_result& out) {
     const scene::scenario& scenario = top.config().scenario;
     platform::frame_record record;
     record.index = static_cast<int>(scene_frame);

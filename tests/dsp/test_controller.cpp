@@ -13,16 +13,16 @@
 #include <vector>
 
 #include "dsp/controller.h"
+#include "tb/platform/host/stereo_runner.h"
 #include "tb/platform/scoring/error_metrics.h"
 #include "tests/support/host/scenarios.h"
-#include "tb/platform/host/stereo_runner.h"
 
 namespace {
 
 using dsp::tracker_state;
 
-std::vector<platform::frame_record> run(const scene::scenario& scenario,
-                                    const dsp::controller_config& config) {
+std::vector<host::host_record> run(const scene::scenario& scenario,
+                                   const dsp::controller_config& config) {
     host::stereo_runner runner(scenario, config);
     return runner.run(0, scenario.frame_count);
 }
@@ -32,17 +32,17 @@ dsp::controller_config default_config(const scene::scenario& scenario) {
 }
 
 // "D" detect, "T" track, "L" lost per frame, for the log.
-std::string state_timeline(const std::vector<platform::frame_record>& records) {
+std::string state_timeline(const std::vector<host::host_record>& records) {
     std::string s;
-    for (const platform::frame_record& r : records) s += dsp::tracker_state_name(r.out.state)[0];
+    for (const host::host_record& r : records) s += dsp::tracker_state_name(r.firmware.state)[0];
     return s;
 }
 
 // The distinct states in order, e.g. DETECT TRACK LOST DETECT TRACK.
-std::vector<tracker_state> state_runs(const std::vector<platform::frame_record>& records) {
+std::vector<tracker_state> state_runs(const std::vector<host::host_record>& records) {
     std::vector<tracker_state> runs;
-    for (const platform::frame_record& r : records)
-        if (runs.empty() || runs.back() != r.out.state) runs.push_back(r.out.state);
+    for (const host::host_record& r : records)
+        if (runs.empty() || runs.back() != r.firmware.state) runs.push_back(r.firmware.state);
     return runs;
 }
 
@@ -58,7 +58,7 @@ TEST(ControllerStates, BallLeavesTheViewAndComesBack) {
     host::stereo_runner runner(scenario, config);
     const host::exit_return_frames when =
         host::exit_return_timing(runner.sequence(), scenario.frame_count);
-    const std::vector<platform::frame_record> records = runner.run(0, scenario.frame_count);
+    const std::vector<host::host_record> records = runner.run(0, scenario.frame_count);
     const int first_motion = platform::first_motion_frame(runner.sequence(), scenario.frame_count);
     std::printf(
         "truth: first motion %d, wholly in view until %d, out of view %d..%d, wholly back at %d\n",
@@ -77,10 +77,10 @@ TEST(ControllerStates, BallLeavesTheViewAndComesBack) {
     EXPECT_EQ(state_runs(records), expected_runs);
 
     int first_track = -1, first_lost = -1, second_track = -1;
-    for (const platform::frame_record& r : records) {
-        if (r.out.state == tracker_state::track && first_track < 0) first_track = r.index;
-        if (r.out.state == tracker_state::lost && first_lost < 0) first_lost = r.index;
-        if (r.out.state == tracker_state::track && first_lost >= 0 && second_track < 0)
+    for (const host::host_record& r : records) {
+        if (r.firmware.state == tracker_state::track && first_track < 0) first_track = r.index;
+        if (r.firmware.state == tracker_state::lost && first_lost < 0) first_lost = r.index;
+        if (r.firmware.state == tracker_state::track && first_lost >= 0 && second_track < 0)
             second_track = r.index;
     }
     std::printf("measured: detection %d, LOST %d, detection again %d\n", first_track, first_lost,
@@ -97,12 +97,13 @@ TEST(ControllerStates, BallLeavesTheViewAndComesBack) {
     // LOST lasts lost_frames_to_detect pairs, then DETECT.
     ASSERT_LT(first_lost + config.lost_frames_to_detect, scenario.frame_count);
     for (int k = 0; k < config.lost_frames_to_detect; ++k)
-        EXPECT_EQ(records[first_lost + k].out.state, tracker_state::lost);
-    EXPECT_EQ(records[first_lost + config.lost_frames_to_detect].out.state, tracker_state::detect);
+        EXPECT_EQ(records[first_lost + k].firmware.state, tracker_state::lost);
+    EXPECT_EQ(records[first_lost + config.lost_frames_to_detect].firmware.state,
+              tracker_state::detect);
     // Nothing is reported while the ball is out of view.
     for (int n = when.first_outside; n <= when.last_outside; ++n) {
-        EXPECT_FALSE(records[n].out.has_object) << "frame " << n;
-        EXPECT_NE(records[n].out.state, tracker_state::track) << "frame " << n;
+        EXPECT_FALSE(records[n].firmware.has_object) << "frame " << n;
+        EXPECT_NE(records[n].firmware.state, tracker_state::track) << "frame " << n;
     }
     // Back: detected within 3 frames of being wholly in view again, then the
     // box on the ball and depth within 2 % to the end.
@@ -110,7 +111,7 @@ TEST(ControllerStates, BallLeavesTheViewAndComesBack) {
     EXPECT_LE(second_track - when.first_inside_again, 3);
     for (int n = second_track; n < scenario.frame_count; ++n) {
         const platform::frame_errors e = platform::score_frame(records[n]);
-        EXPECT_EQ(records[n].out.state, tracker_state::track) << "frame " << n;
+        EXPECT_EQ(records[n].firmware.state, tracker_state::track) << "frame " << n;
         ASSERT_TRUE(e.box_scored) << "frame " << n;
         const double diameter = 2.0 * std::sqrt(records[n].truth.right.area_px / std::acos(-1.0));
         if (n >= second_track + 4) {
@@ -124,9 +125,9 @@ TEST(ControllerStates, BallLeavesTheViewAndComesBack) {
     // Every 3D point reported in the whole run, also next to the borders,
     // is within 2 % (the disparity range-end rule withholds the rest).
     int points = 0, withheld_near_border = 0;
-    for (const platform::frame_record& r : records) {
+    for (const host::host_record& r : records) {
         const platform::frame_errors e = platform::score_frame(r);
-        if (r.out.has_object && !r.out.has_point) ++withheld_near_border;
+        if (r.firmware.has_object && !r.firmware.has_point) ++withheld_near_border;
         if (!e.point_scored) continue;
         ++points;
         EXPECT_LE(std::fabs(e.depth_err_pct), 2.0) << "frame " << r.index;
@@ -138,13 +139,13 @@ TEST(ControllerStates, BallLeavesTheViewAndComesBack) {
 // third on and finds nothing; the state never leaves DETECT.
 TEST(ControllerStates, StaticSceneIsNeverDetected) {
     const scene::scenario scenario = host::static_scenario(40);
-    const std::vector<platform::frame_record> records = run(scenario, default_config(scenario));
+    const std::vector<host::host_record> records = run(scenario, default_config(scenario));
     int detect_runs = 0;
-    for (const platform::frame_record& r : records) {
-        EXPECT_EQ(r.out.state, tracker_state::detect) << "frame " << r.index;
-        EXPECT_FALSE(r.out.motion_found) << "frame " << r.index;
-        EXPECT_FALSE(r.out.has_object) << "frame " << r.index;
-        if (r.out.stage_cycles[static_cast<int>(dsp::stage::detect)] > 0) ++detect_runs;
+    for (const host::host_record& r : records) {
+        EXPECT_EQ(r.firmware.state, tracker_state::detect) << "frame " << r.index;
+        EXPECT_FALSE(r.firmware.motion_found) << "frame " << r.index;
+        EXPECT_FALSE(r.firmware.has_object) << "frame " << r.index;
+        if (r.firmware.stage_cycles[static_cast<int>(dsp::stage::detect)] > 0) ++detect_runs;
     }
     std::printf("static scene: %zu frames, detection ran on %d, states %s\n", records.size(),
                 detect_runs, state_timeline(records).c_str());
@@ -165,13 +166,13 @@ lighting_run run_lighting(double gain, int ramp_frames, bool compensation) {
     dsp::controller_config config = default_config(scenario);
     config.brightness.enabled = compensation;
     lighting_run out;
-    for (const platform::frame_record& r : run(scenario, config)) {
-        out.gains.push_back(r.out.gain_q8_right);
-        if (!r.out.motion_found) continue;
+    for (const host::host_record& r : run(scenario, config)) {
+        out.gains.push_back(r.firmware.gain_q8_right);
+        if (!r.firmware.motion_found) continue;
         if (out.first_motion_frame < 0) out.first_motion_frame = r.index;
         ++out.motion_frames;
-        out.largest_zone_area =
-            std::max(out.largest_zone_area, r.out.motion_box.width * r.out.motion_box.height);
+        out.largest_zone_area = std::max(
+            out.largest_zone_area, r.firmware.motion_box.width * r.firmware.motion_box.height);
     }
     std::printf(
         "light x%.2f %s, compensation %s: moving zone on %d pairs (first %d, largest box %d px), "

@@ -95,8 +95,8 @@ TEST(FirmwareRules, StageCyclesAreNonZeroExactlyForTheStagesThatRan) {
     int seen[kinds] = {};
     tracker_state previous = tracker_state::detect;
     for (int n = 0; n < scenario.frame_count; ++n) {
-        const platform::frame_record r = runner.step(n);
-        const dsp::frame_output& out = r.out;
+        const host::host_record r = runner.step(n);
+        const dsp::frame_output& out = r.firmware;
         const host::counting_hal& hal = runner.hal();
         std::set<stage> expected = {stage::preprocess};
         kind k = kinds;

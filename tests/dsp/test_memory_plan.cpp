@@ -13,9 +13,9 @@
 
 #include "dsp/controller.h"
 #include "dsp/motion_detect.h"
-#include "tests/support/host/scenarios.h"
 #include "tb/platform/host/stereo_runner.h"
 #include "tests/support/data_path.h"
+#include "tests/support/host/scenarios.h"
 
 namespace {
 
@@ -173,7 +173,7 @@ TEST(MemoryPlan, ControllerHistoryStaysConsecutiveOnARenderedSequence) {
     long mismatches = 0;
     dsp::tracker_state previous = dsp::tracker_state::detect;
     for (int n = 0; n < scenario.frame_count; ++n) {
-        const platform::frame_record r = runner.step(n);
+        const host::host_record r = runner.step(n);
         right.push_back(copy_of(runner.firmware().gray_right()));
         if (right.size() >= 2) {
             mismatches +=
@@ -181,20 +181,21 @@ TEST(MemoryPlan, ControllerHistoryStaysConsecutiveOnARenderedSequence) {
                                   right.back(), config.detect.threshold);
             ++checked;
         }
-        if (previous == dsp::tracker_state::detect && right.size() >= 3 && r.out.motion_found) {
+        if (previous == dsp::tracker_state::detect && right.size() >= 3 &&
+            r.firmware.motion_found) {
             const size_t t = right.size() - 1;
             const dsp::detection d =
                 plain.detect(view(right[t - 2]), view(right[t - 1]), view(right[t]), config.detect);
             ASSERT_TRUE(d.object_found) << n;
-            EXPECT_EQ(d.object_box.x, r.out.motion_box.x) << n;
-            EXPECT_EQ(d.object_box.y, r.out.motion_box.y) << n;
-            EXPECT_EQ(d.object_box.width, r.out.motion_box.width) << n;
-            EXPECT_EQ(d.object_box.height, r.out.motion_box.height) << n;
+            EXPECT_EQ(d.object_box.x, r.firmware.motion_box.x) << n;
+            EXPECT_EQ(d.object_box.y, r.firmware.motion_box.y) << n;
+            EXPECT_EQ(d.object_box.width, r.firmware.motion_box.width) << n;
+            EXPECT_EQ(d.object_box.height, r.firmware.motion_box.height) << n;
             ++detections;
         }
         tracked += previous == dsp::tracker_state::track;
         lost += previous == dsp::tracker_state::lost;
-        previous = r.out.state;
+        previous = r.firmware.state;
     }
     std::printf(
         "rendered: %d pairs, %d packed masks checked (%d pairs tracked, "

@@ -68,14 +68,15 @@ size_result run_case(const size_case& c) {
     const double radius_m = radius_for_width(c.diameter_px, c.depth_m, rig.focal_px());
     const scene::scenario scenario = host::pass_scenario(c.depth_m, radius_m);
     host::stereo_runner runner(scenario, platform::controller_config_for(scenario.scene.rig));
-    const std::vector<platform::frame_record> records = runner.run(0, scenario.frame_count);
+    const std::vector<host::host_record> records = runner.run(0, scenario.frame_count);
     size_result r;
-    r.summary = platform::summarize(
-        records, platform::first_motion_frame(runner.sequence(), scenario.frame_count));
-    for (const platform::frame_record& rec : records) {
+    r.summary =
+        platform::summarize(host::scored(records),
+                            platform::first_motion_frame(runner.sequence(), scenario.frame_count));
+    for (const host::host_record& rec : records) {
         if (r.summary.detection_frame < 0 || rec.index < r.summary.detection_frame) continue;
         ++r.frames_after_detection;
-        r.tracked_after_detection += rec.out.state == dsp::tracker_state::track;
+        r.tracked_after_detection += rec.firmware.state == dsp::tracker_state::track;
         const platform::frame_errors e = platform::score_frame(rec);
         if (!e.point_scored) continue;
         ++r.points;

@@ -34,7 +34,7 @@ double ball_diameter_px(const scene::ball_truth& truth) {
 }
 
 struct run_result {
-    std::vector<platform::frame_record> records;
+    std::vector<host::host_record> records;
     platform::run_summary summary;
 };
 
@@ -42,17 +42,17 @@ run_result run(const scene::scenario& scenario, int frames) {
     host::stereo_runner runner(scenario, platform::controller_config_for(scenario.scene.rig));
     run_result r;
     r.records = runner.run(0, frames);
-    r.summary =
-        platform::summarize(r.records, platform::first_motion_frame(runner.sequence(), frames));
+    r.summary = platform::summarize(host::scored(r.records),
+                                    platform::first_motion_frame(runner.sequence(), frames));
     return r;
 }
 
 void print_errors(const char* name, const run_result& r) {
     std::printf("%s: frame state  box_err_px (diam)  dX_mm   dY_mm   depth_err_%%  disp_err_px\n",
                 name);
-    for (const platform::frame_record& rec : r.records) {
+    for (const host::host_record& rec : r.records) {
         const platform::frame_errors e = platform::score_frame(rec);
-        std::printf("%s: %5d %-6s", name, rec.index, dsp::tracker_state_name(rec.out.state));
+        std::printf("%s: %5d %-6s", name, rec.index, dsp::tracker_state_name(rec.firmware.state));
         if (e.box_scored) {
             std::printf(" %6.2f (%5.1f)", e.box_centre_err_px, ball_diameter_px(rec.truth));
         } else {
@@ -99,15 +99,15 @@ void expect_detected_and_tracked(const run_result& r, int settle) {
     EXPECT_GT(s.detection_frame, s.first_motion_frame);
     EXPECT_LE(s.detection_frame - s.first_motion_frame, max_detection_delay);
 
-    for (const platform::frame_record& rec : r.records) {
+    for (const host::host_record& rec : r.records) {
         const platform::frame_errors e = platform::score_frame(rec);
         if (rec.index < s.detection_frame) {
-            EXPECT_FALSE(rec.out.motion_found) << "frame " << rec.index;
-            EXPECT_FALSE(rec.out.has_object) << "frame " << rec.index;
+            EXPECT_FALSE(rec.firmware.motion_found) << "frame " << rec.index;
+            EXPECT_FALSE(rec.firmware.has_object) << "frame " << rec.index;
             continue;
         }
         ASSERT_TRUE(rec.truth.in_both_views) << "scenario leaves the view at " << rec.index;
-        EXPECT_EQ(rec.out.state, dsp::tracker_state::track) << "frame " << rec.index;
+        EXPECT_EQ(rec.firmware.state, dsp::tracker_state::track) << "frame " << rec.index;
         ASSERT_TRUE(e.box_scored) << "frame " << rec.index;
         ASSERT_TRUE(e.point_scored) << "no 3D point in frame " << rec.index;
         EXPECT_LE(std::fabs(e.depth_err_pct), max_depth_error_pct) << "frame " << rec.index;

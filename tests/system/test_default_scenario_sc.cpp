@@ -99,8 +99,8 @@ TEST(default_scenario, ball_detected_within_3_frames_then_tracked_in_3d) {
     EXPECT_LE(s.detection_frame - s.first_motion_frame, 3);
     for (const platform::pair_check& p : s.pairs) {
         if (p.processed && static_cast<int>(p.scene_frame) < s.first_motion_frame) {
-            EXPECT_FALSE(p.record.out.motion_found)
-                << "motion found in still scene frame " << p.scene_frame;
+            EXPECT_FALSE(p.record.out.detected)
+                << "detection in still scene frame " << p.scene_frame;
         }
     }
     ASSERT_GE(s.frames_after_detection, 4);

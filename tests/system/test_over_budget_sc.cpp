@@ -35,7 +35,7 @@ TEST(over_budget, large_search_window_at_low_cpu_clock_is_reported_naming_the_st
         if (o.what != platform::resource::cpu || o.pair == 0) continue;
         const platform::pair_check& p = r.score.pairs[o.pair - 1];
         if (p.record.out.detected) continue;
-        EXPECT_EQ(o.stage, dsp::stage::track) << o.describe();
+        EXPECT_EQ(o.stage_name, "track") << o.describe();
         EXPECT_GT(o.value_ms, o.limit_ms);
         ++tracked_overruns;
         std::printf("%s\n", o.describe().c_str());

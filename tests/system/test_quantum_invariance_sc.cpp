@@ -60,7 +60,7 @@ digest run_and_digest(simtime::ticks quantum) {
     d.results = top.probe().results().size();
     for (const platform::fw_result& r : top.probe().results()) {
         if (r.out.has_point) {
-            d.first_point_z_um = r.out.point.z;
+            d.first_point_z_um = r.out.z_um;
             break;
         }
     }

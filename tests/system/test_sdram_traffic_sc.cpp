@@ -62,9 +62,14 @@ digest digest_of(const platform::budget_report& b) {
 }
 
 dsp::sdram_traffic first_preprocess_traffic(const platform::platform_top& top) {
-    for (const platform::charge_record& c : top.probe().charges())
-        if (c.stage == dsp::stage::preprocess) return c.traffic;
-    return dsp::sdram_traffic{};
+    dsp::sdram_traffic t;
+    for (const platform::charge_record& c : top.probe().charges()) {
+        if (c.stage != static_cast<int>(dsp::stage::preprocess)) continue;
+        t.bytes_read = c.traffic.bytes_read;
+        t.bytes_written = c.traffic.bytes_written;
+        break;
+    }
+    return t;
 }
 
 digest run_in_l2() {
@@ -147,7 +152,7 @@ TEST(sdram_traffic, firmware_sdram_lines_take_bus_time_delay_capture_and_overflo
     const platform::overrun& first = r.budget.overruns.front();
     EXPECT_TRUE(first.what == platform::resource::fifo || first.what == platform::resource::emif)
         << first.describe();
-    EXPECT_EQ(first.stage, dsp::stage::capture);
+    EXPECT_EQ(first.stage, static_cast<int>(dsp::stage::capture));
     std::printf("first overrun: %s; EMIF busy max %.3f ms, FIFO peak R %u words\n",
                 first.describe().c_str(), r.budget.max_emif_busy_ms, r.budget.fifo_peak_words[1]);
 }

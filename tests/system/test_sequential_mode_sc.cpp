@@ -31,7 +31,7 @@ TEST(sequential_mode, over_budget_as_the_closed_form_says_naming_the_stage) {
     EXPECT_GE(r.budget.drops, 3);
     const platform::overrun* drop = r.budget.first(platform::resource::pair_buffers);
     ASSERT_NE(drop, nullptr);
-    EXPECT_EQ(drop->stage, dsp::stage::preprocess);
+    EXPECT_EQ(drop->stage_name, "preprocess");
     int processed = 0, dropped = 0;
     for (const platform::pair_check& p : r.score.pairs) {
         processed += p.processed;

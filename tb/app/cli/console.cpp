@@ -133,7 +133,7 @@ void print_summary(std::FILE* out, const json& report, const std::vector<std::st
         std::fprintf(out, "         ... %zu more in report.json\n", overruns.size() - 3);
 
     std::fprintf(out, "\n  stage          mean ms    max ms   max / budget\n");
-    for (const std::string& stage : stage_names()) {
+    for (const std::string& stage : stage_names(report)) {
         const json& ms = timing.at("stage_ms").at(stage);
         const double mean = ms.at("mean").get<double>(), max = ms.at("max").get<double>();
         std::fprintf(out, "  %-12s %9.3f %9.3f %9.1f %%\n", stage.c_str(), mean, max,

@@ -11,7 +11,11 @@ json firmware_identity(const stereosim_fw_descriptor& d, const firmware::plugin*
             {"version", d.version},
             {"abi_version", d.abi_version},
             {"file", plugin ? json(plugin->path()) : json(nullptr)},
-            {"sha256", plugin ? json(plugin->sha256()) : json(nullptr)}};
+            {"sha256", plugin ? json(plugin->sha256()) : json(nullptr)},
+            {"stages", std::vector<std::string>(d.stage_names, d.stage_names + d.stage_count)},
+            {"tracker_states",
+             std::vector<std::string>(d.tracker_state_names,
+                                      d.tracker_state_names + d.tracker_state_count)}};
 }
 
 json firmware_identity_of(const std::string& path, std::string* error) {

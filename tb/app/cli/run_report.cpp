@@ -11,7 +11,6 @@
 #include <set>
 
 #include "dsp/kernel_costs.h"
-#include "dsp/stage.h"
 #include "tb/app/cli/config_keys.h"
 #include "tb/platform/island/island.h"
 #include "tb/platform/report.h"
@@ -32,15 +31,15 @@ double ticks_to_ms(simtime::ticks t) {
     return static_cast<double>(t) / (static_cast<double>(simtime::ticks_per_ns) * 1e6);
 }
 
-json box_json(const dsp::box& b) {
-    if (b.empty()) return nullptr;
-    return json{{"x", b.x}, {"y", b.y}, {"width", b.width}, {"height", b.height}};
+json box_json(const stereosim_box& b) {
+    if (b.w <= 0 || b.h <= 0) return nullptr;
+    return json{{"x", b.x}, {"y", b.y}, {"width", b.w}, {"height", b.h}};
 }
 
-json stage_ms_json(const double* ms) {
+// Per stage of the firmware's, by its names.
+json stage_ms_json(const double* ms, const std::vector<std::string>& stages) {
     json out = json::object();
-    for (int s = 0; s < dsp::stage_count; ++s)
-        out[dsp::stage_name(static_cast<dsp::stage>(s))] = round6(ms[s]);
+    for (size_t s = 0; s < stages.size(); ++s) out[stages[s]] = round6(ms[s]);
     return out;
 }
 
@@ -143,24 +142,26 @@ json errors_json(const platform::frame_errors& e) {
 
 // The pair forwarded in the period and what the firmware made of it: null
 // fields without a pair, or for what the firmware did not produce.
-void add_pair_fields(json& row, const platform::pair_check* pair, const platform::pair_budget* pb) {
+void add_pair_fields(json& row, const platform::platform_top& top,
+                     const platform::budget_report& budget, const platform::pair_check* pair,
+                     const platform::pair_budget* pb) {
     row["pair"] = pair ? pair_summary_json(*pair, *pb) : json(nullptr);
     for (const char* key : {"stage_ms", "tracker_state", "box_right", "box_left", "disparity_px",
                             "estimate", "truth", "errors"})
         row[key] = nullptr;
     if (!pair || !pair->processed) return;
-    const dsp::frame_output& out = pair->record.out;
-    row["stage_ms"] = stage_ms_json(pb->stage_ms);
-    row["tracker_state"] = dsp::tracker_state_name(out.state);
+    const stereosim_result& out = pair->record.out;
+    row["stage_ms"] = stage_ms_json(pb->stage_ms, budget.stage_names);
+    row["tracker_state"] = top.tracker_state_name(out.state);
     if (out.has_object) {
         row["box_right"] = box_json(out.box_right);
         row["box_left"] = box_json(out.box_left);
     }
     if (out.has_point) {
         row["disparity_px"] = round6(out.disparity_q8 / 256.0);
-        row["estimate"] = {{"x", round6(out.point.x / 1000.0)},
-                           {"y", round6(out.point.y / 1000.0)},
-                           {"z", round6(out.point.z / 1000.0)}};
+        row["estimate"] = {{"x", round6(out.x_um / 1000.0)},
+                           {"y", round6(out.y_um / 1000.0)},
+                           {"z", round6(out.z_um / 1000.0)}};
     }
     if (pair->record.has_truth) row["truth"] = truth_json(pair->record);
     row["errors"] = errors_json(pair->errors);
@@ -176,7 +177,7 @@ json frame_row(const platform::period_budget& period, const platform::platform_t
     const platform::pair_check* pair = pair_ready_in(period, score, &pair_index);
     row["sync"] = period_sync_json(period, top, score, pair);
     row["budget"] = period_budget_json(period, budget, over_budget_periods);
-    add_pair_fields(row, pair, pair ? &budget.pairs[pair_index] : nullptr);
+    add_pair_fields(row, top, budget, pair, pair ? &budget.pairs[pair_index] : nullptr);
     return row;
 }
 
@@ -193,7 +194,7 @@ json overruns_json(const platform::scoreboard_report& score, const platform::bud
         }
         if (period >= 0) over->insert(period);
         overruns.push_back({{"resource", platform::resource_name(o.what)},
-                            {"stage", dsp::stage_name(o.stage)},
+                            {"stage", o.stage_name},
                             {"period", o.period >= 0 ? json(o.period) : json(nullptr)},
                             {"pair", o.pair > 0 ? json(o.pair) : json(nullptr)},
                             {"value_ms", round6(o.value_ms)},
@@ -220,9 +221,9 @@ json sync_summary_json(const platform::scoreboard_report& score) {
 
 json timing_summary_json(const platform::budget_report& budget, size_t frames_over_budget) {
     json stage_ms = json::object();
-    for (int s = 0; s < dsp::stage_count; ++s)
-        stage_ms[dsp::stage_name(static_cast<dsp::stage>(s))] = {
-            {"mean", round6(budget.stage_ms_mean[s])}, {"max", round6(budget.stage_ms_max[s])}};
+    for (size_t s = 0; s < budget.stage_names.size(); ++s)
+        stage_ms[budget.stage_names[s]] = {{"mean", round6(budget.stage_ms_mean[s])},
+                                           {"max", round6(budget.stage_ms_max[s])}};
     return {{"budget_ms", round6(budget.period_ms)},
             {"frames_over_budget", frames_over_budget},
             {"judged_periods", budget.judged_periods},
@@ -288,10 +289,10 @@ json summary_json(const platform::platform_top& top, const platform::scoreboard_
 
 }  // namespace
 
-std::vector<std::string> stage_names() {
+std::vector<std::string> stage_names(const json& report) {
     std::vector<std::string> names;
-    for (int s = 0; s < dsp::stage_count; ++s)
-        names.push_back(dsp::stage_name(static_cast<dsp::stage>(s)));
+    for (const json& s : report.at("tool").at("firmware").at("stages"))
+        names.push_back(s.get<std::string>());
     return names;
 }
 
@@ -302,8 +303,8 @@ std::vector<std::string> stage_names() {
 std::string not_judged_text(const platform::budget_report& budget,
                             const platform::scoreboard_report& score, int frames) {
     std::string stages;
-    for (dsp::stage s : budget.stages_not_run)
-        stages += (stages.empty() ? "" : ", ") + std::string(dsp::stage_name(s));
+    for (int s : budget.stages_not_run)
+        stages += (stages.empty() ? "" : ", ") + budget.stage_names[static_cast<size_t>(s)];
     std::string text =
         "not judged: " + stages + " never ran in " + std::to_string(frames) + " periods; ";
     if (score.first_motion_frame < 0)
@@ -364,8 +365,9 @@ json build_report(const run_setup& setup, const platform::platform_top& top,
     return report;
 }
 
-const std::vector<std::pair<std::string, std::string>>& frame_csv_columns() {
-    static const std::vector<std::pair<std::string, std::string>> columns = [] {
+std::vector<std::pair<std::string, std::string>> frame_csv_columns(const json& report) {
+    const std::vector<std::string> stages = stage_names(report);
+    return [&stages] {
         std::vector<std::pair<std::string, std::string>> c = {
             {"frame", "/frame"},
             {"start_ms", "/start_ms"},
@@ -388,8 +390,7 @@ const std::vector<std::pair<std::string, std::string>>& frame_csv_columns() {
             {"capture_ms", "/pair/capture_ms"},
             {"processing_ms", "/pair/processing_ms"},
             {"latency_ms", "/pair/latency_ms"}};
-        for (const std::string& s : stage_names())
-            c.push_back({"stage_" + s + "_ms", "/stage_ms/" + s});
+        for (const std::string& s : stages) c.push_back({"stage_" + s + "_ms", "/stage_ms/" + s});
         const std::vector<std::pair<std::string, std::string>> rest = {
             {"tracker_state", "/tracker_state"},
             {"box_right_x", "/box_right/x"},
@@ -417,12 +418,11 @@ const std::vector<std::pair<std::string, std::string>>& frame_csv_columns() {
         c.insert(c.end(), rest.begin(), rest.end());
         return c;
     }();
-    return columns;
 }
 
 std::string frames_csv(const json& report) {
     std::string out;
-    const auto& columns = frame_csv_columns();
+    const auto columns = frame_csv_columns(report);
     for (size_t i = 0; i < columns.size(); ++i) out += (i ? "," : "") + columns[i].first;
     out += "\n";
     for (const json& row : report.at("frames")) {

@@ -28,13 +28,14 @@ nlohmann::json build_report(const run_setup& setup, const platform::platform_top
                             const platform::scoreboard_report& score,
                             const platform::budget_report& budget);
 
-// frames.csv: (column name, JSON pointer into a frame row).
-const std::vector<std::pair<std::string, std::string>>& frame_csv_columns();
+// frames.csv: (column name, JSON pointer into a frame row); a column per
+// stage of the report's firmware.
+std::vector<std::pair<std::string, std::string>> frame_csv_columns(const nlohmann::json& report);
 // A header line, then one line per report["frames"] row; null or absent
 // values are empty cells, booleans 1 / 0, numbers as in the JSON.
 std::string frames_csv(const nlohmann::json& report);
 
-// The stage names of docs/design-brief.md in order (dsp::stage_name).
-std::vector<std::string> stage_names();
+// The stage names of the report's firmware, in its order (tool.firmware.stages).
+std::vector<std::string> stage_names(const nlohmann::json& report);
 
 }  // namespace cli

@@ -7,8 +7,6 @@
 #include <cstring>
 
 #include "dsp/card_regs.h"
-#include "dsp/controller.h"
-#include "dsp/stage.h"
 #include "tb/app/faults/fault_spec.h"
 
 namespace output {
@@ -62,7 +60,7 @@ bool write_file(const std::string& path, const std::string& text, std::string* e
 
 }  // namespace
 
-std::vector<translate_filter> translate_filters() {
+std::vector<translate_filter> translate_filters(const stereosim_fw_descriptor& firmware) {
     std::vector<translate_filter> filters;
     {
         // card_regs STATUS.STATE: 0 IDLE 1 OE_LOW 2 WAIT_VSYNC 3 RUN 4 HARD_ERROR
@@ -83,17 +81,17 @@ std::vector<translate_filter> translate_filters() {
         filters.push_back({"card_register.txt", t});
     }
     {
-        std::string t = "# firmware stage (dsp/stage.h); 7: no stage running\n";
-        for (int s = 0; s < dsp::stage_count; ++s)
-            t += std::to_string(s) + " " + dsp::stage_name(static_cast<dsp::stage>(s)) + "\n";
+        std::string t = "# firmware stage (its descriptor's names); " +
+                        std::to_string(platform::stage_idle) + ": no stage running\n";
+        for (uint32_t s = 0; s < firmware.stage_count; ++s)
+            t += std::to_string(s) + " " + firmware.stage_names[s] + "\n";
         t += std::to_string(platform::stage_idle) + " idle\n";
         filters.push_back({"firmware_stage.txt", t});
     }
     {
-        std::string t = "# tracker state after the last pair (dsp/controller.h)\n";
-        for (int s = 0; s <= static_cast<int>(dsp::tracker_state::lost); ++s)
-            t += std::to_string(s) + " " +
-                 dsp::tracker_state_name(static_cast<dsp::tracker_state>(s)) + "\n";
+        std::string t = "# tracker state after the last pair (the firmware's descriptor)\n";
+        for (uint32_t s = 0; s < firmware.tracker_state_count; ++s)
+            t += std::to_string(s) + " " + firmware.tracker_state_names[s] + "\n";
         filters.push_back({"tracker_state.txt", t});
     }
     {
@@ -239,10 +237,10 @@ std::string gtkw_text(const std::string& dump_file, const std::vector<waves_writ
 }
 
 bool write_gtkw(const std::function<std::string(const std::string&)>& path_of,
-                const std::string& name, const std::string& dump_file,
-                const std::vector<waves_writer::signal>& signals, simtime::ticks view_from,
-                simtime::ticks view_span, std::string* error) {
-    for (const translate_filter& f : translate_filters())
+                const stereosim_fw_descriptor& firmware, const std::string& name,
+                const std::string& dump_file, const std::vector<waves_writer::signal>& signals,
+                simtime::ticks view_from, simtime::ticks view_span, std::string* error) {
+    for (const translate_filter& f : translate_filters(firmware))
         if (!write_file(path_of(f.file_name), f.text, error)) return false;
     return write_file(path_of(name + ".gtkw"), gtkw_text(dump_file, signals, view_from, view_span),
                       error);

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "stereosim/firmware.h"
 #include "tb/app/output/waves_writer.h"
 #include "tb/platform/island/pin_trace.h"
 
@@ -30,8 +31,9 @@ struct translate_filter {
     std::string text;       // "value name" lines
 };
 
-// Every translate filter a save file may name.
-std::vector<translate_filter> translate_filters();
+// Every translate filter a save file may name; the firmware stage and
+// tracker state by the names `firmware` declares.
+std::vector<translate_filter> translate_filters(const stereosim_fw_descriptor& firmware);
 // The filter file for a signal format, or nullptr (shown as bits / decimal).
 const char* filter_file_of(platform::trace_format format);
 // The same for a signal: its format's, or fault_kind.txt for the fault marker.
@@ -51,8 +53,8 @@ std::string gtkw_text(const std::string& dump_file,
 // Writes NAME.gtkw and the filter files: each file F to path_of(F) (a .part
 // name first, then renamed). False with *error set on failure.
 bool write_gtkw(const std::function<std::string(const std::string&)>& path_of,
-                const std::string& name, const std::string& dump_file,
-                const std::vector<waves_writer::signal>& signals, simtime::ticks view_from,
-                simtime::ticks view_span, std::string* error);
+                const stereosim_fw_descriptor& firmware, const std::string& name,
+                const std::string& dump_file, const std::vector<waves_writer::signal>& signals,
+                simtime::ticks view_from, simtime::ticks view_span, std::string* error);
 
 }  // namespace output

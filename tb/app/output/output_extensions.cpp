@@ -141,8 +141,9 @@ class waveform_output final : public cli::run_extension {
             first < m_window.to ? std::max<ticks>(m_window.from, first - 2 * 18000) : m_window.from;
         const ticks span = std::min<ticks>(m_window.to - view, 10 * 18000);
         return write_gtkw(
-            [&files](const std::string& f) { return files.staged_path("waves/" + f); }, m_name,
-            file_name(), m_waves->signals(), view, span, error);
+            [&files](const std::string& f) { return files.staged_path("waves/" + f); },
+            run.top.firmware_descriptor(), m_name, file_name(), m_waves->signals(), view, span,
+            error);
     }
 
     std::vector<std::string> summary_lines(const cli::run_result& run) override {

@@ -5,10 +5,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "dsp/controller.h"
-#include "dsp/hal.h"
-#include "dsp/stage.h"
-
 namespace output {
 
 using nlohmann::json;
@@ -62,8 +58,10 @@ struct stage_pairs {
             if (tl[i].a == STEREOSIM_EV_PAIR_CAPTURED) next_captured[i] = tl[i].b;
         }
     }
-    uint32_t of(dsp::stage s, size_t i) const {
-        return s == dsp::stage::capture ? next_captured[i] : next_processed[i];
+    // The firmware's first stage is its capture (the ABI's order): its pair
+    // is the next captured one, every other stage's the next processed one.
+    uint32_t of(int stage, size_t i) const {
+        return stage == 0 ? next_captured[i] : next_processed[i];
     }
 };
 
@@ -120,9 +118,8 @@ class timeline_tracks {
   private:
     void stage_end(size_t i, const platform::timeline_event& e) {
         if (m_stage_begin < 0) return;
-        const auto s = static_cast<dsp::stage>(e.a);
         json x = complete(m_timeline.stage_name(e.a), "stage", cpu, m_stage_begin, e.tick);
-        x["args"] = {{"cycles", e.b}, {"pair", m_pairs.of(s, i)}};
+        x["args"] = {{"cycles", e.b}, {"pair", m_pairs.of(e.a, i)}};
         m_events.push_back(x);
         m_stage_begin = -1;
     }

@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "dsp/plugin/services_hal.h"
 #include "model/scene/bayer_mosaic.h"
 
 namespace host {
@@ -21,12 +22,17 @@ void stereo_runner::render(int n) {
     m_rendered = n;
 }
 
-frame_record stereo_runner::process() {
-    frame_record record;
+std::vector<platform::frame_record> scored(const std::vector<host_record>& records) {
+    return {records.begin(), records.end()};
+}
+
+host_record stereo_runner::process() {
+    host_record record;
     record.index = m_rendered;
     record.time_s = m_frame.time_s;
     m_hal.begin_frame();
-    record.out = m_controller.process_pair(m_raw_left.view(), m_raw_right.view());
+    record.firmware = m_controller.process_pair(m_raw_left.view(), m_raw_right.view());
+    record.out = dsp::plugin::abi_result(0, record.firmware);
     if (!m_frame.balls.empty()) {
         record.has_truth = true;
         record.truth = m_frame.balls.front();
@@ -34,13 +40,13 @@ frame_record stereo_runner::process() {
     return record;
 }
 
-frame_record stereo_runner::step(int n) {
+host_record stereo_runner::step(int n) {
     render(n);
     return process();
 }
 
-std::vector<frame_record> stereo_runner::run(int first, int count) {
-    std::vector<frame_record> records;
+std::vector<host_record> stereo_runner::run(int first, int count) {
+    std::vector<host_record> records;
     records.reserve(static_cast<size_t>(count > 0 ? count : 0));
     for (int n = first; n < first + count; ++n) records.push_back(step(n));
     return records;

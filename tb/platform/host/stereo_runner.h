@@ -16,7 +16,14 @@
 
 namespace host {
 
-using platform::frame_record;
+// One pair the host runner processed: what the platform scores (the ABI's
+// result, frame_record::out) and the reference firmware's whole output.
+struct host_record : platform::frame_record {
+    dsp::frame_output firmware;
+};
+
+// The platform's part of each record (what platform::summarize reads).
+std::vector<platform::frame_record> scored(const std::vector<host_record>& records);
 
 class stereo_runner {
   public:
@@ -33,11 +40,11 @@ class stereo_runner {
     const scene::stereo_frame& frame() const { return m_frame; }
 
     // Feeds the current raw pair to the firmware; one HAL frame per call.
-    frame_record process();
+    host_record process();
     // render(n) then process().
-    frame_record step(int n);
+    host_record step(int n);
     // Frames first .. first + count - 1.
-    std::vector<frame_record> run(int first, int count);
+    std::vector<host_record> run(int first, int count);
 
     dsp::controller& firmware() { return m_controller; }
     counting_hal& hal() { return m_hal; }

@@ -51,8 +51,9 @@ const trace_signal table[trace_pin_count] = {
     {"emif", "ARDY", 1, f::bits},
     {"interrupts", "taken", 8, f::interrupt},
     {"interrupts", "cpu_asleep", 1, f::bits},
-    {"firmware", "stage", 3, f::firmware_stage},
-    {"firmware", "state", 2, f::tracker_state},
+    // Wide enough for every stage and tracker state the firmware ABI allows.
+    {"firmware", "stage", 4, f::firmware_stage},
+    {"firmware", "state", 3, f::tracker_state},
 };
 
 }  // namespace

@@ -44,8 +44,8 @@ enum class trace_format : uint8_t {
     oe_state,        // the card's OE controller FSM (card_regs: STATUS.STATE)
     verdict,         // VERDICT causes
     card_register,   // word index of a card register on CE2 (EA[7:2])
-    firmware_stage,  // dsp::stage, or `stage_idle`
-    tracker_state,   // dsp::tracker_state
+    firmware_stage,  // the firmware's declared stage index, or `stage_idle`
+    tracker_state,   // the firmware's declared tracker state index
     interrupt,       // the EXT_INT number the CPU took
 };
 
@@ -78,8 +78,9 @@ class pin_trace {
     virtual card_waves* card_file() { return nullptr; }
 };
 
-// The firmware stage signal's value when no stage runs.
-inline constexpr uint64_t stage_idle = 7;
+// The firmware stage signal's value when no stage runs (stages are
+// 0..STEREOSIM_FW_MAX_STAGES - 1).
+inline constexpr uint64_t stage_idle = 15;
 // card.emif_slave.register while CE2 is high: no card register (the map
 // ends at word 38, rtl/card_regs.csv); its filter says "(no access)".
 inline constexpr uint64_t register_no_access = 63;

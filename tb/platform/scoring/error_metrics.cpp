@@ -14,21 +14,23 @@ bool ball_in_right_view(const frame_record& record) {
 
 frame_errors score_frame(const frame_record& record) {
     frame_errors e;
-    const dsp::frame_output& out = record.out;
+    const stereosim_result& out = record.out;
     if (!ball_in_right_view(record)) return e;
     const scene::ball_truth& truth = record.truth;
 
     if (out.has_object) {
         e.box_scored = true;
-        e.box_centre_dx_px = 0.5 * out.box_right.center_x2() - truth.right.ellipse_centre.x;
-        e.box_centre_dy_px = 0.5 * out.box_right.center_y2() - truth.right.ellipse_centre.y;
+        // The centre of the box's pixels: (2x + w - 1) / 2.
+        const stereosim_box& b = out.box_right;
+        e.box_centre_dx_px = 0.5 * (2 * b.x + b.w - 1) - truth.right.ellipse_centre.x;
+        e.box_centre_dy_px = 0.5 * (2 * b.y + b.h - 1) - truth.right.ellipse_centre.y;
         e.box_centre_err_px = std::hypot(e.box_centre_dx_px, e.box_centre_dy_px);
     }
     if (out.has_point && record.truth_has_point) {
         e.point_scored = true;
-        e.est_mm[0] = out.point.x / 1000.0;
-        e.est_mm[1] = out.point.y / 1000.0;
-        e.est_mm[2] = out.point.z / 1000.0;
+        e.est_mm[0] = out.x_um / 1000.0;
+        e.est_mm[1] = out.y_um / 1000.0;
+        e.est_mm[2] = out.z_um / 1000.0;
         e.centre_mm[0] = truth.centre_m.x * 1000.0;
         e.centre_mm[1] = truth.centre_m.y * 1000.0;
         e.centre_mm[2] = truth.centre_m.z * 1000.0;
@@ -49,11 +51,11 @@ run_summary summarize(const std::vector<frame_record>& records, int first_motion
     s.first_motion_frame = first_motion_frame;
     double sum_x2 = 0.0, sum_y2 = 0.0, sum_z2 = 0.0, sum_box = 0.0;
     for (const frame_record& record : records) {
-        const dsp::frame_output& out = record.out;
+        const stereosim_result& out = record.out;
         if (out.detected && s.detection_frame < 0) s.detection_frame = record.index;
         if (out.has_object) ++s.tracked_frames;
         uint64_t pair_cycles = 0;
-        for (int i = 0; i < dsp::stage_count; ++i) {
+        for (uint32_t i = 0; i < STEREOSIM_FW_MAX_STAGES; ++i) {
             s.stage_cycles_total[i] += out.stage_cycles[i];
             if (out.stage_cycles[i] > s.stage_cycles_max[i])
                 s.stage_cycles_max[i] = out.stage_cycles[i];

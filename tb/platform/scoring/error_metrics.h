@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "dsp/stage.h"
 #include "tb/platform/scoring/frame_record.h"
 
 namespace platform {
@@ -43,9 +42,10 @@ struct run_summary {
            rmse_z_mm = 0.0;  // over scored points
     double max_abs_depth_err_pct = 0.0;
     double mean_box_centre_err_px = 0.0, max_box_centre_err_px = 0.0;
-    uint64_t stage_cycles_total[dsp::stage_count] = {};  // summed over all pairs
-    uint64_t stage_cycles_max[dsp::stage_count] = {};    // largest single pair
-    uint64_t pair_cycles_max = 0;                        // largest pair, all stages
+    // Per stage the firmware may declare (its descriptor names them).
+    uint64_t stage_cycles_total[STEREOSIM_FW_MAX_STAGES] = {};  // summed over all pairs
+    uint64_t stage_cycles_max[STEREOSIM_FW_MAX_STAGES] = {};    // largest single pair
+    uint64_t pair_cycles_max = 0;                               // largest pair, all stages
 };
 
 run_summary summarize(const std::vector<frame_record>& records, int first_motion_frame);

@@ -1,10 +1,12 @@
 // One processed stereo pair beside the scene's truth, and what the platform
 // and the host runner (tb/platform/host) both need to score it: the
 // firmware's configuration for a scene rig and the first frame that moves.
+// The pair's output is the firmware ABI's result: what any firmware reports.
 #pragma once
 
 #include "dsp/controller.h"
 #include "model/scene/sequence.h"
+#include "stereosim/firmware.h"
 
 namespace platform {
 
@@ -15,7 +17,7 @@ namespace platform {
 struct frame_record {
     int index = 0;
     double time_s = 0.0;
-    dsp::frame_output out;
+    stereosim_result out{};
     bool has_truth = false;
     bool truth_has_point = true;
     scene::ball_truth truth;

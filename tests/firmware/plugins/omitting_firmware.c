@@ -4,7 +4,14 @@
  * key of its own, `omit`, names what it leaves out ("none": nothing). It
  * stands for a user's firmware that forgets a report: the contract must
  * name the missing report (docs/firmware-abi.md, "The reporting protocol"),
- * not pass it or blame something else. */
+ * not pass it or blame something else.
+ *
+ * Built with RENAMED_STAGES (renaming_firmware.so) it leaves nothing out but
+ * declares 15 stages: 8 it never runs ("pad0".."pad7", optional in its
+ * policy), then the reference's 7 renamed "x_" + name, and its tracker
+ * states renamed; each stage index and each result's per-stage cycles are
+ * moved by 8. A firmware whose stages are not the reference's: the budget,
+ * report.json, frames.csv and the waveform must follow its descriptor. */
 #define _POSIX_C_SOURCE 200809L
 #include <dlfcn.h>
 #include <stdio.h>
@@ -37,6 +44,16 @@ static const uint32_t omit_kinds[OMIT_COUNT] = {0, /* none */
 
 #define MAX_KEYS 128u
 
+#ifdef RENAMED_STAGES
+#define STAGE_SHIFT 8u
+static const char* const renamed_stages[STEREOSIM_FW_MAX_STAGES] = {
+    "pad0",      "pad1",   "pad2",     "pad3",    "pad4",         "pad5",          "pad6", "pad7",
+    "x_capture", "x_gray", "x_detect", "x_track", "x_stereo_sad", "x_stereo_edge", "x_xyz"};
+static const char* const renamed_states[] = {"X_DETECT", "X_TRACK", "X_LOST"};
+#else
+#define STAGE_SHIFT 0u
+#endif
+
 typedef struct omitting {
     stereosim_services filtered; /* what the reference sees */
     const stereosim_services* platform;
@@ -58,23 +75,27 @@ static void report(void* ctx, const stereosim_event* event) {
 static void report_result(void* ctx, const stereosim_result* result) {
     const omitting* self = (const omitting*)ctx;
     if (self->omit == OMIT_RESULT) return;
-    self->platform->report_result(self->platform->ctx, result);
+    stereosim_result moved = *result;
+    memset(moved.stage_cycles, 0, sizeof moved.stage_cycles);
+    for (uint32_t s = 0; s + STAGE_SHIFT < STEREOSIM_FW_MAX_STAGES; ++s)
+        moved.stage_cycles[s + STAGE_SHIFT] = result->stage_cycles[s];
+    self->platform->report_result(self->platform->ctx, &moved);
 }
 
 /* Every other service is the platform's, called with the platform's context. */
 #define PLATFORM(ctx) (((const omitting*)(ctx))->platform)
 static void charge(void* ctx, uint32_t stage, uint64_t cycles, const stereosim_sdram_traffic* t) {
-    PLATFORM(ctx)->charge(PLATFORM(ctx)->ctx, stage, cycles, t);
+    PLATFORM(ctx)->charge(PLATFORM(ctx)->ctx, stage + STAGE_SHIFT, cycles, t);
 }
 static uint64_t kernel_cycles(void* ctx, const stereosim_kernel_profile* k,
                               stereosim_sdram_traffic* t) {
     return PLATFORM(ctx)->kernel_cycles(PLATFORM(ctx)->ctx, k, t);
 }
 static void stage_begin(void* ctx, uint32_t stage) {
-    PLATFORM(ctx)->stage_begin(PLATFORM(ctx)->ctx, stage);
+    PLATFORM(ctx)->stage_begin(PLATFORM(ctx)->ctx, stage + STAGE_SHIFT);
 }
 static void stage_end(void* ctx, uint32_t stage) {
-    PLATFORM(ctx)->stage_end(PLATFORM(ctx)->ctx, stage);
+    PLATFORM(ctx)->stage_end(PLATFORM(ctx)->ctx, stage + STAGE_SHIFT);
 }
 static uint32_t read32(void* ctx, uint32_t address) {
     return PLATFORM(ctx)->read32(PLATFORM(ctx)->ctx, address);
@@ -147,6 +168,7 @@ static void destroy(void* instance) {
 
 static void policy(const void* instance, stereosim_fw_policy* out) {
     reference->policy(((const omitting*)instance)->inner, out);
+    out->optional_stages = (out->optional_stages << STAGE_SHIFT) | ((1u << STAGE_SHIFT) - 1u);
 }
 
 static const stereosim_fw_descriptor* load_reference(void) {
@@ -181,6 +203,12 @@ STEREOSIM_FIRMWARE_EXPORT const stereosim_fw_descriptor* stereosim_firmware(void
         descriptor.run = run;
         descriptor.destroy = destroy;
         descriptor.policy = policy;
+#ifdef RENAMED_STAGES
+        descriptor.name = "renamed-reference";
+        descriptor.stage_count = STEREOSIM_FW_MAX_STAGES;
+        descriptor.stage_names = renamed_stages;
+        descriptor.tracker_state_names = renamed_states;
+#endif
     }
     return &descriptor;
 }
