@@ -17,10 +17,10 @@ constexpr double paper_track_ms = 1.756;
 constexpr double paper_stereo_sad_ms = 4.71;
 constexpr double paper_edge_xyz_ms = 5.0;
 
-// The card's CECTL the firmware programs (docs/budget.md): the DSK's, or
-// the configured card timing.
-uint32_t card_cectl(const platform_config& config) {
-    return dsp::card_cectl(program_config(config));
+// The card's CECTL as the firmware programmed it on the bus (docs/budget.md;
+// the DSK's reset value if it never did): CE3, the pixel port.
+uint32_t card_cectl(const platform_top& top) {
+    return top.engine().cectl(3);
 }
 
 }  // namespace
@@ -36,7 +36,7 @@ run_figures figures_of(const platform_top& top) {
 
 capture_figures capture_closed_form(const platform_top& top) {
     return capture(top.config().profile.active_cols, top.config().profile.active_rows,
-                   card_cectl(top.config()), top.engine().config());
+                   card_cectl(top), top.engine().config());
 }
 
 namespace {
@@ -207,7 +207,7 @@ void print_closed_forms(std::FILE* out, const platform_top& top, const budget_re
     // The firmware's SDRAM lines on the bus (docs/budget.md): only when they
     // are replayed there.
     const traffic_figures tf =
-        firmware_traffic(config.profile.active_cols, config.profile.active_rows, card_cectl(config),
+        firmware_traffic(config.profile.active_cols, config.profile.active_rows, card_cectl(top),
                          top.engine().config());
     const double traffic_ms = config.sdram_traffic_on_bus ? tf.ms() : 0.0;
     std::fprintf(out,

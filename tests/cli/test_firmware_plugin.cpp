@@ -447,4 +447,29 @@ TEST(FirmwareSweep, EveryPointRunsThePlugin) {
     EXPECT_NE(mixed.output.find("not shards of one sweep"), std::string::npos) << mixed.output;
 }
 
+// The line time of report.txt's capture closed form, in ECLK ("line N").
+long line_eclk(const std::string& dir) {
+    const std::string text = testsupport::read_text(dir + "/report.txt");
+    const size_t at = text.find("ECLK: line ");
+    return at == std::string::npos ? -1 : std::stol(text.substr(at + 11));
+}
+
+// After a run, the card's bus timing in the report is the CECTL the
+// firmware programmed, not what the reference would have: the minimal
+// firmware never programs CE3, so on DSK v3 the bus keeps the DSK v1
+// timing the EMIF starts with, while the reference programs v3's.
+TEST(FirmwarePluginRun, TheReportedCardTimingIsWhatTheFirmwareProgrammed) {
+    const std::string dir = testsupport::temp_dir("fw_cectl");
+    const std::string run = "run --quiet --frames 2 --out ";
+    testsupport::run_command(stereosim(run + dir + "/ref_v1 --dsk v1"));
+    testsupport::run_command(stereosim(run + dir + "/ref_v3 --dsk v3"));
+    testsupport::run_command(
+        stereosim(run + dir + "/min_v3 --dsk v3 --firmware " + std::string(MINIMAL_FIRMWARE)));
+    const long v1 = line_eclk(dir + "/ref_v1"), v3 = line_eclk(dir + "/ref_v3");
+    ASSERT_GT(v1, 0);
+    ASSERT_GT(v3, 0);
+    EXPECT_NE(v1, v3);
+    EXPECT_EQ(line_eclk(dir + "/min_v3"), v1);
+}
+
 }  // namespace

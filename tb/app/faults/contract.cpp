@@ -84,9 +84,10 @@ contract_params params_for(const platform::platform_config& config) {
 }
 
 contract_params params_for(const platform::platform_config& config,
-                           const stereosim_fw_policy& policy) {
+                           const stereosim_fw_policy& policy, uint32_t programmed_card_cectl) {
     contract_params p = params_for(config);
     p.hard_error_rearms = policy.hard_error_rearms;
+    p.eclk_per_word = emif::decode_cectl(programmed_card_cectl).read_cycles();
     return p;
 }
 

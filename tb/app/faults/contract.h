@@ -75,10 +75,11 @@ struct contract_params {
     double period_ms = 24.5;
 };
 contract_params params_for(const platform::platform_config& config);
-// The same, with the recovery policy the firmware under test declared (its
-// re-arms after a hard error) in place of the run's setting.
+// The same for a run: the recovery policy the firmware under test declared
+// (its re-arms after a hard error) in place of the run's setting, and the
+// card's read time from the CECTL it programmed on the bus.
 contract_params params_for(const platform::platform_config& config,
-                           const stereosim_fw_policy& policy);
+                           const stereosim_fw_policy& policy, uint32_t programmed_card_cectl);
 
 // The contract's row for one fault, given the run's settings and what the
 // run shows about preconditions (an OE restart after a dead / oe-stuck onset).

@@ -575,7 +575,7 @@ fault_run_result evaluate(platform::platform_top& top, const platform::scoreboar
                           const std::vector<fault_spec>& specs) {
     fault_run_result r;
     r.specs = specs;
-    r.params = params_for(top.config(), top.firmware_policy());
+    r.params = params_for(top.config(), top.firmware_policy(), top.engine().cectl(3));
     r.run = observe(top, score, specs);
     note_expected_give_ups(specs, r.params, &r.run);
     if (specs.empty()) r.verdicts.push_back(check_clean(r.run));
