@@ -149,15 +149,6 @@ void platform_top::firmware(dsp::hal& hal) {
     m_instance = nullptr;
 }
 
-const char* platform_top::stage_name(int s) const {
-    return s >= 0 && static_cast<uint32_t>(s) < m_firmware->stage_count ? m_firmware->stage_names[s]
-                                                                        : "?";
-}
-
-const char* platform_top::tracker_state_name(uint32_t s) const {
-    return s < m_firmware->tracker_state_count ? m_firmware->tracker_state_names[s] : "?";
-}
-
 void platform_top::advance_to(simtime::ticks t) {
     const sc_core::sc_time until =
         simtime::sc_time_of(std::min(t, m_config.period * m_config.frames));

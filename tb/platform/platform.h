@@ -117,10 +117,6 @@ class platform_top {
     const stereosim_fw_descriptor& firmware_descriptor() const { return *m_firmware; }
     const firmware::plugin* firmware_plugin() const { return m_plugin.get(); }
     const stereosim_fw_policy& firmware_policy() const { return m_policy; }
-    // The firmware's names of its declared stage s and tracker state s
-    // ("?" for an index it did not declare).
-    const char* stage_name(int s) const;
-    const char* tracker_state_name(uint32_t s) const;
     const timeline& events() const { return m_timeline; }
     // An injected fault's onset on the timeline (tb/app/faults, after the run).
     void mark_fault(simtime::ticks tick, uint8_t index, uint32_t type, uint32_t frame) {

@@ -110,7 +110,7 @@ void print_pair_row(std::FILE* out, const platform_top& top, const pair_check& p
                  static_cast<unsigned long long>(p.scene_frame), p.truth_in_step ? "yes" : "NO ",
                  p.captured ? "yes" : "no ", p.processed ? "yes" : "no ");
     if (p.processed) {
-        std::fprintf(out, "  %-6s", top.tracker_state_name(p.record.out.state));
+        std::fprintf(out, "  %-6s", top.events().state_name(static_cast<int>(p.record.out.state)));
         if (p.errors.box_scored)
             std::fprintf(out, "  %6.2f", p.errors.box_centre_err_px);
         else
@@ -245,7 +245,7 @@ void print_sdram_traffic(std::FILE* out, const platform_top& top) {
         const stereosim_sdram_traffic& t = top.probe().stage_traffic(static_cast<int>(s));
         if (t.bytes_read == 0 && t.bytes_written == 0) continue;
         std::fprintf(out, "   %-11s read %llu B, written %llu B\n",
-                     top.stage_name(static_cast<int>(s)),
+                     top.events().stage_name(static_cast<int>(s)),
                      static_cast<unsigned long long>(t.bytes_read),
                      static_cast<unsigned long long>(t.bytes_written));
     }

@@ -152,7 +152,7 @@ void add_pair_fields(json& row, const platform::platform_top& top,
     if (!pair || !pair->processed) return;
     const stereosim_result& out = pair->record.out;
     row["stage_ms"] = stage_ms_json(pb->stage_ms, budget.stage_names);
-    row["tracker_state"] = top.tracker_state_name(out.state);
+    row["tracker_state"] = top.events().state_name(static_cast<int>(out.state));
     if (out.has_object) {
         row["box_right"] = box_json(out.box_right);
         row["box_left"] = box_json(out.box_left);
@@ -366,58 +366,56 @@ json build_report(const run_setup& setup, const platform::platform_top& top,
 }
 
 std::vector<std::pair<std::string, std::string>> frame_csv_columns(const json& report) {
-    const std::vector<std::string> stages = stage_names(report);
-    return [&stages] {
-        std::vector<std::pair<std::string, std::string>> c = {
-            {"frame", "/frame"},
-            {"start_ms", "/start_ms"},
-            {"card_verdict", "/sync/card"},
-            {"oe_restarts", "/sync/oe_restarts"},
-            {"pair", "/sync/pair"},
-            {"in_step", "/sync/in_step"},
-            {"judged", "/budget/judged"},
-            {"over_budget", "/budget/over_budget"},
-            {"cpu_busy_ms", "/budget/cpu_busy_ms"},
-            {"emif_busy_ms", "/budget/emif_busy_ms"},
-            {"slack_ms", "/budget/slack_ms"},
-            {"fifo_peak_left", "/budget/fifo_peak_words/left"},
-            {"fifo_peak_right", "/budget/fifo_peak_words/right"},
-            {"overflow", "/budget/overflow"},
-            {"drops", "/budget/drops"},
-            {"scene_frame", "/pair/scene_frame"},
-            {"captured", "/pair/captured"},
-            {"processed", "/pair/processed"},
-            {"capture_ms", "/pair/capture_ms"},
-            {"processing_ms", "/pair/processing_ms"},
-            {"latency_ms", "/pair/latency_ms"}};
-        for (const std::string& s : stages) c.push_back({"stage_" + s + "_ms", "/stage_ms/" + s});
-        const std::vector<std::pair<std::string, std::string>> rest = {
-            {"tracker_state", "/tracker_state"},
-            {"box_right_x", "/box_right/x"},
-            {"box_right_y", "/box_right/y"},
-            {"box_right_width", "/box_right/width"},
-            {"box_right_height", "/box_right/height"},
-            {"box_left_x", "/box_left/x"},
-            {"box_left_y", "/box_left/y"},
-            {"box_left_width", "/box_left/width"},
-            {"box_left_height", "/box_left/height"},
-            {"disparity_px", "/disparity_px"},
-            {"est_x_mm", "/estimate/x"},
-            {"est_y_mm", "/estimate/y"},
-            {"est_z_mm", "/estimate/z"},
-            {"true_x_mm", "/truth/x"},
-            {"true_y_mm", "/truth/y"},
-            {"true_z_mm", "/truth/z"},
-            {"true_z_visible_mm", "/truth/z_visible"},
-            {"err_x_mm", "/errors/x_mm"},
-            {"err_y_mm", "/errors/y_mm"},
-            {"err_z_mm", "/errors/z_mm"},
-            {"err_depth_pct", "/errors/depth_pct"},
-            {"err_disparity_px", "/errors/disparity_px"},
-            {"err_box_centre_px", "/errors/box_centre_px"}};
-        c.insert(c.end(), rest.begin(), rest.end());
-        return c;
-    }();
+    std::vector<std::pair<std::string, std::string>> c = {
+        {"frame", "/frame"},
+        {"start_ms", "/start_ms"},
+        {"card_verdict", "/sync/card"},
+        {"oe_restarts", "/sync/oe_restarts"},
+        {"pair", "/sync/pair"},
+        {"in_step", "/sync/in_step"},
+        {"judged", "/budget/judged"},
+        {"over_budget", "/budget/over_budget"},
+        {"cpu_busy_ms", "/budget/cpu_busy_ms"},
+        {"emif_busy_ms", "/budget/emif_busy_ms"},
+        {"slack_ms", "/budget/slack_ms"},
+        {"fifo_peak_left", "/budget/fifo_peak_words/left"},
+        {"fifo_peak_right", "/budget/fifo_peak_words/right"},
+        {"overflow", "/budget/overflow"},
+        {"drops", "/budget/drops"},
+        {"scene_frame", "/pair/scene_frame"},
+        {"captured", "/pair/captured"},
+        {"processed", "/pair/processed"},
+        {"capture_ms", "/pair/capture_ms"},
+        {"processing_ms", "/pair/processing_ms"},
+        {"latency_ms", "/pair/latency_ms"}};
+    for (const std::string& s : stage_names(report))
+        c.push_back({"stage_" + s + "_ms", "/stage_ms/" + s});
+    const std::vector<std::pair<std::string, std::string>> rest = {
+        {"tracker_state", "/tracker_state"},
+        {"box_right_x", "/box_right/x"},
+        {"box_right_y", "/box_right/y"},
+        {"box_right_width", "/box_right/width"},
+        {"box_right_height", "/box_right/height"},
+        {"box_left_x", "/box_left/x"},
+        {"box_left_y", "/box_left/y"},
+        {"box_left_width", "/box_left/width"},
+        {"box_left_height", "/box_left/height"},
+        {"disparity_px", "/disparity_px"},
+        {"est_x_mm", "/estimate/x"},
+        {"est_y_mm", "/estimate/y"},
+        {"est_z_mm", "/estimate/z"},
+        {"true_x_mm", "/truth/x"},
+        {"true_y_mm", "/truth/y"},
+        {"true_z_mm", "/truth/z"},
+        {"true_z_visible_mm", "/truth/z_visible"},
+        {"err_x_mm", "/errors/x_mm"},
+        {"err_y_mm", "/errors/y_mm"},
+        {"err_z_mm", "/errors/z_mm"},
+        {"err_depth_pct", "/errors/depth_pct"},
+        {"err_disparity_px", "/errors/disparity_px"},
+        {"err_box_centre_px", "/errors/box_centre_px"}};
+    c.insert(c.end(), rest.begin(), rest.end());
+    return c;
 }
 
 std::string frames_csv(const json& report) {
