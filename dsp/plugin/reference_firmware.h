@@ -27,6 +27,9 @@ enum reference_key : uint32_t {
 };
 
 const stereosim_fw_descriptor& reference_firmware();
+// Its optional host entry: the controller alone over raw pairs (the sweep's
+// closed form).
+const stereosim_fw_host& reference_host();
 
 // The control program's configuration for `board` and the keys' `values`
 // (reference_key_count of them, in range).

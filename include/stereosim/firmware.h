@@ -305,6 +305,34 @@ typedef struct stereosim_fw_descriptor {
 
 typedef const stereosim_fw_descriptor* (*stereosim_firmware_entry)(void);
 
+/* ---- optional: the processing chain alone, on the host ----
+ * A plugin may also export STEREOSIM_FIRMWARE_HOST_ENTRY returning this
+ * table. The sweep's closed form (docs/sweep.md) then prices a point's pairs
+ * without a co-simulation: the platform renders the scenario, mosaics each
+ * frame in the board's CFA as the sensors deliver it, and hands the raw pair
+ * to process_pair. Of the services only charge, kernel_cycles, stage_begin,
+ * stage_end, report and report_result do anything there: there is no bus
+ * (read32 returns 0, write32 does nothing), no memory (NULL), no interrupt
+ * (NO_INTERRUPT) and stop_requested is 0. A plugin without the symbol gets
+ * no closed-form processing estimate, which the sweep says per point.
+ * Adding this symbol changed no structure above: the ABI version stays 1. */
+#define STEREOSIM_FIRMWARE_HOST_ENTRY "stereosim_firmware_host"
+
+typedef struct stereosim_fw_host {
+    uint32_t abi_version; /* STEREOSIM_FIRMWARE_ABI_VERSION the plugin was built for */
+    /* As the descriptor's create, for host runs. */
+    void* (*create)(const stereosim_services* services, const stereosim_board* board,
+                    const double* values, char* error, size_t error_size);
+    /* One raw Bayer pair, active_cols x active_rows bytes each, row after
+     * row: reports exactly one result for `pair`, whose stage_cycles hold
+     * every cycle the pair costs in the co-simulation (its capture work
+     * included). */
+    void (*process_pair)(void* instance, uint32_t pair, const uint8_t* left, const uint8_t* right);
+    void (*destroy)(void* instance);
+} stereosim_fw_host;
+
+typedef const stereosim_fw_host* (*stereosim_firmware_host_entry)(void);
+
 /* The entry a plugin defines; exported even when the plugin is built with
  * hidden visibility (stereosim_add_firmware does). */
 #if defined(__GNUC__)
@@ -313,6 +341,8 @@ typedef const stereosim_fw_descriptor* (*stereosim_firmware_entry)(void);
 #define STEREOSIM_FIRMWARE_EXPORT
 #endif
 STEREOSIM_FIRMWARE_EXPORT const stereosim_fw_descriptor* stereosim_firmware(void);
+/* Optional (see stereosim_fw_host). */
+STEREOSIM_FIRMWARE_EXPORT const stereosim_fw_host* stereosim_firmware_host(void);
 
 #ifdef __cplusplus
 }

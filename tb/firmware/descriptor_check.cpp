@@ -105,4 +105,13 @@ std::string descriptor_problem(const stereosim_fw_descriptor& d) {
     return "";
 }
 
+std::string host_problem(const stereosim_fw_host& h) {
+    if (h.abi_version != STEREOSIM_FIRMWARE_ABI_VERSION)
+        return "host entry built for ABI version " + std::to_string(h.abi_version) +
+               ", this stereosim speaks " + std::to_string(STEREOSIM_FIRMWARE_ABI_VERSION);
+    if (h.create == nullptr || h.process_pair == nullptr || h.destroy == nullptr)
+        return "a host entry point (create, process_pair, destroy) is missing";
+    return "";
+}
+
 }  // namespace firmware

@@ -15,6 +15,8 @@ namespace firmware {
 // version 2, this stereosim speaks 1"), or empty when the descriptor is
 // usable.
 std::string descriptor_problem(const stereosim_fw_descriptor& d);
+// The same for the optional host entry's table.
+std::string host_problem(const stereosim_fw_host& h);
 
 // A name the reports, --set and the waveform can carry: [a-z0-9_]+,
 // starting with a letter; with `upper`, capitals too (tracker states, shown

@@ -50,6 +50,13 @@ std::unique_ptr<plugin> plugin::load(const std::string& path, std::string* error
     std::string problem = entry == nullptr ? std::string("no symbol ") + STEREOSIM_FIRMWARE_ENTRY
                           : d == nullptr   ? std::string("its entry returned no descriptor")
                                            : descriptor_problem(*d);
+    // The host entry is optional; one that is there must be usable.
+    const auto host_entry = reinterpret_cast<stereosim_firmware_host_entry>(
+        dlsym(handle, STEREOSIM_FIRMWARE_HOST_ENTRY));
+    const stereosim_fw_host* host = host_entry ? host_entry() : nullptr;
+    if (problem.empty() && host_entry != nullptr)
+        problem =
+            host == nullptr ? std::string("its host entry returned no table") : host_problem(*host);
     if (!problem.empty()) {
         dlclose(handle);
         *error = file + problem;
@@ -58,6 +65,7 @@ std::unique_ptr<plugin> plugin::load(const std::string& path, std::string* error
     std::unique_ptr<plugin> p(new plugin);
     p->m_handle = handle;
     p->m_descriptor = d;
+    p->m_host = host;
     p->m_path = path;
     p->m_sha256 = file_sha256(where);
     return p;

@@ -21,6 +21,8 @@ class plugin {
     plugin& operator=(const plugin&) = delete;
 
     const stereosim_fw_descriptor& descriptor() const { return *m_descriptor; }
+    // Its optional host entry (STEREOSIM_FIRMWARE_HOST_ENTRY); null if none.
+    const stereosim_fw_host* host() const { return m_host; }
     const std::string& path() const { return m_path; }
     const std::string& sha256() const { return m_sha256; }
 
@@ -29,6 +31,7 @@ class plugin {
 
     void* m_handle = nullptr;
     const stereosim_fw_descriptor* m_descriptor = nullptr;
+    const stereosim_fw_host* m_host = nullptr;
     std::string m_path;
     std::string m_sha256;
 };

@@ -31,7 +31,4 @@ class firmware_services {
     stereosim_services m_table{};
 };
 
-// The firmware's kernel profile in the cost model's form (the cost service).
-dsp::c64x::kernel_profile model_profile(const stereosim_kernel_profile& kernel);
-
 }  // namespace platform

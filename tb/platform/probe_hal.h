@@ -17,6 +17,7 @@
 #include "model/time/ticks.h"
 #include "stereosim/firmware.h"
 #include "tb/platform/firmware_report.h"
+#include "tb/platform/host/cost_service.h"
 #include "tb/platform/island/timeline.h"
 
 namespace platform {
@@ -70,8 +71,9 @@ class probe_hal {
     // Stage indices are the firmware's declared ones (firmware_services
     // checked them); traffic may be null.
     void charge(int stage, uint64_t cycles, const stereosim_sdram_traffic* traffic);
-    uint64_t kernel_cycles(const dsp::c64x::kernel_profile& kernel) const {
-        return m_model.cycles(kernel);
+    uint64_t kernel_cycles(const stereosim_kernel_profile& kernel,
+                           stereosim_sdram_traffic* traffic) const {
+        return host::kernel_cycles(m_model, kernel, traffic);
     }
     void stage_begin(int stage);
     void stage_end(int stage);

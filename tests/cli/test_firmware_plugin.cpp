@@ -149,6 +149,7 @@ TEST(FirmwareInfo, PrintsWhatAPluginDeclares) {
                   "\n"
                   "stages    capture think\n"
                   "states    idle busy\n"
+                  "host      no (no closed-form processing estimate)\n"
                   "keys      2\n");
     EXPECT_NE(r.output.find("firmware.cycles_per_wait"), std::string::npos);
     EXPECT_NE(r.output.find("0..1000000"), std::string::npos);
@@ -160,6 +161,12 @@ TEST(FirmwareInfo, PrintsWhatAPluginDeclares) {
                                     0),
               0u)
         << built_in.output;
+    EXPECT_NE(built_in.output.find("\nhost      yes (the sweep's closed form prices its pairs)\n"),
+              std::string::npos)
+        << built_in.output;
+    const auto reference =
+        testsupport::run_command(stereosim(std::string("firmware info ") + REFERENCE_FIRMWARE));
+    EXPECT_NE(reference.output.find("\nhost      yes"), std::string::npos) << reference.output;
     const auto bad = testsupport::run_command(
         stereosim("firmware info " + std::string(MINIMAL_FIRMWARE_BAD_ABI)));
     EXPECT_EQ(bad.exit_code, 2);
@@ -414,8 +421,9 @@ namespace {
 
 // `sweep --firmware PATH`: every point runs the plugin (the shipped
 // firmware loaded as one gives the built-in sweep's co-simulated figures),
-// sweep.json names it, and the closed form says per point that a plugin has
-// no host estimate of its processing.
+// sweep.json names it, and the closed form prices its pairs through its host
+// entry (the same figures as the built-in's), or says per point that a
+// plugin without one has no processing estimate.
 TEST(FirmwareSweep, EveryPointRunsThePlugin) {
     const std::string dir = testsupport::temp_dir("fw_sweep");
     const std::string grid = "sweep --grid dsk.cpu_mhz=300,600 --frames 3 --jobs 2 --out ";
@@ -436,10 +444,21 @@ TEST(FirmwareSweep, EveryPointRunsThePlugin) {
         for (const char* field : {"verdict", "cpu_busy_ms_max", "emif_busy_ms_max", "capture_ms",
                                   "processing_ms_max", "stage_ms_max", "fifo_peak_words"})
             EXPECT_EQ(p[field], q[field]) << field;
-        EXPECT_TRUE(p["closed_form"]["processing_ms"].is_null());
-        EXPECT_NE(p["closed_form"].value("processing_note", "").find("plugin"), std::string::npos);
         EXPECT_TRUE(q["closed_form"]["processing_ms"].is_number());
+        EXPECT_EQ(p["closed_form"], q["closed_form"]);
     }
+    // The minimal firmware exports no host entry: no estimate, and why.
+    const auto c =
+        testsupport::run_command(stereosim("sweep --grid dsk.cpu_mhz=600 --frames 3 --out " + dir +
+                                           "/minimal --firmware " + std::string(MINIMAL_FIRMWARE)));
+    ASSERT_EQ(c.exit_code, 0) << c.output;
+    const json minimal = json::parse(testsupport::read_text(dir + "/minimal/sweep.json"));
+    const json& cf = minimal["points"][0]["closed_form"];
+    EXPECT_TRUE(cf["processing_ms"].is_null());
+    EXPECT_TRUE(cf["verdict"].is_null());
+    EXPECT_EQ(cf.value("processing_note", ""),
+              "the firmware under test has no host entry (stereosim_firmware_host): no "
+              "processing estimate");
     // The plugin's shards do not merge with the built-in firmware's.
     const auto mixed = testsupport::run_command(
         stereosim("merge " + dir + "/built_in " + dir + "/plugin --out " + dir + "/mixed"));

@@ -27,10 +27,10 @@
 #include "dsp/c6416_regs.h"
 #include "dsp/card_regs.h"
 #include "dsp/control_program.h"
-#include "tb/platform/host/counting_hal.h"
-#include "tb/platform/host/stereo_runner.h"
 #include "tests/support/heap_counter.h"
+#include "tests/support/host/counting_hal.h"
 #include "tests/support/host/scenarios.h"
+#include "tests/support/host/stereo_runner.h"
 
 namespace {
 

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "dsp/controller.h"
-#include "tb/platform/host/stereo_runner.h"
 #include "tb/platform/scoring/error_metrics.h"
 #include "tests/support/host/scenarios.h"
+#include "tests/support/host/stereo_runner.h"
 
 namespace {
 

@@ -15,10 +15,10 @@
 
 #include "dsp/controller.h"
 #include "dsp/kernel_costs.h"
-#include "tb/platform/host/counting_hal.h"
-#include "tb/platform/host/stereo_runner.h"
 #include "tests/support/heap_counter.h"
+#include "tests/support/host/counting_hal.h"
 #include "tests/support/host/scenarios.h"
+#include "tests/support/host/stereo_runner.h"
 
 using test_support::heap_counter;
 

@@ -10,9 +10,9 @@
 #include "dsp/c64x_cost_model.h"
 #include "dsp/kernel_costs.h"
 #include "model/scene/sequence.h"
-#include "tb/platform/host/counting_hal.h"
-#include "tb/platform/host/stereo_runner.h"
 #include "tb/platform/scoring/frame_record.h"
+#include "tests/support/host/counting_hal.h"
+#include "tests/support/host/stereo_runner.h"
 
 namespace {
 

@@ -13,9 +13,9 @@
 
 #include "dsp/controller.h"
 #include "dsp/motion_detect.h"
-#include "tb/platform/host/stereo_runner.h"
 #include "tests/support/data_path.h"
 #include "tests/support/host/scenarios.h"
+#include "tests/support/host/stereo_runner.h"
 
 namespace {
 

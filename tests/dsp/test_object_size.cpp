@@ -30,9 +30,9 @@
 #include <string>
 #include <vector>
 
-#include "tb/platform/host/stereo_runner.h"
 #include "tb/platform/scoring/error_metrics.h"
 #include "tests/support/host/scenarios.h"
+#include "tests/support/host/stereo_runner.h"
 
 namespace {
 

@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "model/scene/sequence.h"
-#include "tb/platform/host/stereo_runner.h"
 #include "tb/platform/scoring/error_metrics.h"
 #include "tests/support/host/scenarios.h"
+#include "tests/support/host/stereo_runner.h"
 
 namespace {
 

@@ -70,6 +70,7 @@ TEST(FirmwarePlugin, AGoodPluginLoadsRunsAndIsIdentified) {
     EXPECT_STREQ(d.version, "0.1");
     EXPECT_EQ(d.stage_count, 2u);
     EXPECT_STREQ(d.stage_names[1], "think");
+    EXPECT_EQ(p->host(), nullptr);  // it exports no host entry (optional)
     // The digest of an independent implementation (coreutils).
     const std::string expected = output_of("sha256sum '" + std::string(MINIMAL_FIRMWARE) + "'");
     ASSERT_GE(expected.size(), 64u);
@@ -112,6 +113,9 @@ TEST(FirmwarePlugin, EveryDefectIsOneLineNamingTheFile) {
     const std::string key = MINIMAL_FIRMWARE_BAD_KEY_DEFAULT;
     EXPECT_EQ(refusal(key),
               "firmware '" + key + "': key 'cycles_per_wait': default outside its range");
+    const std::string host = MINIMAL_FIRMWARE_BAD_HOST_ABI;
+    EXPECT_EQ(refusal(host), "firmware '" + host +
+                                 "': host entry built for ABI version 7, this stereosim speaks 1");
     const std::string missing = "/nonexistent/firmware.so";
     EXPECT_EQ(refusal(missing), "firmware '" + missing + "': cannot load: " + missing +
                                     ": cannot open shared object file: No such file or directory");

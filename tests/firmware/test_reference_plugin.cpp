@@ -3,7 +3,8 @@
 // stages, tracker states and config keys with the platform's defaults), makes
 // from a board and key values exactly the configuration the platform gives
 // the built-in firmware, and runs: with no card on the bus it reports the
-// missing card and returns.
+// missing card and returns. Its host entry charges per pair what its
+// controller charges.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -13,7 +14,9 @@
 #include "dsp/plugin/reference_firmware.h"
 #include "tb/firmware/plugin.h"
 #include "tb/platform/firmware_board.h"
+#include "tb/platform/host/firmware_host.h"
 #include "tb/platform/platform_config.h"
+#include "tests/support/host/stereo_runner.h"
 
 namespace {
 
@@ -193,6 +196,55 @@ TEST(ReferencePlugin, RunsAndReportsAMissingCard) {
     tiny.active_cols = 2;  // smaller than any usable image: refused with its line
     EXPECT_EQ(d.create(&s, &tiny, values.data(), error, sizeof error), nullptr);
     EXPECT_STREQ(error, "the image size (2x480) or the buffer placement is not usable");
+}
+
+// The .so's host entry over the default scenario (tb/platform/host/
+// firmware_host) against the test harness driving the reference's
+// controller directly through a counting HAL: per pair, per stage, the
+// result's cycles are what the controller charged, the capture stage's plus
+// the control program's capture work; the same boxes, state and point.
+TEST(ReferencePlugin, TheHostEntryChargesWhatTheControllerCharges) {
+    const auto p = load_reference();
+    ASSERT_NE(p, nullptr);
+    ASSERT_NE(p->host(), nullptr);
+    platform::platform_config config;
+    config.scenario = scene::default_scenario(2);
+    std::string error;
+    const auto fw = host::firmware_host::create(
+        *p->host(), p->descriptor().stage_count, config.scenario, platform::board_of(config),
+        platform::plugin_values(p->descriptor(), config), platform::cost_model_of(config), &error);
+    ASSERT_NE(fw, nullptr) << error;
+    host::stereo_runner runner(config.scenario, platform::pipeline_config(config),
+                               platform::cost_model_of(config));
+    int tracked = 0;
+    for (int n = 0; n < 10; ++n) {
+        stereosim_result r{};
+        ASSERT_TRUE(fw->step(n, &r, &error)) << error;
+        const host::host_record h = runner.step(n);
+        for (int s = 0; s < dsp::stage_count; ++s) {
+            const uint64_t capture = s == 0 ? config.capture_cycles : 0;
+            EXPECT_EQ(r.stage_cycles[s],
+                      runner.hal().frame_cycles(static_cast<dsp::stage>(s)) + capture)
+                << "pair " << n << " stage " << s;
+        }
+        EXPECT_EQ(r.state, h.out.state) << n;
+        EXPECT_EQ(r.has_object, h.out.has_object) << n;
+        EXPECT_EQ(r.box_left.x, h.out.box_left.x) << n;
+        EXPECT_EQ(r.box_right.y, h.out.box_right.y) << n;
+        EXPECT_EQ(r.has_point, h.out.has_point) << n;
+        EXPECT_EQ(r.z_um, h.out.z_um) << n;
+        tracked += r.has_point;
+    }
+    EXPECT_GE(tracked, 5);  // the ball is found and followed: the chain ran
+    // A scenario whose images are not the sensors' active area is refused.
+    platform::platform_config small = config;
+    small.scenario.scene.rig.width = 320;
+    EXPECT_EQ(
+        host::firmware_host::create(*p->host(), p->descriptor().stage_count, small.scenario,
+                                    platform::board_of(config), platform::reference_values(config),
+                                    platform::cost_model_of(config), &error),
+        nullptr);
+    EXPECT_EQ(error, "the scenario's images are not the sensors' active area");
 }
 
 }  // namespace

@@ -13,12 +13,12 @@
 
 #include "dsp/c6416_regs.h"
 #include "dsp/kernel_costs.h"
-#include "tb/platform/host/stereo_runner.h"
 #include "tb/platform/budget.h"
 #include "tb/platform/closed_form.h"
 #include "tb/platform/platform.h"
 #include "tb/platform/report.h"
 #include "tb/platform/scoreboard.h"
+#include "tests/support/host/stereo_runner.h"
 
 namespace system_test {
 

@@ -81,6 +81,9 @@ int firmware_command::execute() {
     std::printf("stages    %s\n", joined(d.stage_names, d.stage_count, " ").c_str());
     std::printf("states    %s\n",
                 joined(d.tracker_state_names, d.tracker_state_count, " ").c_str());
+    const bool host = plugin ? plugin->host() != nullptr : true;
+    std::printf("host      %s\n", host ? "yes (the sweep's closed form prices its pairs)"
+                                       : "no (no closed-form processing estimate)");
     std::printf("keys      %u\n", d.key_count);
     for (uint32_t i = 0; i < d.key_count; ++i) {
         const stereosim_fw_key& k = d.keys[i];

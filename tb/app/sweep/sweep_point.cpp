@@ -4,9 +4,10 @@
 #include <cmath>
 #include <limits>
 
-#include "dsp/kernel_costs.h"
+#include "dsp/plugin/reference_firmware.h"
 #include "tb/platform/closed_form.h"
-#include "tb/platform/host/stereo_runner.h"
+#include "tb/platform/firmware_board.h"
+#include "tb/platform/host/firmware_host.h"
 #include "tb/platform/platform_config.h"
 
 namespace sweep {
@@ -19,12 +20,16 @@ double round6(double v) {
     return std::round(v * 1e6) / 1e6;
 }
 
-// The setup with every key that cannot change the firmware's charged cycles
-// per pair at its defaults: the host run of one such setup serves them all.
-// The clocks stay: the kernels' SDRAM stalls depend on the CPU / EMIF ratio.
+// The setup with every key that cannot change the reference firmware's
+// charged cycles per pair at its defaults: the host run of one such setup
+// serves them all. The clocks stay: the kernels' SDRAM stalls depend on the
+// CPU / EMIF ratio. Of a plugin nothing is known: every setting may count.
 std::string processing_key(const cli::run_setup& s) {
     cli::run_setup p = s;
     const cli::run_setup defaults;
+    p.quantum_ns = defaults.quantum_ns;
+    p.hash_pins = defaults.hash_pins;
+    if (!s.firmware.empty()) return cli::config_json(p).dump();
     p.cpu_mhz = s.effective_cpu_mhz();
     p.eclk_mhz = s.effective_eclk_mhz();
     p.dsk_version = defaults.dsk_version;
@@ -35,28 +40,34 @@ std::string processing_key(const cli::run_setup& s) {
     p.sdram_traffic_on_bus = defaults.sdram_traffic_on_bus;
     p.watchdog_ms = defaults.watchdog_ms;
     p.card_start_timeout = defaults.card_start_timeout;
-    p.quantum_ns = defaults.quantum_ns;
-    p.hash_pins = defaults.hash_pins;
     return cli::config_json(p).dump();
 }
 
-// The firmware on the host over the rendered frames the run processes (no
-// sensors, no card, no bus): the largest pair's charged cycles, capture's
-// included. A run of F periods processes the pairs of scene frames 1 ..
-// F - 3 (the first pair is taken in the second period; the last two are
-// still in capture and processing when the run ends); frame 0 goes first
-// here as the firmware's history.
-double host_max_pair_cycles(const platform::platform_config& config) {
+// The firmware's host entry over the rendered frames the run processes (no
+// sensors, no card, no bus): the largest pair's cycles, as its result
+// reports them (capture's included). A run of F periods processes the pairs
+// of scene frames 1 .. F - 3 (the first pair is taken in the second period;
+// the last two are still in capture and processing when the run ends);
+// frame 0 goes first here as the firmware's history. NaN with *error if the
+// host run fails.
+double host_max_pair_cycles(const platform::platform_config& config,
+                            const stereosim_fw_descriptor& firmware, const stereosim_fw_host& entry,
+                            std::string* error) {
     // The platform's cost model for this configuration (clocks, compiled-C
     // factor), as the co-simulation prices the kernels.
-    host::stereo_runner runner(config.scenario, platform::pipeline_config(config),
-                               platform::cost_model_of(config));
+    const auto host = host::firmware_host::create(
+        entry, firmware.stage_count, config.scenario, platform::board_of(config),
+        platform::plugin_values(firmware, config), platform::cost_model_of(config), error);
+    if (!host) return std::numeric_limits<double>::quiet_NaN();
     uint64_t largest = 0;
     for (int n = 0; n <= std::max(0, config.frames - 3); ++n) {
-        runner.step(n);
-        largest = std::max(largest, runner.hal().frame_cycles_all());
+        stereosim_result r{};
+        if (!host->step(n, &r, error)) return std::numeric_limits<double>::quiet_NaN();
+        uint64_t cycles = 0;
+        for (uint32_t s = 0; s < firmware.stage_count; ++s) cycles += r.stage_cycles[s];
+        largest = std::max(largest, cycles);
     }
-    return static_cast<double>(largest + config.capture_cycles);
+    return static_cast<double>(largest);
 }
 
 }  // namespace
@@ -115,18 +126,52 @@ bool read_point_report(const json& report, json* point, std::string* error) {
     }
 }
 
+// The descriptor and host entry of the setup's firmware (the built-in
+// reference's, or the plugin's: loaded once per file); null with *note.
+const stereosim_fw_host* closed_form_cache::host_entry(const std::string& path,
+                                                       const stereosim_fw_descriptor** firmware,
+                                                       std::string* note) {
+    if (path.empty()) {
+        *firmware = &dsp::plugin::reference_firmware();
+        return &dsp::plugin::reference_host();
+    }
+    auto it = m_plugins.find(path);
+    if (it == m_plugins.end()) {
+        std::string error;
+        it = m_plugins.emplace(path, firmware::plugin::load(path, &error)).first;
+        if (!it->second) m_load_errors[path] = error;
+    }
+    if (!it->second) {
+        *note = m_load_errors[path];
+        return nullptr;
+    }
+    *firmware = &it->second->descriptor();
+    if (it->second->host() == nullptr)
+        *note = "the firmware under test has no host entry (" STEREOSIM_FIRMWARE_HOST_ENTRY
+                "): no processing estimate";
+    return it->second->host();
+}
+
 json closed_form_cache::estimate(const cli::run_setup& setup) {
     const platform::platform_config config = cli::platform_config_of(setup);
     const double cpu_mhz = static_cast<double>(config.dsk.cpu_hz) / 1e6;
     double processing_ms = std::numeric_limits<double>::quiet_NaN();
-    // The host estimate runs the built-in firmware; a plugin has no host
-    // entry (ABI version 1), so its points get no processing estimate.
-    const bool plugin = !setup.firmware.empty();
-    if (config.replay_manifest.empty() && !plugin) {
+    std::string note;
+    if (config.replay_manifest.empty()) {
         const std::string key = processing_key(setup);
         auto it = m_cycles.find(key);
-        if (it == m_cycles.end()) it = m_cycles.emplace(key, host_max_pair_cycles(config)).first;
-        processing_ms = it->second / cpu_mhz / 1e3;
+        if (it == m_cycles.end()) {
+            const stereosim_fw_descriptor* firmware = nullptr;
+            const stereosim_fw_host* entry = host_entry(setup.firmware, &firmware, &note);
+            const double cycles = entry == nullptr
+                                      ? std::numeric_limits<double>::quiet_NaN()
+                                      : host_max_pair_cycles(config, *firmware, *entry, &note);
+            it = m_cycles.emplace(key, std::make_pair(cycles, note)).first;
+        }
+        processing_ms = it->second.first / cpu_mhz / 1e3;
+        note = it->second.second;
+    } else {
+        note = "a replay has no rendered scene: no processing estimate";
     }
     const platform::budget_estimate b =
         platform::estimate_budget(config, std::isnan(processing_ms) ? 0.0 : processing_ms);
@@ -134,10 +179,7 @@ json closed_form_cache::estimate(const cli::run_setup& setup) {
     json j = {{"capture_ms", round6(b.capture_ms)}, {"traffic_ms", round6(b.traffic_ms)}};
     if (std::isnan(processing_ms)) {
         j["processing_ms"] = j["need_ms"] = j["slack_ms"] = j["verdict"] = json(nullptr);
-        if (plugin)
-            j["processing_note"] =
-                "the firmware under test is a plugin without a host entry: no processing "
-                "estimate";
+        if (!note.empty()) j["processing_note"] = note;
         return j;
     }
     j["processing_ms"] = round6(processing_ms);

@@ -1,17 +1,20 @@
 // One point of a sweep as sweep.json keeps it (docs/sweep.md): its keys, the
 // co-simulation's figures read from the point's report.json, and the closed
 // form's budget beside them (tb/platform/closed_form.h: capture and traffic
-// from the timing rules, the largest pair's processing from the firmware run
-// on the host over the same rendered scene, tb/platform/host).
+// from the timing rules, the largest pair's processing from the firmware's host
+// entry over the same rendered scene, tb/platform/host).
 #pragma once
 
 #include <map>
+#include <memory>
 #include <string>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
 #include "tb/app/cli/run_setup.h"
 #include "tb/app/sweep/sweep_grid.h"
+#include "tb/firmware/plugin.h"
 
 namespace sweep {
 
@@ -28,9 +31,11 @@ bool read_point_report(const nlohmann::json& report, nlohmann::json* point, std:
 // The closed form's budget of a setup: {capture_ms, traffic_ms,
 // processing_ms, need_ms, slack_ms, verdict}. The processing estimate runs
 // the firmware on the host once per distinct scene / image / firmware setup
-// (clocks, bus timing and mode do not change its cycles) and is cached
-// here. A replay has no rendered scene: processing_ms and the verdict are
-// null.
+// (for the reference firmware, clocks, bus timing and mode do not change
+// its cycles) and is cached here, through the firmware's host entry
+// (include/stereosim/firmware.h). A replay has no rendered scene, a plugin
+// may have no host entry: processing_ms and the verdict are null then, with
+// processing_note saying why.
 class closed_form_cache {
   public:
     nlohmann::json estimate(const cli::run_setup& setup);
@@ -38,7 +43,14 @@ class closed_form_cache {
     size_t host_runs() const { return m_cycles.size(); }
 
   private:
-    std::map<std::string, double> m_cycles;  // processing setup -> largest pair's cycles
+    const stereosim_fw_host* host_entry(const std::string& path,
+                                        const stereosim_fw_descriptor** firmware,
+                                        std::string* note);
+
+    // processing setup -> the largest pair's cycles (NaN: none) and why none
+    std::map<std::string, std::pair<double, std::string>> m_cycles;
+    std::map<std::string, std::unique_ptr<firmware::plugin>> m_plugins;  // by path
+    std::map<std::string, std::string> m_load_errors;
 };
 
 // Sets "closed_form_agrees" on a co-simulated point (its verdict and the

@@ -171,3 +171,29 @@ const stereosim_fw_descriptor* stereosim_firmware(void) {
     return &descriptor;
 }
 #endif
+
+#ifdef BAD_HOST_ABI
+/* A host entry (optional) built for another ABI: the whole plugin is refused. */
+static void* host_create(const stereosim_services* services, const stereosim_board* board,
+                         const double* values, char* error, size_t error_size) {
+    (void)services;
+    (void)board;
+    (void)values;
+    (void)error;
+    (void)error_size;
+    return NULL;
+}
+static void host_process(void* instance, uint32_t pair, const uint8_t* left, const uint8_t* right) {
+    (void)instance;
+    (void)pair;
+    (void)left;
+    (void)right;
+}
+static void host_destroy(void* instance) {
+    (void)instance;
+}
+static const stereosim_fw_host host = {7u, host_create, host_process, host_destroy};
+const stereosim_fw_host* stereosim_firmware_host(void) {
+    return &host;
+}
+#endif

@@ -1,4 +1,4 @@
-#include "tb/platform/host/counting_hal.h"
+#include "tests/support/host/counting_hal.h"
 
 namespace host {
 

@@ -1,4 +1,4 @@
-#include "tb/platform/host/stereo_runner.h"
+#include "tests/support/host/stereo_runner.h"
 
 #include <utility>
 

@@ -2,7 +2,7 @@
 // hardware: frame n of the scene is rendered, both images are mosaicked in
 // the controller's CFA order (what the sensors deliver), the raw pair goes
 // to controller::process_pair, and the output is kept beside the scene's
-// ground truth. Used by the tests and the benchmarks.
+// ground truth. Used by the tests of dsp/ and system/
 #pragma once
 
 #include <cstdint>
@@ -11,8 +11,8 @@
 #include "dsp/controller.h"
 #include "model/scene/images.h"
 #include "model/scene/sequence.h"
-#include "tb/platform/host/counting_hal.h"
 #include "tb/platform/scoring/frame_record.h"
+#include "tests/support/host/counting_hal.h"
 
 namespace host {
 
