@@ -21,7 +21,6 @@
 #define CONTROL_BASE 0x000FF000u /* L2: drain header, then the sink word at +64 */
 #define DRAIN 2
 #define REARM_IDLE_POLLS 64u
-#define CAPTURE_CYCLES 600u /* interrupt entry, header check, re-arm: this author's guess */
 
 static const int left_channel[3] = {56, 58, 60};
 static const int right_channel[3] = {57, 59, 61};

@@ -53,8 +53,8 @@ void fw_charge_loop(paper_fw* fw, uint32_t stage, const char* name, uint64_t ite
     fw->stage_cycles[stage] += cycles;
 }
 
-static void* create(const stereosim_services* services, const stereosim_board* board,
-                    const double* values, char* error, size_t error_size) {
+void* fw_create(const stereosim_services* services, const stereosim_board* board,
+                const double* values, char* error, size_t error_size) {
     paper_fw* fw;
     if (board->active_cols % 8 != 0 || board->active_rows % 8 != 0 || board->active_cols < 64 ||
         board->active_rows < 64) {
@@ -106,7 +106,7 @@ static void run(void* instance) {
     fw_shutdown(fw);
 }
 
-static void destroy(void* instance) {
+void fw_destroy(void* instance) {
     paper_fw* fw = (paper_fw*)instance;
     vision_free(&fw->v);
     free(fw);
@@ -131,9 +131,9 @@ static const stereosim_fw_descriptor descriptor = {STEREOSIM_FIRMWARE_ABI_VERSIO
                                                    tracker_states,
                                                    KEY_COUNT,
                                                    keys,
-                                                   create,
+                                                   fw_create,
                                                    run,
-                                                   destroy,
+                                                   fw_destroy,
                                                    policy};
 
 const stereosim_fw_descriptor* stereosim_firmware(void) {

@@ -7,6 +7,7 @@
 #ifndef PAPER_FW_H
 #define PAPER_FW_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "stereosim/firmware.h"
@@ -17,6 +18,10 @@
  * (the policy's optional_stages says so). */
 enum { ST_CAPTURE, ST_GRAY, ST_DETECT, ST_TRACK, ST_STEREO, ST_UNUSED_EDGE, ST_XYZ, ST_COUNT };
 enum { TRACKER_DETECT, TRACKER_TRACK, TRACKER_LOST };
+
+/* CPU cycles per pair of the capture stage: interrupt entry, header
+ * check, re-arm (this author's guess). */
+#define CAPTURE_CYCLES 600u
 
 /* The keys, in the descriptor's order. */
 enum {
@@ -75,6 +80,12 @@ void fw_shutdown(paper_fw* fw);
 uint32_t fw_buffer_address(const paper_fw* fw, int buffer);
 uint32_t fw_left_address(const paper_fw* fw, int buffer);
 uint32_t fw_right_address(const paper_fw* fw, int buffer);
+
+/* firmware.c: an instance for a board and key values, and its end (the
+ * descriptor's and the host entry's create and destroy) */
+void* fw_create(const stereosim_services* services, const stereosim_board* board,
+                const double* values, char* error, size_t error_size);
+void fw_destroy(void* instance);
 
 /* vision.c: the paper's chain, each step charged to its stage */
 int vision_init(vision* v, uint32_t w, uint32_t h, uint32_t threshold, int32_t search_radius);

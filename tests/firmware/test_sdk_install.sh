@@ -70,3 +70,18 @@ assert s["sync"]["unsynced_pairs_used"] == 0, s["sync"]
 print("example firmware: %d frames tracked, box error max %.2f px, depth error max %.2f %%"
       % (acc["frames_tracked"], acc["box_err_px_max"], acc["depth_err_pct_max"]))
 PY
+# Its host entry (host.c): the sweep's closed form prices its pairs, near
+# what the co-simulation measured at the same point.
+"$work/prefix/bin/stereosim" firmware info "$paper" | grep -qx "host      yes (the sweep's closed form prices its pairs)" ||
+  { echo "the example firmware has no host entry"; exit 1; }
+"$work/prefix/bin/stereosim" sweep --grid dsk.cpu_mhz=600 --frames 12 --firmware "$paper" \
+  --out "$work/sweep" > "$work/sweep.log" 2>&1 || { cat "$work/sweep.log"; exit 1; }
+python3 - "$work/sweep/sweep.json" <<'PY'
+import json, sys
+p = json.load(open(sys.argv[1]))["points"][0]
+host, cosim = p["closed_form"]["processing_ms"], p["processing_ms_max"]
+assert host is not None and cosim, p
+assert abs(host / cosim - 1) < 0.15, (host, cosim)
+assert p["closed_form_agrees"] is True, p
+print("example firmware's host entry: closed form %.3f ms, co-simulation %.3f ms" % (host, cosim))
+PY
