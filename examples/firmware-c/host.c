@@ -4,8 +4,7 @@
  * that `stereosim sweep` prices this firmware in its closed form. */
 #include "paper_fw.h"
 
-static void process_pair(void* instance, uint32_t pair, const uint8_t* left,
-                         const uint8_t* right) {
+static void process_pair(void* instance, uint32_t pair, const uint8_t* left, const uint8_t* right) {
     paper_fw* fw = (paper_fw*)instance;
     stereosim_result r;
     /* The capture stage as fw_release charges it. */
