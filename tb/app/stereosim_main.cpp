@@ -102,7 +102,8 @@ int sc_main(int argc, char* argv[]) {
     if (*config) {
         std::string error;
         if (markdown)
-            std::fputs(cli::config_table_markdown().c_str(), stdout);
+            std::printf("%s\n%s", cli::config_table_markdown().c_str(),
+                        cli::firmware_table_markdown().c_str());
         else if (!cli::print_firmware_keys(config_firmware, &error)) {
             cli::print_error(error);
             return cli::exit_bad_input;

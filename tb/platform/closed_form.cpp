@@ -2,10 +2,19 @@
 
 #include <algorithm>
 
-#include "dsp/control_program.h"
 #include "model/emif/cectl.h"
+#include "tb/platform/firmware_board.h"
 
 namespace platform {
+
+namespace {
+
+// The pair buffer's status header ahead of the left frame in the capture
+// the closed form models: the reference design's (dsp/control_program.h,
+// control_program_edma::header_bytes; docs/budget.md).
+constexpr uint64_t pair_header_bytes = 64;
+
+}  // namespace
 
 readout_figures readout(const sensor::sensor_profile& p) {
     readout_figures r;
@@ -42,8 +51,7 @@ capture_figures capture(int cols, int rows, uint32_t card_cectl, const emif::emi
     const uint64_t frame_bytes = line_bytes * static_cast<uint64_t>(rows);
     for (uint64_t frame = 0; sd.row_bytes > 0 && frame < 2; ++frame) {
         for (uint64_t k = 0; k < static_cast<uint64_t>(rows); ++k) {
-            const uint64_t first =
-                dsp::control_program_edma::header_bytes + frame * frame_bytes + k * line_bytes;
+            const uint64_t first = pair_header_bytes + frame * frame_bytes + k * line_bytes;
             const uint64_t last = first + line_bytes - 1;
             c.row_crossings += last / sd.row_bytes - first / sd.row_bytes;
         }
@@ -104,18 +112,19 @@ mode_estimate estimate_overlapped(double capture_ms, double processing_ms, doubl
     return e;
 }
 
-budget_estimate estimate_budget(const platform_config& config, double processing_ms) {
+budget_estimate estimate_budget(const platform_config& config, double processing_ms,
+                                bool overlapped) {
     const emif::emif_config emif = engine_config(config);
-    const uint32_t cectl = dsp::card_cectl(program_config(config));
+    const uint32_t cectl = card_cectl_asked(config);
     const int cols = config.profile.active_cols, rows = config.profile.active_rows;
     budget_estimate b;
     b.capture_ms = capture(cols, rows, cectl, emif).total_ms();
     b.traffic_ms = config.sdram_traffic_on_bus ? firmware_traffic(cols, rows, cectl, emif).ms() : 0;
     b.processing_ms = processing_ms;
     const double period_ms = static_cast<double>(config.period) / (simtime::ticks_per_ns * 1e6);
-    b.verdict = config.mode == dsp::pipeline_mode::sequential
-                    ? estimate_sequential(b.capture_ms, b.traffic_ms, processing_ms, period_ms)
-                    : estimate_overlapped(b.capture_ms, b.traffic_ms, processing_ms, period_ms);
+    b.verdict = overlapped
+                    ? estimate_overlapped(b.capture_ms, b.traffic_ms, processing_ms, period_ms)
+                    : estimate_sequential(b.capture_ms, b.traffic_ms, processing_ms, period_ms);
     return b;
 }
 

@@ -88,14 +88,17 @@ mode_estimate estimate_sequential(double capture_ms, double traffic_ms, double p
 
 // The closed-form budget of a whole configuration (docs/budget.md
 // "Sequential against overlapped"): C and T from its profile, the CECTL the
-// firmware programs and its EMIF clock, P_max given (e.g. the host runner's
-// largest pair, tb/platform/host), judged for the configuration's mode.
+// board asks the firmware to program (card_cectl_asked) and its EMIF clock,
+// P_max given (e.g. the largest pair of the firmware's host entry,
+// tb/platform/host), judged for the firmware overlapping its processing
+// with the next capture or not.
 struct budget_estimate {
     double capture_ms = 0.0;     // C
     double traffic_ms = 0.0;     // T (0 when the traffic is off the bus)
     double processing_ms = 0.0;  // P_max
     mode_estimate verdict;
 };
-budget_estimate estimate_budget(const platform_config& config, double processing_ms);
+budget_estimate estimate_budget(const platform_config& config, double processing_ms,
+                                bool overlapped);
 
 }  // namespace platform

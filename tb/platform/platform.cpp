@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "dsp/c6416_regs.h"
-#include "dsp/kernel_costs.h"
 #include "dsp/plugin/reference_firmware.h"
 #include "model/time/sc_ticks.h"
 #include "tb/platform/arrangements/fast/fast_island.h"
@@ -168,10 +167,9 @@ void platform_top::continue_with_faults(const platform_config& config) {
     const platform_config& c = m_config;
     const bool same_run =
         config.frames == c.frames && config.seed == c.seed && config.arrangement == c.arrangement &&
-        config.dsk.cpu_hz == c.dsk.cpu_hz && config.mode == c.mode &&
-        config.card_retry_limit == c.card_retry_limit &&
-        config.hard_error_rearms == c.hard_error_rearms && config.watchdog_ms == c.watchdog_ms &&
-        config.card_start_timeout == c.card_start_timeout && config.hash_pins == c.hash_pins &&
+        config.dsk.cpu_hz == c.dsk.cpu_hz && config.firmware == c.firmware &&
+        config.firmware_settings == c.firmware_settings &&
+        config.card_retry_limit == c.card_retry_limit && config.hash_pins == c.hash_pins &&
         config.trace == c.trace && !config.wire.enabled && c.left_faults.empty() &&
         c.right_faults.empty() && c.ardy_faults.empty() && c.cpu_slow_num == c.cpu_slow_den;
     if (!same_run)

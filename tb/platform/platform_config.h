@@ -9,8 +9,7 @@
 #include <vector>
 
 #include "dsp/c64x_cost_model.h"
-#include "dsp/control_program.h"
-#include "dsp/controller.h"
+#include "dsp/card_regs.h"
 #include "model/c6416/dsk_profile.h"
 #include "model/emif/emif_async_master.h"
 #include "model/scene/sequence.h"
@@ -27,6 +26,14 @@ namespace platform {
 // SystemC modules wired with sc_signals, the card verilated with --sc (pins,
 // the literal reference). Same pins, same reports.
 enum class arrangement_kind { fast, pins };
+
+// The card's CE2 / CE3 asynchronous access, ECLK cycles; 0: the DSK
+// version's own (docs/card.md "Access lengths").
+struct card_bus_timing {
+    uint32_t setup = 0;
+    uint32_t strobe = 0;
+    uint32_t hold = 0;
+};
 
 struct platform_config {
     arrangement_kind arrangement = arrangement_kind::fast;
@@ -45,10 +52,11 @@ struct platform_config {
     // ---- firmware ----------------------------------------------------------------------------
     // The firmware under test: a plugin built against include/stereosim/
     // firmware.h (docs/firmware-abi.md); empty: the built-in reference
-    // firmware of dsp/, with the settings below as its key values.
+    // firmware of dsp/.
     std::string firmware;
-    // The firmware's own keys the user set (`--set firmware.KEY=V`), by name
-    // without the prefix; a choice as its index. Checked against the
+    // The firmware's keys the run sets (`--set firmware.KEY=V`), by name
+    // without the prefix; a choice as its index. Every key not here takes the
+    // default its descriptor declares (plugin_values). Checked against the
     // descriptor before the run (tb/app/cli/firmware_keys.h).
     std::vector<std::pair<std::string, double>> firmware_settings;
 
@@ -64,37 +72,21 @@ struct platform_config {
     std::vector<sensor::fault> right_faults;
     wire_fault wire;
 
-    // ---- DSK and firmware --------------------------------------------------------------------
+    // ---- DSK and card -------------------------------------------------------------------------
     c6416::dsk_profile dsk = c6416::dsk_v1();
-    dsp::pipeline_mode mode = dsp::pipeline_mode::overlapped;
-    // Firmware tuning (the stereosim config keys firmware.*), applied to the
-    // controller configuration made for the scenario's rig. The defaults are
-    // the firmware's own, read from its default configurations.
-    int track_search_radius = dsp::track_params{}.search_radius;
-    int detect_threshold = dsp::detect_params{}.threshold;
-    dsp::stereo_method stereo_method = dsp::controller_config{}.method;
-    uint32_t capture_cycles = static_cast<uint32_t>(dsp::control_program_config{}.capture_cycles);
-    // Where the firmware's gray frames and packed mask live (the cost model's
-    // SDRAM stalls, dsp::controller_config::frame_memory; L2 = the memory
-    // plan of dsp/controller.h, the raw pairs always in SDRAM), and whether
-    // the SDRAM traffic of its kernels goes out on EMIFA as L2 line transfers
-    // (docs/c6416.md): bus time that competes with the capture (issue 5).
-    dsp::cost::memory frame_memory = dsp::cost::memory::l2;
+    // Whether the SDRAM traffic of the firmware's kernels goes out on EMIFA
+    // as L2 line transfers (docs/c6416.md): bus time that competes with the
+    // capture.
     bool sdram_traffic_on_bus = true;
     // The cost model's compiled-C factor (dsp/c64x_cost_model.h): 1 = the
     // hand-scheduled kernels the profiles describe; the `paper` scenario
     // models the paper's compiled C (docs/paper.md).
     double compiled_c_factor = 1.0;
-    // The firmware's card watchdog (timer 1): every period it reads the card's
-    // event counters over the EMIF; 0: none.
-    uint32_t watchdog_ms = dsp::control_program_config{}.watchdog_ms;
-    // The card's RETRY_LIMIT and the firmware's give-up bound
-    // (dsp::control_program_config, docs/fault-contract.md).
+    // The card's RETRY_LIMIT the run asks the firmware to program
+    // (stereosim_board::card_retry_limit, docs/fault-contract.md).
     uint32_t card_retry_limit = dsp::card_regs::retry_limit_reset;
-    uint32_t card_start_timeout = dsp::card_regs::start_timeout_reset;  // lines
-    // The card's CE2 / CE3 timing the firmware programs (0: the DSK's).
-    dsp::card_bus_timing card_timing;
-    uint32_t hard_error_rearms = dsp::control_program_config{}.hard_error_rearms;
+    // The card's CE2 / CE3 timing the firmware is asked to program (0: the DSK's).
+    card_bus_timing card_timing;
 
     // ---- faults beyond the sensors' (tb/app/faults, docs/faults.md)
     // ------------------------------ Extra ARDY wait states on the card's CE spaces from a time on,
@@ -123,10 +115,12 @@ struct platform_config {
     uint64_t right_seed() const { return 2 * seed + 1; }
 };
 
-// The controller configuration the firmware is built with for `config`.
-dsp::controller_config pipeline_config(const platform_config& config);
-// The control program's configuration (card registers from the profile).
-dsp::control_program_config program_config(const platform_config& config);
+// Sets the firmware key `name` (without the prefix) to `value`, replacing
+// an earlier setting of it.
+void set_firmware_key(platform_config* config, const std::string& name, double value);
+// The value the run sets for key `name`, or `fallback` if it sets none.
+double firmware_key(const platform_config& config, const std::string& name, double fallback);
+
 // The EMIF engine's configuration (ECLK, SDRAM refresh) for `config`.
 emif::emif_config engine_config(const platform_config& config);
 // The kernel cost model for `config`: its CPU / EMIF clocks (SDRAM stalls

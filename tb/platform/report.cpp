@@ -1,7 +1,11 @@
 #include "tb/platform/report.h"
 
+#include <cctype>
+#include <string>
+
 #include "dsp/c6416_regs.h"
 #include "dsp/kernel_costs.h"
+#include "tb/platform/firmware_board.h"
 
 namespace platform {
 
@@ -41,6 +45,13 @@ capture_figures capture_closed_form(const platform_top& top) {
 
 namespace {
 
+// The firmware's mode as its policy states it (the run's, or the one it
+// was created with).
+const char* mode_of(const platform_top& top) {
+    if (!top.firmware_started() || top.firmware_init_failed()) return "no firmware";
+    return top.firmware_policy().overlapped != 0 ? "overlapped" : "sequential";
+}
+
 // What ran and how fast: the DSK, the run's speed, the island's counters.
 void print_run(std::FILE* out, const platform_top& top) {
     const platform_config& config = top.config();
@@ -49,8 +60,8 @@ void print_run(std::FILE* out, const platform_top& top) {
     const island_stats& st = isl.stats();
     std::fprintf(
         out, "== stereosim platform: DSK %s (CPU %.0f MHz, EMIF %.0f MHz), %s mode, seed %llu\n",
-        config.dsk.name, config.dsk.cpu_hz / 1e6, config.dsk.emif_hz / 1e6,
-        dsp::pipeline_mode_name(config.mode), static_cast<unsigned long long>(config.seed));
+        config.dsk.name, config.dsk.cpu_hz / 1e6, config.dsk.emif_hz / 1e6, mode_of(top),
+        static_cast<unsigned long long>(config.seed));
     std::fprintf(out,
                  "run: %.1f ms simulated (%d periods) in %.2f s wall: %.4f simulated/wall, "
                  "%.3f s wall per period; firmware %.2f s wall (%.1f %%), island %.2f s\n",
@@ -231,11 +242,14 @@ void print_closed_forms(std::FILE* out, const platform_top& top, const budget_re
 void print_sdram_traffic(std::FILE* out, const platform_top& top) {
     const platform_config& config = top.config();
     const c6416::c6416_sc& chip = top.cpu();
+    // Where the firmware keeps its frames, if it has the reference's key for it.
+    std::string memory = key_choice(top.firmware_descriptor(), config, "frame_memory");
+    for (char& c : memory) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (!memory.empty()) memory = "frames in " + memory + ", ";
     std::fprintf(out,
-                 "\n-- firmware SDRAM traffic (frames in %s, %s): L2 lines read %llu, written back "
+                 "\n-- firmware SDRAM traffic (%s%s): L2 lines read %llu, written back "
                  "%llu; transfer time %.3f ms; CPU waited past its charges %.3f ms\n",
-                 config.frame_memory == dsp::cost::memory::sdram ? "SDRAM" : "L2",
-                 config.sdram_traffic_on_bus ? "on the EMIF bus" : "off the bus",
+                 memory.c_str(), config.sdram_traffic_on_bus ? "on the EMIF bus" : "off the bus",
                  static_cast<unsigned long long>(chip.sdram_lines_read()),
                  static_cast<unsigned long long>(chip.sdram_lines_written()),
                  chip.sdram_transfer_time().to_seconds() * 1e3,

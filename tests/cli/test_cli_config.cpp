@@ -12,8 +12,10 @@
 #include <sstream>
 #include <string>
 
+#include "dsp/plugin/reference_firmware.h"
 #include "model/scene/sequence.h"
 #include "tb/app/cli/config_keys.h"
+#include "tb/app/cli/firmware_keys.h"
 #include "tb/app/cli/scenarios.h"
 
 namespace {
@@ -32,17 +34,23 @@ std::set<std::string> doc_keys() {
     return keys;
 }
 
-// docs/config.md's table is what `stereosim config --markdown` prints.
-TEST(cli_config, docs_table_is_the_generated_one) {
+// The docs/config.md table starting with `header`.
+std::string docs_table(const std::string& header) {
     std::ifstream in(std::string(STEREOSIM_SOURCE_DIR) + "/docs/config.md");
     std::string docs, line;
     bool in_table = false;
     while (std::getline(in, line)) {
-        in_table = in_table || line.rfind("| key | type / range |", 0) == 0;
+        in_table = in_table || line.rfind(header, 0) == 0;
         if (in_table && line.rfind("|", 0) != 0) break;
         if (in_table) docs += line + "\n";
     }
-    EXPECT_EQ(docs, cli::config_table_markdown());
+    return docs;
+}
+
+// docs/config.md's tables are what `stereosim config --markdown` prints.
+TEST(cli_config, docs_table_is_the_generated_one) {
+    EXPECT_EQ(docs_table("| key | type / range |"), cli::config_table_markdown());
+    EXPECT_EQ(docs_table("| firmware key | type / range |"), cli::firmware_table_markdown());
 }
 
 TEST(cli_config, docs_list_exactly_the_table_keys) {
@@ -51,6 +59,9 @@ TEST(cli_config, docs_list_exactly_the_table_keys) {
         EXPECT_TRUE(table.insert(k.name).second) << "duplicate key " << k.name;
         EXPECT_FALSE(k.doc.empty()) << k.name;
     }
+    // The built-in firmware's own keys, its descriptor's (the second table).
+    for (const cli::config_key& k : cli::firmware_own_keys(dsp::plugin::reference_firmware()))
+        EXPECT_TRUE(table.insert(k.name).second) << "duplicate key " << k.name;
     const std::set<std::string> docs = doc_keys();
     for (const std::string& k : table)
         EXPECT_TRUE(docs.count(k)) << k << " missing in docs/config.md";
@@ -89,8 +100,10 @@ TEST(cli_config, values_are_type_and_range_checked) {
     EXPECT_EQ(error, "config key 'dsk.cpu_mhz': 0 is out of range 50..2000");
     EXPECT_TRUE(cli::parse_value(*cpu, "850.5", &v, &error));
 
-    const cli::config_key* mode = cli::find_key("firmware.mode");
-    EXPECT_FALSE(cli::parse_value(*mode, "parallel", &v, &error));
+    // The firmware's own keys are checked against its descriptor.
+    cli::run_setup parallel;
+    parallel.firmware_settings = {{"firmware.mode", json("parallel")}};
+    EXPECT_FALSE(cli::validate_setup(parallel, &error));
     EXPECT_EQ(error,
               "config key 'firmware.mode': \"parallel\" is not one of sequential|overlapped");
     const cli::config_key* noise = cli::find_key("sensor.noise");
@@ -102,9 +115,9 @@ TEST(cli_config, values_are_type_and_range_checked) {
 TEST(cli_config, search_window_must_fit_the_image) {
     cli::run_setup setup;
     std::string error;
-    setup.search_radius = 239;  // 479 x 479 fits 640 x 480
+    setup.firmware_settings = {{"firmware.search_radius", json(239)}};  // 479 x 479 fits
     EXPECT_TRUE(cli::validate_setup(setup, &error)) << error;
-    setup.search_radius = 240;  // 481 rows > 480
+    setup.firmware_settings = {{"firmware.search_radius", json(240)}};  // 481 rows > 480
     EXPECT_FALSE(cli::validate_setup(setup, &error));
     EXPECT_EQ(error,
               "config key 'firmware.search_radius': the search window 481 x 481 px is larger than "
@@ -119,7 +132,7 @@ TEST(cli_config, scenario_settings_apply_first_then_the_user_keys) {
     std::vector<cli::key_assignment> a = {{"firmware.search_radius", json(40)},
                                           {"scenario.name", json("slow-cpu")}};
     ASSERT_TRUE(cli::apply_assignments(a, &setup, &error)) << error;
-    EXPECT_EQ(setup.search_radius, 40);
+    EXPECT_EQ(platform::firmware_key(cli::platform_config_of(setup), "search_radius", 0), 40);
     EXPECT_DOUBLE_EQ(setup.effective_cpu_mhz(), 300.0);
     a = {{"scenario.name", json("nosuch")}};
     EXPECT_FALSE(cli::apply_assignments(a, &setup, &error));
@@ -144,7 +157,7 @@ TEST(cli_config, config_json_round_trips_through_the_file_reader) {
     std::ofstream(path) << cli::config_json(setup).dump(2);
     std::vector<cli::key_assignment> read;
     ASSERT_TRUE(cli::read_config_file(path, &read, &error)) << error;
-    EXPECT_EQ(read.size(), cli::config_keys().size());
+    EXPECT_EQ(read.size(), cli::config_keys().size() + setup.firmware_settings.size());
     cli::run_setup again;
     ASSERT_TRUE(cli::apply_assignments(read, &again, &error)) << error;
     EXPECT_EQ(cli::config_json(again), cli::config_json(setup));

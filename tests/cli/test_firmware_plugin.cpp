@@ -317,7 +317,9 @@ TEST(FirmwareKeys, AFirmwaresOwnKeyReachesItAndIsKeptInTheReport) {
     EXPECT_LT(capture_ms(plain), 0.01);
     EXPECT_DOUBLE_EQ(capture_ms(set), 1.0);
     EXPECT_EQ(set["config"]["firmware"]["capture_cycles"], 600000);
-    EXPECT_FALSE(plain["config"]["firmware"].contains("capture_cycles"));
+    // Every value it ran with is recorded, the defaults too.
+    EXPECT_EQ(plain["config"]["firmware"]["capture_cycles"], 600);
+    EXPECT_EQ(plain["config"]["firmware"]["mode"], "overlapped");
     // The report replays the run it describes, the firmware's key included.
     testsupport::run_command(
         stereosim("run --quiet --config " + dir + "/set/report.json --out " + dir + "/replayed"));
@@ -339,7 +341,10 @@ TEST(FirmwareKeys, ABadKeyOrValueIsOneLineAndNothingWritten) {
         // The reference's key is not the plugin's.
         {minimal + " --set firmware.capture_cycles=10",
          "unknown config key 'firmware.capture_cycles' (the firmware 'minimal' declares of its "
-         "own: firmware.cycles_per_wait)"},
+         "own: firmware.cycles_per_wait, firmware.mode)"},
+        // Nor is a key of the same name: the plugin's own choices hold.
+        {minimal + " --mode sequential",
+         "config key 'firmware.mode': \"sequential\" is not one of quiet|chatty"},
         {" --set firmware.watchdg_ms=3",
          "unknown config key 'firmware.watchdg_ms' (did you mean 'firmware.watchdog_ms'?)"},
     };
@@ -350,6 +355,25 @@ TEST(FirmwareKeys, ABadKeyOrValueIsOneLineAndNothingWritten) {
         EXPECT_EQ(r.output, "stereosim: error: " + c.said + "\n") << c.args;
         EXPECT_FALSE(testsupport::file_exists(dir)) << c.args;
     }
+}
+
+// A plugin's key named like a reference key is the plugin's: its own
+// choices and default (the minimal firmware's `mode`: quiet | chatty). The
+// values create() gets are platform::plugin_values'
+// (ReferencePlugin.AnotherFirmwaresKeysTakeItsOwnDefaults); the report
+// records them.
+TEST(FirmwareKeys, APluginsKeyNamedLikeTheReferencesIsItsOwn) {
+    const std::string dir = testsupport::temp_dir("fw_keys_same_name");
+    const std::string args =
+        std::string("run --quiet --frames 3 --firmware ") + MINIMAL_FIRMWARE + " --out " + dir;
+    const auto quiet = testsupport::run_command(stereosim(args + "/quiet"));
+    const auto chatty =
+        testsupport::run_command(stereosim(args + "/chatty --set firmware.mode=chatty"));
+    // Both run (the minimal firmware processes nothing: the budget is not judged, exit 1).
+    ASSERT_EQ(quiet.exit_code, 1) << quiet.output;
+    ASSERT_EQ(chatty.exit_code, 1) << chatty.output;
+    EXPECT_EQ(report_of(dir + "/quiet")["config"]["firmware"]["mode"], "quiet");
+    EXPECT_EQ(report_of(dir + "/chatty")["config"]["firmware"]["mode"], "chatty");
 }
 
 TEST(FirmwareKeys, ConfigListShowsTheFirmwaresOwnKeys) {

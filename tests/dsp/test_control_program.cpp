@@ -1074,7 +1074,7 @@ TEST(ControlProgramRules, RunAllocatesNothingAfterInit) {
 TEST(ControlProgramPipeline, ResultsEqualTheControllerOnTheSamePairs) {
     const scene::scenario scenario = host::circling_scenario(2.0, 2, 10);
     const dsp::controller_config controller_config =
-        platform::controller_config_for(scenario.scene.rig);
+        host::controller_config_for(scenario.scene.rig);
     host::stereo_runner renderer(scenario, controller_config);
     std::vector<scene::gray_image> left, right;
     for (int n = 0; n < scenario.frame_count; ++n) {

@@ -28,7 +28,7 @@ std::vector<host::host_record> run(const scene::scenario& scenario,
 }
 
 dsp::controller_config default_config(const scene::scenario& scenario) {
-    return platform::controller_config_for(scenario.scene.rig);
+    return host::controller_config_for(scenario.scene.rig);
 }
 
 // "D" detect, "T" track, "L" lost per frame, for the log.

@@ -39,7 +39,7 @@ constexpr int stage_index(stage s) {
 // counted region; only process_pair is counted.
 TEST(FirmwareRules, ProcessPairAllocatesNothingAfterInit) {
     const scene::scenario scenario = host::exit_return_scenario(4);
-    host::stereo_runner runner(scenario, platform::controller_config_for(scenario.scene.rig));
+    host::stereo_runner runner(scenario, host::controller_config_for(scenario.scene.rig));
 
     // The counter sees the firmware's own allocations: a second controller's init.
     long init_allocations = 0;
@@ -47,7 +47,7 @@ TEST(FirmwareRules, ProcessPairAllocatesNothingAfterInit) {
         host::counting_hal hal;
         dsp::controller other;
         heap_counter count;
-        other.init(platform::controller_config_for(scenario.scene.rig), hal);
+        other.init(host::controller_config_for(scenario.scene.rig), hal);
         init_allocations = count.allocations();
     }
     EXPECT_GT(init_allocations, 5);
@@ -86,7 +86,7 @@ TEST(FirmwareRules, ProcessPairAllocatesNothingAfterInit) {
 // state transition implies (dsp/controller.h).
 TEST(FirmwareRules, StageCyclesAreNonZeroExactlyForTheStagesThatRan) {
     const scene::scenario scenario = host::exit_return_scenario(4);
-    host::stereo_runner runner(scenario, platform::controller_config_for(scenario.scene.rig));
+    host::stereo_runner runner(scenario, host::controller_config_for(scenario.scene.rig));
     const dsp::controller_config& config = runner.firmware().config();
 
     enum kind { filling, detect_nothing, detection, tracked, loss, lost_pair, kinds };

@@ -222,7 +222,7 @@ TEST_F(KernelCosts, CompiledCFactorReachesTheFirmwareFigures) {
     EXPECT_NEAR(ratio(hal.kernel_cycles(sad_search_profile(40, 40, 2401)), hand), 3.0, 1e-6);
 
     const scene::scenario scenario = scene::default_scenario();
-    const controller_config config = platform::controller_config_for(scenario.scene.rig);
+    const controller_config config = host::controller_config_for(scenario.scene.rig);
     host::stereo_runner by_hand(scenario, config);
     host::stereo_runner by_compiler(scenario, config, c64x::cost_model(compiled));
     for (int n = 0; n < 12; ++n) {

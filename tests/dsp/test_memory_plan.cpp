@@ -164,7 +164,7 @@ TEST(MemoryPlan, PackedThreeFrameDifferenceEqualsThePlainFormulaOnVtest) {
 // Every detection's motion box equals a plain detector's on the three frames.
 TEST(MemoryPlan, ControllerHistoryStaysConsecutiveOnARenderedSequence) {
     const scene::scenario scenario = host::exit_return_scenario(4);
-    host::stereo_runner runner(scenario, platform::controller_config_for(scenario.scene.rig));
+    host::stereo_runner runner(scenario, host::controller_config_for(scenario.scene.rig));
     const dsp::controller_config& config = runner.firmware().config();
     dsp::motion_detector plain;
     plain.init(config.max_width, config.max_height);

@@ -67,7 +67,7 @@ size_result run_case(const size_case& c) {
     const scene::stereo_rig rig;
     const double radius_m = radius_for_width(c.diameter_px, c.depth_m, rig.focal_px());
     const scene::scenario scenario = host::pass_scenario(c.depth_m, radius_m);
-    host::stereo_runner runner(scenario, platform::controller_config_for(scenario.scene.rig));
+    host::stereo_runner runner(scenario, host::controller_config_for(scenario.scene.rig));
     const std::vector<host::host_record> records = runner.run(0, scenario.frame_count);
     size_result r;
     r.summary =

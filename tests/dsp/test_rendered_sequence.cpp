@@ -39,7 +39,7 @@ struct run_result {
 };
 
 run_result run(const scene::scenario& scenario, int frames) {
-    host::stereo_runner runner(scenario, platform::controller_config_for(scenario.scene.rig));
+    host::stereo_runner runner(scenario, host::controller_config_for(scenario.scene.rig));
     run_result r;
     r.records = runner.run(0, frames);
     r.summary = platform::summarize(host::scored(r.records),

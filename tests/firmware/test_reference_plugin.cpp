@@ -16,6 +16,7 @@
 #include "tb/platform/firmware_board.h"
 #include "tb/platform/host/firmware_host.h"
 #include "tb/platform/platform_config.h"
+#include "tests/support/host/reference_config.h"
 #include "tests/support/host/stereo_runner.h"
 
 namespace {
@@ -39,81 +40,78 @@ TEST(ReferencePlugin, DescribesTheFirmwareOfDsp) {
     for (uint32_t s = 0; s < 3; ++s)
         EXPECT_STREQ(d.tracker_state_names[s],
                      dsp::tracker_state_name(static_cast<dsp::tracker_state>(s)));
-    // Its defaults are the platform's: a run that sets nothing runs the same.
-    const std::vector<double> platform_defaults =
-        platform::reference_values(platform::platform_config{});
-    ASSERT_EQ(d.key_count, platform_defaults.size());
-    for (uint32_t k = 0; k < d.key_count; ++k)
-        EXPECT_EQ(d.keys[k].default_value, platform_defaults[k]) << d.keys[k].name;
 }
 
-void expect_same(const dsp::control_program_config& a, const dsp::control_program_config& b) {
-    EXPECT_EQ(a.pipeline.max_width, b.pipeline.max_width);
-    EXPECT_EQ(a.pipeline.max_height, b.pipeline.max_height);
-    EXPECT_EQ(a.pipeline.cfa, b.pipeline.cfa);
-    EXPECT_EQ(a.pipeline.track.search_radius, b.pipeline.track.search_radius);
-    EXPECT_EQ(a.pipeline.detect.threshold, b.pipeline.detect.threshold);
-    EXPECT_EQ(a.pipeline.method, b.pipeline.method);
-    EXPECT_EQ(a.pipeline.frame_memory, b.pipeline.frame_memory);
-    EXPECT_EQ(a.pipeline.rig.baseline_um, b.pipeline.rig.baseline_um);
-    EXPECT_EQ(a.pipeline.rig.focal_length_um, b.pipeline.rig.focal_length_um);
-    EXPECT_EQ(a.pipeline.rig.pixel_pitch_nm, b.pipeline.rig.pixel_pitch_nm);
-    EXPECT_EQ(a.pipeline.rig.cx_left_q8, b.pipeline.rig.cx_left_q8);
-    EXPECT_EQ(a.pipeline.rig.cy_left_q8, b.pipeline.rig.cy_left_q8);
-    EXPECT_EQ(a.pipeline.rig.cx_right_q8, b.pipeline.rig.cx_right_q8);
-    EXPECT_EQ(a.pipeline.rig.cy_right_q8, b.pipeline.rig.cy_right_q8);
-    const uint32_t* ca = &a.card.dark_threshold;
-    const uint32_t* cb = &b.card.dark_threshold;
-    constexpr size_t card_words = sizeof(dsp::card_setup) / sizeof(uint32_t);
-    for (size_t i = 0; i < card_words; ++i) EXPECT_EQ(ca[i], cb[i]) << "card_setup word " << i;
-    EXPECT_EQ(a.dsk, b.dsk);
-    EXPECT_EQ(a.card_timing.setup, b.card_timing.setup);
-    EXPECT_EQ(a.card_timing.strobe, b.card_timing.strobe);
-    EXPECT_EQ(a.card_timing.hold, b.card_timing.hold);
-    EXPECT_EQ(a.cpu_mhz, b.cpu_mhz);
-    EXPECT_EQ(a.mode, b.mode);
-    EXPECT_EQ(a.buffer_base, b.buffer_base);
-    EXPECT_EQ(a.control_base, b.control_base);
-    EXPECT_EQ(a.max_pairs, b.max_pairs);
-    EXPECT_EQ(a.rearm_on_overflow, b.rearm_on_overflow);
-    EXPECT_EQ(a.rearm_on_every_sync_error, b.rearm_on_every_sync_error);
-    EXPECT_EQ(a.watchdog_ms, b.watchdog_ms);
-    EXPECT_EQ(a.capture_cycles, b.capture_cycles);
-    EXPECT_EQ(a.rearm_idle_polls, b.rearm_idle_polls);
-    EXPECT_EQ(a.hard_error_rearms, b.hard_error_rearms);
+// The configuration the plugin makes from a run's board and key settings:
+// every board fact and every key where the control program reads it.
+TEST(ReferencePlugin, MakesTheConfigurationARunAsksFor) {
+    platform::platform_config config;
+    config.dsk = c6416::dsk_v3();
+    config.card_timing = platform::card_bus_timing{3, 20, 1};
+    config.card_retry_limit = 2;
+    config.profile.cfa = dsp::cfa_order::grbg;
+    const std::pair<const char*, double> settings[] = {{"mode", 0},
+                                                       {"search_radius", 40},
+                                                       {"stereo_method", 2},
+                                                       {"detect_threshold", 33},
+                                                       {"frame_memory", 1},
+                                                       {"watchdog_ms", 50},
+                                                       {"card_start_timeout", 65535},
+                                                       {"capture_cycles", 1200},
+                                                       {"hard_error_rearms", 3},
+                                                       {"rearm_on_overflow", 0},
+                                                       {"rearm_on_every_sync_error", 1}};
+    for (const auto& [name, value] : settings) platform::set_firmware_key(&config, name, value);
+    const std::vector<double> values =
+        platform::plugin_values(dsp::plugin::reference_firmware(), config);
+    const dsp::control_program_config c =
+        dsp::plugin::reference_config(platform::board_of(config), values.data());
+    EXPECT_EQ(c.dsk, dsp::dsk_version::v3);
+    EXPECT_EQ(c.cpu_mhz, 1000u);
+    EXPECT_EQ(c.card_timing.setup, 3u);
+    EXPECT_EQ(c.card_timing.strobe, 20u);
+    EXPECT_EQ(c.card_timing.hold, 1u);
+    EXPECT_EQ(c.card.retry_limit, 2u);
+    EXPECT_EQ(c.card.active_cols, 640u);
+    EXPECT_EQ(c.card.frame_lines, 525u);
+    EXPECT_EQ(c.pipeline.cfa, dsp::cfa_order::grbg);
+    EXPECT_EQ(c.pipeline.max_width, 640);
+    EXPECT_EQ(c.pipeline.rig.baseline_um, 120000);
+    EXPECT_EQ(c.mode, dsp::pipeline_mode::sequential);
+    EXPECT_EQ(c.pipeline.track.search_radius, 40);
+    EXPECT_EQ(c.pipeline.method, dsp::stereo_method::both);
+    EXPECT_EQ(c.pipeline.detect.threshold, 33);
+    EXPECT_EQ(c.pipeline.frame_memory, dsp::cost::memory::sdram);
+    EXPECT_EQ(c.watchdog_ms, 50u);
+    EXPECT_EQ(c.card.start_timeout, 65535u);
+    EXPECT_EQ(c.capture_cycles, 1200u);
+    EXPECT_EQ(c.hard_error_rearms, 3u);
+    EXPECT_FALSE(c.rearm_on_overflow);
+    EXPECT_TRUE(c.rearm_on_every_sync_error);
+    // A run that sets nothing: the firmware's own defaults.
+    const platform::platform_config plain;
+    const std::vector<double> defaults =
+        platform::plugin_values(dsp::plugin::reference_firmware(), plain);
+    const dsp::control_program_config d =
+        dsp::plugin::reference_config(platform::board_of(plain), defaults.data());
+    const dsp::control_program_config own;
+    EXPECT_EQ(d.mode, own.mode);
+    EXPECT_EQ(d.pipeline.track.search_radius, own.pipeline.track.search_radius);
+    EXPECT_EQ(d.pipeline.method, own.pipeline.method);
+    EXPECT_EQ(d.pipeline.detect.threshold, own.pipeline.detect.threshold);
+    EXPECT_EQ(d.pipeline.frame_memory, own.pipeline.frame_memory);
+    EXPECT_EQ(d.watchdog_ms, own.watchdog_ms);
+    EXPECT_EQ(d.card.start_timeout, own.card.start_timeout);
+    EXPECT_EQ(d.capture_cycles, own.capture_cycles);
+    EXPECT_EQ(d.hard_error_rearms, own.hard_error_rearms);
+    EXPECT_EQ(d.rearm_on_overflow, own.rearm_on_overflow);
+    EXPECT_EQ(d.rearm_on_every_sync_error, own.rearm_on_every_sync_error);
 }
 
-// The configuration the plugin makes equals the one the platform gives the
-// built-in firmware, over the settings a run can change.
-TEST(ReferencePlugin, MakesThePlatformsConfiguration) {
-    std::vector<platform::platform_config> configs(8);
-    configs[1].dsk = c6416::dsk_v3();
-    configs[2].mode = dsp::pipeline_mode::sequential;
-    configs[3].card_timing = dsp::card_bus_timing{3, 20, 1};
-    configs[3].card_retry_limit = 2;
-    configs[4].watchdog_ms = 50;
-    configs[4].card_start_timeout = 65535;
-    configs[4].hard_error_rearms = 3;
-    configs[5].stereo_method = dsp::stereo_method::both;
-    configs[5].frame_memory = dsp::cost::memory::sdram;
-    configs[5].track_search_radius = 40;
-    configs[5].detect_threshold = 33;
-    configs[6].dsk = c6416::dsk_custom(800000000, 100000000);
-    configs[7].capture_cycles = 1200;
-    configs[7].profile.cfa = dsp::cfa_order::grbg;
-    for (size_t i = 0; i < configs.size(); ++i) {
-        SCOPED_TRACE("config " + std::to_string(i));
-        const std::vector<double> values = platform::reference_values(configs[i]);
-        expect_same(dsp::plugin::reference_config(platform::board_of(configs[i]), values.data()),
-                    platform::program_config(configs[i]));
-        // Loaded as a plugin it gets the same values.
-        EXPECT_EQ(platform::plugin_values(dsp::plugin::reference_firmware(), configs[i]), values);
-    }
-}
-
-// Another firmware's keys: one named like a reference setting takes the run's
-// value when it fits the key (a choice by name), the others their defaults.
-TEST(ReferencePlugin, AnotherFirmwaresKeysTakeTheRunsSettingsByName) {
+// Another firmware's keys: each takes the run's setting by its name, or the
+// default it declares (never the reference's default of a key of the same
+// name).
+TEST(ReferencePlugin, AnotherFirmwaresKeysTakeItsOwnDefaults) {
     const char* const modes[] = {"overlapped", "turbo"};
     const stereosim_fw_key keys[] = {
         {"watchdog_ms", STEREOSIM_KEY_INT, 0, 100, 7, nullptr, 0, "a watchdog"},
@@ -123,11 +121,14 @@ TEST(ReferencePlugin, AnotherFirmwaresKeysTakeTheRunsSettingsByName) {
     stereosim_fw_descriptor d = dsp::plugin::reference_firmware();
     d.keys = keys;
     d.key_count = 3;
-    platform::platform_config config;  // watchdog 500 ms: outside 0..100, overlapped
-    EXPECT_EQ(platform::plugin_values(d, config), (std::vector<double>{7, 0, 1.5}));
-    config.watchdog_ms = 50;
-    config.mode = dsp::pipeline_mode::sequential;  // no such choice: the default
-    EXPECT_EQ(platform::plugin_values(d, config), (std::vector<double>{50, 1, 1.5}));
+    platform::platform_config config;
+    EXPECT_EQ(platform::plugin_values(d, config), (std::vector<double>{7, 1, 1.5}));
+    EXPECT_TRUE(platform::asks_overlapped(d, config));  // "turbo" is not "sequential"
+    platform::set_firmware_key(&config, "watchdog_ms", 50);
+    platform::set_firmware_key(&config, "mode", 0);
+    EXPECT_EQ(platform::plugin_values(d, config), (std::vector<double>{50, 0, 1.5}));
+    EXPECT_EQ(platform::key_choice(d, config, "mode"), "overlapped");
+    EXPECT_EQ(platform::key_choice(d, config, "gain"), "");  // not a choice
 }
 
 // A bus with nothing on it (every read 0, so no card ID) and the DSK's
@@ -176,7 +177,8 @@ TEST(ReferencePlugin, RunsAndReportsAMissingCard) {
 
     const platform::platform_config config;
     const stereosim_board board = platform::board_of(config);
-    const std::vector<double> values = platform::reference_values(config);
+    const std::vector<double> values =
+        platform::plugin_values(dsp::plugin::reference_firmware(), config);
     char error[160] = "";
     const stereosim_fw_descriptor& d = p->descriptor();
     void* fw = d.create(&s, &board, values.data(), error, sizeof error);
@@ -214,15 +216,15 @@ TEST(ReferencePlugin, TheHostEntryChargesWhatTheControllerCharges) {
         *p->host(), p->descriptor().stage_count, config.scenario, platform::board_of(config),
         platform::plugin_values(p->descriptor(), config), platform::cost_model_of(config), &error);
     ASSERT_NE(fw, nullptr) << error;
-    host::stereo_runner runner(config.scenario, platform::pipeline_config(config),
-                               platform::cost_model_of(config));
+    const dsp::control_program_config program = host::program_config(config);
+    host::stereo_runner runner(config.scenario, program.pipeline, platform::cost_model_of(config));
     int tracked = 0;
     for (int n = 0; n < 10; ++n) {
         stereosim_result r{};
         ASSERT_TRUE(fw->step(n, &r, &error)) << error;
         const host::host_record h = runner.step(n);
         for (int s = 0; s < dsp::stage_count; ++s) {
-            const uint64_t capture = s == 0 ? config.capture_cycles : 0;
+            const uint64_t capture = s == 0 ? program.capture_cycles : 0;
             EXPECT_EQ(r.stage_cycles[s],
                       runner.hal().frame_cycles(static_cast<dsp::stage>(s)) + capture)
                 << "pair " << n << " stage " << s;
@@ -239,11 +241,11 @@ TEST(ReferencePlugin, TheHostEntryChargesWhatTheControllerCharges) {
     // A scenario whose images are not the sensors' active area is refused.
     platform::platform_config small = config;
     small.scenario.scene.rig.width = 320;
-    EXPECT_EQ(
-        host::firmware_host::create(*p->host(), p->descriptor().stage_count, small.scenario,
-                                    platform::board_of(config), platform::reference_values(config),
-                                    platform::cost_model_of(config), &error),
-        nullptr);
+    EXPECT_EQ(host::firmware_host::create(*p->host(), p->descriptor().stage_count, small.scenario,
+                                          platform::board_of(config),
+                                          platform::plugin_values(p->descriptor(), config),
+                                          platform::cost_model_of(config), &error),
+              nullptr);
     EXPECT_EQ(error, "the scenario's images are not the sensors' active area");
 }
 

@@ -18,6 +18,7 @@
 #include "tb/platform/platform.h"
 #include "tb/platform/report.h"
 #include "tb/platform/scoreboard.h"
+#include "tests/support/host/reference_config.h"
 #include "tests/support/host/stereo_runner.h"
 
 namespace system_test {
@@ -45,14 +46,15 @@ inline double ticks_to_ms(simtime::ticks t) {
 
 // The closed-form estimate's processing time, taken independently of the
 // platform: the same firmware on the same scenario in the host harness (no
-// hardware, tb/platform/host), its largest pair's modelled cycles plus the capture
+// hardware, tests/support/host), its largest pair's modelled cycles plus the capture
 // stage's, at the platform's CPU clock (the cost model is the platform's).
 inline double host_max_processing_ms(const platform::platform_config& config, int frames) {
-    host::stereo_runner runner(config.scenario, platform::pipeline_config(config));
+    const dsp::control_program_config program = host::program_config(config);
+    host::stereo_runner runner(config.scenario, program.pipeline);
     uint64_t max_cycles = 0;
     for (int n = 0; n < frames; ++n) {
         const platform::frame_record record = runner.step(n);
-        uint64_t cycles = config.capture_cycles;
+        uint64_t cycles = program.capture_cycles;
         for (int s = 0; s < dsp::stage_count; ++s) cycles += record.out.stage_cycles[s];
         max_cycles = std::max(max_cycles, cycles);
     }

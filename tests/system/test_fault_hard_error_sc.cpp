@@ -16,7 +16,7 @@ const system_test::system_run& dead_sensor_run() {
         platform::platform_config config;
         config.frames = 10;
         config.card_retry_limit = 2;
-        config.hard_error_rearms = 1;
+        platform::set_firmware_key(&config, "hard_error_rearms", 1);
         config.right_faults.push_back(sensor::fault::never_start());
         return system_test::simulate(config);
     }();

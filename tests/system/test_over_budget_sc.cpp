@@ -16,7 +16,7 @@ TEST(over_budget, large_search_window_at_low_cpu_clock_is_reported_naming_the_st
     platform::platform_config config;
     config.dsk = c6416::dsk_custom(300000000, 100000000);
     config.dsk.version = 1;  // the DSK v1 EMIF settings
-    config.track_search_radius = 96;
+    platform::set_firmware_key(&config, "search_radius", 96);
     const system_test::system_run r = system_test::simulate(config);
 
     const platform::capture_figures cf = system_test::closed_form_capture(*r.top);

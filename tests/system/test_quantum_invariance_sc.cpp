@@ -38,7 +38,7 @@ struct digest {
 platform::platform_config config_with_quantum(simtime::ticks quantum) {
     platform::platform_config config;
     config.frames = 5;
-    config.watchdog_ms = 30;
+    platform::set_firmware_key(&config, "watchdog_ms", 30);
     config.quantum = quantum;
     return config;
 }

@@ -44,7 +44,7 @@ struct digest {
 platform::platform_config config_in(dsp::cost::memory where) {
     platform::platform_config config;
     config.frames = frames;
-    config.frame_memory = where;
+    platform::set_firmware_key(&config, "frame_memory", static_cast<double>(where));
     return config;
 }
 

@@ -14,7 +14,7 @@ namespace {
 
 TEST(sequential_mode, over_budget_as_the_closed_form_says_naming_the_stage) {
     platform::platform_config config;
-    config.mode = dsp::pipeline_mode::sequential;
+    platform::set_firmware_key(&config, "mode", 0);  // sequential
     const system_test::system_run r = system_test::simulate(config);
 
     const platform::capture_figures cf = system_test::closed_form_capture(*r.top);

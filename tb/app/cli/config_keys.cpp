@@ -149,28 +149,11 @@ std::vector<config_key> hardware_keys() {
 
 std::vector<config_key> firmware_keys() {
     return {
-        choice("firmware.mode", setup_field(&run_setup::mode), {"sequential", "overlapped"},
-               "read the pair then process it, or process pair N while N+1 is read"),
-        integer("firmware.search_radius", setup_field(&run_setup::search_radius), 1, 1000,
-                "SAD tracking search radius, px each way (window 2r+1 must fit the image)"),
-        choice("firmware.stereo_method", setup_field(&run_setup::stereo_method),
-               {"sad", "edge", "both"}, "which stereo match gives the 3D point"),
-        integer("firmware.detect_threshold", setup_field(&run_setup::detect_threshold), 1, 254,
-                "three-frame differencing: Binary(a) = a > threshold, gray levels"),
-        choice("firmware.frame_memory", setup_field(&run_setup::frame_memory), {"l2", "sdram"},
-               "where the firmware's gray frames and motion mask live (l2: the memory plan of "
-               "docs/firmware.md)"),
         boolean("firmware.sdram_traffic_on_bus", setup_field(&run_setup::sdram_traffic_on_bus),
                 "the firmware's SDRAM traffic goes out on EMIFA (competes with capture)"),
         number("firmware.compiled_c_factor", setup_field(&run_setup::compiled_c_factor), 1.0, 100.0,
                "the cost model's compiled-C factor: 1 hand-scheduled kernels, more: compiled C "
                "(docs/paper.md)"),
-        integer("firmware.watchdog_ms", setup_field(&run_setup::watchdog_ms), 0, 10000,
-                "period of the firmware's card watchdog, ms (0: off)"),
-        integer("firmware.card_start_timeout", setup_field(&run_setup::card_start_timeout), 1,
-                65535,
-                "START_TIMEOUT the firmware programs: lines the card waits for the first VSYNC "
-                "after OE rises"),
     };
 }
 
@@ -478,6 +461,10 @@ bool apply_assignments(const std::vector<key_assignment>& assignments, run_setup
     setup->scenario.name = scenario;
     for (const auto& [name, text] : preset->settings) {
         const config_key* key = find_key(name);
+        if (!key && is_firmware_own_key(name)) {  // the reference firmware's keys
+            setup->firmware_settings.emplace_back(name, json(text));
+            continue;
+        }
         json value;
         if (!key || !parse_value(*key, text, &value, error))
             throw std::logic_error("built-in scenario " + scenario + ": bad setting " + name);
@@ -514,14 +501,6 @@ bool validate_setup(const run_setup& setup, std::string* error) {
             std::string("config keys 'sensor.window_cols' / 'sensor.window_rows': ") + e.what();
         return false;
     }
-    const int window = 2 * setup.search_radius + 1;
-    if (window > std::min(profile.active_cols, profile.active_rows)) {
-        *error = "config key 'firmware.search_radius': the search window " +
-                 std::to_string(window) + " x " + std::to_string(window) +
-                 " px is larger than the image (" + std::to_string(profile.active_cols) + " x " +
-                 std::to_string(profile.active_rows) + ")";
-        return false;
-    }
     if (setup.effective_eclk_mhz() > setup.effective_cpu_mhz() / 2.0) {
         // The C64x EMIF clock is at most CPU/4 or CPU/6 on the DSKs (docs/hardware-facts.md
         // section 2); half the CPU clock is the bound the model is sure to handle.
@@ -534,6 +513,18 @@ bool validate_setup(const run_setup& setup, std::string* error) {
     if (!setup.firmware.empty() && !firmware::plugin::load(setup.firmware, error)) return false;
     std::vector<std::pair<std::string, double>> firmware_values;
     if (!resolve_firmware_settings(setup, &firmware_values, error)) return false;
+    // The built-in firmware's search window must fit the image.
+    for (const auto& [name, value] : firmware_values) {
+        const int window = 2 * static_cast<int>(value) + 1;
+        if (!setup.firmware.empty() || name != "search_radius" ||
+            window <= std::min(profile.active_cols, profile.active_rows))
+            continue;
+        *error = "config key 'firmware.search_radius': the search window " +
+                 std::to_string(window) + " x " + std::to_string(window) +
+                 " px is larger than the image (" + std::to_string(profile.active_cols) + " x " +
+                 std::to_string(profile.active_rows) + ")";
+        return false;
+    }
     if (!setup.scenario.replay.empty()) {
         try {
             scene::replay replay(setup.scenario.replay, profile.active_cols, profile.active_rows);

@@ -45,6 +45,9 @@ const std::vector<config_key>& config_keys();
 // The keys as docs/config.md's table (`stereosim config --markdown`): key,
 // type / range, default, what; a `|` inside a cell escaped.
 std::string config_table_markdown();
+// The built-in firmware's own keys the same way (docs/config.md's second
+// table): they are its descriptor's, checked against it like a plugin's.
+std::string firmware_table_markdown();
 const config_key* find_key(const std::string& name);
 
 // The one-line error for an unknown key, with the nearest key name:

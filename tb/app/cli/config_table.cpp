@@ -1,7 +1,10 @@
-// docs/config.md's table of keys, as `stereosim config --markdown` prints it.
+// docs/config.md's tables of keys, as `stereosim config --markdown` prints
+// them: the platform's, then the built-in firmware's own.
 #include <string>
 
+#include "dsp/plugin/reference_firmware.h"
 #include "tb/app/cli/config_keys.h"
+#include "tb/app/cli/firmware_keys.h"
 
 namespace cli {
 
@@ -22,6 +25,19 @@ std::string config_table_markdown() {
     for (const config_key& k : config_keys())
         out += "| `" + k.name + "` | " + markdown_cell(k.range_text()) + " | `" +
                markdown_cell(k.get(defaults).dump()) + "` | " + markdown_cell(k.doc) + " |\n";
+    return out;
+}
+
+std::string firmware_table_markdown() {
+    const stereosim_fw_descriptor& d = dsp::plugin::reference_firmware();
+    std::vector<double> defaults;
+    for (uint32_t k = 0; k < d.key_count; ++k) defaults.push_back(d.keys[k].default_value);
+    const nlohmann::json values = firmware_values_json(d, defaults);
+    std::string out = "| firmware key | type / range | default | what |\n|---|---|---|---|\n";
+    for (const config_key& k : firmware_own_keys(d))
+        out += "| `" + k.name + "` | " + markdown_cell(k.range_text()) + " | `" +
+               markdown_cell(values.at(k.name.substr(k.name.find('.') + 1)).dump()) + "` | " +
+               markdown_cell(k.doc) + " |\n";
     return out;
 }
 

@@ -40,17 +40,22 @@ config_key key_of(const stereosim_fw_key& k) {
     return key;
 }
 
-json default_of(const stereosim_fw_key& k) {
+// A value of key k as a config file holds it.
+json value_of(const stereosim_fw_key& k, double v) {
     switch (k.type) {
         case STEREOSIM_KEY_INT:
-            return json(static_cast<int64_t>(k.default_value));
+            return json(static_cast<int64_t>(v));
         case STEREOSIM_KEY_FLOAT:
-            return json(k.default_value);
+            return json(v);
         case STEREOSIM_KEY_BOOL:
-            return json(k.default_value != 0.0);
+            return json(v != 0.0);
         default:
-            return json(k.choices[static_cast<size_t>(k.default_value)]);
+            return json(k.choices[static_cast<size_t>(v)]);
     }
+}
+
+json default_of(const stereosim_fw_key& k) {
+    return value_of(k, k.default_value);
 }
 
 // A setting as the key's value: text from --set, or a config file's JSON.
@@ -131,6 +136,39 @@ bool resolve_firmware_settings(const run_setup& setup,
             values->emplace_back(bare, value);
     }
     return true;
+}
+
+std::vector<std::string> settings_it_takes(const std::vector<std::string>& settings,
+                                           const std::string& path) {
+    std::string error;
+    std::unique_ptr<firmware::plugin> loaded;
+    if (!path.empty()) loaded = firmware::plugin::load(path, &error);
+    const stereosim_fw_descriptor& d =
+        loaded ? loaded->descriptor() : dsp::plugin::reference_firmware();
+    std::vector<std::string> taken;
+    for (const std::string& setting : settings) {
+        const size_t eq = setting.find('=');
+        const std::string name = setting.substr(0, eq);
+        bool takes = !is_firmware_own_key(name);
+        for (uint32_t k = 0; k < d.key_count && !takes; ++k) {
+            if (name != std::string(prefix) + d.keys[k].name) continue;
+            // A key of the same name whose declaration refuses the value
+            // (another firmware's `mode`) is not the setting the plan means.
+            double value = 0.0;
+            std::string why;
+            takes = eq != std::string::npos &&
+                    check_setting(key_of(d.keys[k]), json(setting.substr(eq + 1)), &value, &why);
+        }
+        if (takes) taken.push_back(setting);
+    }
+    return taken;
+}
+
+json firmware_values_json(const stereosim_fw_descriptor& d, const std::vector<double>& values) {
+    json out = json::object();
+    for (uint32_t k = 0; k < d.key_count && k < values.size(); ++k)
+        out[d.keys[k].name] = value_of(d.keys[k], values[k]);
+    return out;
 }
 
 json typed_setting(const json& given) {

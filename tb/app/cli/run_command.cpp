@@ -28,6 +28,10 @@ using nlohmann::json;
 bool add_assignment(const std::string& option, const std::string& key_name, const std::string& text,
                     std::vector<key_assignment>* out, std::string* error) {
     const config_key* key = find_key(key_name);
+    if (!key) {  // a firmware's own key (--mode): checked once the firmware is known
+        out->push_back({key_name, json(text)});
+        return true;
+    }
     json value;
     if (!parse_value(*key, text, &value, error)) {
         *error = option + ": " + *error;

@@ -12,6 +12,8 @@
 
 #include "dsp/kernel_costs.h"
 #include "tb/app/cli/config_keys.h"
+#include "tb/app/cli/firmware_keys.h"
+#include "tb/platform/firmware_board.h"
 #include "tb/platform/island/island.h"
 #include "tb/platform/report.h"
 
@@ -348,6 +350,12 @@ json build_report(const run_setup& setup, const platform::platform_top& top,
     report["tool"]["firmware"] =
         firmware_identity(top.firmware_descriptor(), top.firmware_plugin());
     report["config"] = config_json(setup);
+    // Every key value the firmware ran with, its defaults included, so that
+    // the report replays its run whatever the defaults become.
+    const json values =
+        firmware_values_json(top.firmware_descriptor(),
+                             platform::plugin_values(top.firmware_descriptor(), top.config()));
+    for (const auto& [name, value] : values.items()) report["config"]["firmware"][name] = value;
     if (!setup.scenario.replay.empty()) add_replay(report, setup, top);
     report["verdict"] = budget.fits ? "within_budget" : "over_budget";
     // A run too short for a stage to run judged only part of the budget.

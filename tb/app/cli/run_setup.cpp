@@ -63,18 +63,8 @@ platform::platform_config platform_config_of(const run_setup& s) {
         c.dsk.version = version.version;
     }
 
-    c.mode =
-        s.mode == "sequential" ? dsp::pipeline_mode::sequential : dsp::pipeline_mode::overlapped;
-    c.track_search_radius = s.search_radius;
-    c.stereo_method = s.stereo_method == "edge"   ? dsp::stereo_method::edge
-                      : s.stereo_method == "both" ? dsp::stereo_method::both
-                                                  : dsp::stereo_method::sad;
-    c.detect_threshold = s.detect_threshold;
-    c.frame_memory = s.frame_memory == "l2" ? dsp::cost::memory::l2 : dsp::cost::memory::sdram;
     c.sdram_traffic_on_bus = s.sdram_traffic_on_bus;
     c.compiled_c_factor = s.compiled_c_factor;
-    c.watchdog_ms = static_cast<uint32_t>(s.watchdog_ms);
-    c.card_start_timeout = static_cast<uint32_t>(s.card_start_timeout);
     c.card_timing.setup = static_cast<uint32_t>(s.card_setup);
     c.card_timing.strobe = static_cast<uint32_t>(s.card_strobe);
     c.card_timing.hold = static_cast<uint32_t>(s.card_hold);

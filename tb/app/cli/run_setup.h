@@ -12,8 +12,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "dsp/control_program.h"
-#include "dsp/controller.h"
 #include "tb/platform/platform_config.h"
 
 namespace cli {
@@ -52,23 +50,15 @@ struct run_setup {
     int dsk_version = 1;
     double cpu_mhz = 0.0;
     double eclk_mhz = 0.0;
-    // The card's CE2 / CE3 async timing, ECLK cycles (dsp::card_bus_timing);
+    // The card's CE2 / CE3 async timing, ECLK cycles (platform::card_bus_timing);
     // 0: the DSK version's (2/10/2 on v1, 2/12/2 on v2 and v3).
     int card_setup = 0;
     int card_strobe = 0;
     int card_hold = 0;
 
-    // The firmware's parameters default to the firmware's own values, read
-    // from its default configurations so that they are written down once.
-    std::string mode = dsp::pipeline_mode_name(dsp::control_program_config{}.mode);
-    int search_radius = dsp::track_params{}.search_radius;
-    std::string stereo_method = dsp::stereo_method_name(dsp::controller_config{}.method);
-    int detect_threshold = dsp::detect_params{}.threshold;
-    std::string frame_memory = "l2";  // sdram: before the memory plan (docs/firmware.md)
+    // The platform's side of the firmware: its SDRAM traffic on the bus, the
+    // cost model's compiled-C factor. The firmware's own keys are below.
     bool sdram_traffic_on_bus = true;
-    int watchdog_ms = static_cast<int>(dsp::control_program_config{}.watchdog_ms);
-    // The card's reset value, 2 frames (docs/card-registers.md).
-    int card_start_timeout = static_cast<int>(dsp::card_regs::start_timeout_reset);
     double compiled_c_factor = 1.0;  // the cost model's (docs/paper.md)
 
     int frames = 12;

@@ -20,6 +20,7 @@
 
 #include "tb/app/cli/child_run.h"
 #include "tb/app/cli/firmware_identity.h"
+#include "tb/app/cli/firmware_keys.h"
 #include "tb/app/cli/interrupt.h"
 #include "tb/app/cli/run_command.h"
 #include "tb/app/faults/campaign_files.h"
@@ -183,7 +184,8 @@ json row_json(const campaign_row& r) {
 // The shard's runs whose spec matches --match A|B (contains A or B).
 std::vector<campaign_run> selected_runs(const campaign_options& o) {
     std::vector<campaign_run> plan;
-    for (const campaign_run& r : shard_of(campaign_plan(o.name, o.seeds), o.shard, o.shards)) {
+    for (campaign_run r : shard_of(campaign_plan(o.name, o.seeds), o.shard, o.shards)) {
+        r.settings = cli::settings_it_takes(r.settings, o.firmware);
         const std::string spec = r.fault.empty() ? "clean" : r.fault;
         bool hit = false;
         for (size_t from = 0; from <= o.match.size();) {

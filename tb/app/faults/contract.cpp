@@ -7,6 +7,7 @@
 
 #include "dsp/card_regs.h"
 #include "model/emif/cectl.h"
+#include "tb/platform/firmware_board.h"
 
 namespace faults {
 
@@ -61,7 +62,9 @@ const char* safety_class(fault_type type, outcome actual) {
 contract_params params_for(const platform::platform_config& config) {
     contract_params p;
     p.retry_limit = config.card_retry_limit;
-    p.hard_error_rearms = config.hard_error_rearms;
+    // Until the firmware states its policy (the overload below): what the run asks.
+    p.hard_error_rearms =
+        static_cast<uint32_t>(platform::firmware_key(config, "hard_error_rearms", 1));
     p.dark_threshold = dsp::card_regs::dark_threshold_reset;
     p.black_level = config.profile.black_level;
     p.line_pclks = config.profile.line_pclks;
@@ -73,11 +76,10 @@ contract_params params_for(const platform::platform_config& config) {
                            prof.href_start + prof.readout_cols();
     p.words_per_pair = 2.0 * config.profile.active_cols * config.profile.active_rows /
                        dsp::card_regs::pixels_per_word;
-    // The card's CE3 read with the CECTL the firmware programs: RS + RST + RH
+    // The card's CE3 read with the CECTL the board asks for: RS + RST + RH
     // = 2 + 10 + 2 ECLK on DSK v1 (docs/card.md "Access lengths"; v2/v3
     // 0x23228C22: 16 ECLK), or the configured card timing's.
-    p.eclk_per_word =
-        emif::decode_cectl(dsp::card_cectl(platform::program_config(config))).read_cycles();
+    p.eclk_per_word = emif::decode_cectl(platform::card_cectl_asked(config)).read_cycles();
     p.eclk_ns = 1e9 / static_cast<double>(config.dsk.emif_hz);
     p.period_ms = static_cast<double>(config.period) / (simtime::ticks_per_ns * 1e6);
     return p;

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "dsp/card_regs.h"
+#include "tb/app/cli/firmware_keys.h"
 #include "tb/app/faults/fault_report.h"
 #include "tb/app/faults/fault_spec.h"
 
@@ -39,13 +40,13 @@ class fault_extension final : public cli::run_extension {
         run.add_option("--card-retry-limit", m_retry_limit,
                        "the card's RETRY_LIMIT: OE restarts before HARD_ERROR (default " +
                            std::to_string(m_retry_limit) + ")");
-        run.add_option("--hard-error-rearms", m_rearms,
-                       "the firmware's re-arms after a card hard error before it gives up "
-                       "(default " +
-                           std::to_string(m_rearms) + ")");
+        m_rearms_option =
+            run.add_option("--hard-error-rearms", m_rearms,
+                           "the firmware's re-arms after a card hard error before it gives up "
+                           "(firmware.hard_error_rearms; default: the firmware's own)");
     }
 
-    bool configure(const cli::run_setup& /*setup*/, platform::platform_config& config,
+    bool configure(const cli::run_setup& setup, platform::platform_config& config,
                    std::string* error) override {
         for (const std::string& text : m_texts) {
             const std::optional<fault_spec> spec = parse_fault_spec(text, error);
@@ -58,12 +59,16 @@ class fault_extension final : public cli::run_extension {
                      " out of range 0..255 (RETRY_LIMIT is 8 bits)";
             return false;
         }
-        if (m_rearms < 0 || m_rearms > 1000) {
-            *error = "--hard-error-rearms: " + std::to_string(m_rearms) + " out of range 0..1000";
-            return false;
-        }
         config.card_retry_limit = static_cast<uint32_t>(m_retry_limit);
-        config.hard_error_rearms = static_cast<uint32_t>(m_rearms);
+        if (m_rearms_option->count() > 0) {
+            // The firmware's key, checked against its descriptor like --set.
+            cli::run_setup with = setup;
+            with.firmware_settings.emplace_back("firmware.hard_error_rearms", m_rearms);
+            if (!cli::resolve_firmware_settings(with, &config.firmware_settings, error)) {
+                *error = "--hard-error-rearms: " + *error;
+                return false;
+            }
+        }
         return true;
     }
 
@@ -113,9 +118,10 @@ class fault_extension final : public cli::run_extension {
 
   private:
     std::vector<std::string> m_texts;
-    // The defaults of platform_config: the card's reset value, the firmware's own.
+    // The card's reset value.
     int m_retry_limit = static_cast<int>(dsp::card_regs::retry_limit_reset);
-    int m_rearms = static_cast<int>(dsp::control_program_config{}.hard_error_rearms);
+    int m_rearms = 0;
+    CLI::Option* m_rearms_option = nullptr;
     std::vector<fault_spec> m_specs;
     platform::platform_top* m_top = nullptr;
     fault_run_result m_result;

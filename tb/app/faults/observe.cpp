@@ -546,7 +546,9 @@ run_observation observe(platform::platform_top& top, const platform::scoreboard_
     const simtime::ticks period = top.config().period;
     run.frames = top.config().frames;
     run.truth_available = !(top.replay() && !top.replay()->has_truth());
-    run.mode = dsp::pipeline_mode_name(top.config().mode);
+    // The mode as the firmware's policy states it.
+    const bool created = top.firmware_started() && !top.firmware_init_failed();
+    run.mode = !created ? "none" : top.firmware_policy().overlapped ? "overlapped" : "sequential";
     run.dsk_version = top.config().dsk.version;
     run.period_ms = to_ms(period);
     run.end_ms = to_ms(top.end_tick());

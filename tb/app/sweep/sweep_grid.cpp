@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <set>
 
+#include "tb/app/cli/firmware_keys.h"
+
 namespace sweep {
 
 namespace {
@@ -65,6 +67,45 @@ bool parse_range(const cli::config_key& key, const std::string& text, grid_axis*
     return true;
 }
 
+// A firmware's own key (firmware.NAME beyond the platform's table): its
+// values as a config file would hold them, each checked against the
+// firmware's descriptor with its point's setup (sweep_plan).
+bool parse_firmware_axis(const std::string& list, grid_axis* axis, std::string* error) {
+    std::vector<json> values;
+    if (list.find(':') != std::string::npos) {
+        const std::vector<std::string> parts = split(list, ':');
+        double lo = 0, hi = 0, step = 0;
+        if (parts.size() != 3 || !parse_number(parts[0], &lo) || !parse_number(parts[1], &hi) ||
+            !parse_number(parts[2], &step) || step <= 0 || lo > hi || (hi - lo) / step > 100000) {
+            *error = "--grid " + axis->key + "=" + list +
+                     ": a range is LO:HI:STEP, LO <= HI, STEP > 0, at most 100,000 values";
+            return false;
+        }
+        const double count = std::floor((hi - lo) / step + 1e-9) + 1;
+        for (int i = 0; i < static_cast<int>(count); ++i) {
+            const double v = lo + i * step;
+            values.push_back(v == std::floor(v) ? json(static_cast<int64_t>(v)) : json(v));
+        }
+    } else {
+        for (const std::string& item : split(list, ',')) {
+            if (item.empty()) {
+                *error = "--grid " + axis->key + "=" + list + ": an empty value";
+                return false;
+            }
+            values.push_back(cli::typed_setting(json(item)));
+        }
+    }
+    std::set<std::string> seen;
+    for (const json& v : values) {
+        if (!seen.insert(v.dump()).second) {
+            *error = "--grid " + axis->key + "=" + list + ": value " + v.dump() + " given twice";
+            return false;
+        }
+        axis->values.push_back(v);
+    }
+    return true;
+}
+
 }  // namespace
 
 bool parse_axis(const std::string& text, grid_axis* axis, std::string* error) {
@@ -76,11 +117,13 @@ bool parse_axis(const std::string& text, grid_axis* axis, std::string* error) {
     axis->key = text.substr(0, eq);
     axis->values.clear();
     const cli::config_key* key = cli::find_key(axis->key);
+    const std::string list = text.substr(eq + 1);
+    if (!key && cli::is_firmware_own_key(axis->key) && !list.empty())
+        return parse_firmware_axis(list, axis, error);
     if (!key) {
         *error = "--grid: " + cli::unknown_key_message(axis->key);
         return false;
     }
-    const std::string list = text.substr(eq + 1);
     if (list.empty()) {
         *error = "--grid " + axis->key + ": no values";
         return false;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "tb/app/cli/firmware_keys.h"
 #include "tb/app/sweep/sweep_point.h"
 
 namespace sweep {
@@ -18,6 +19,10 @@ bool add_setting(const std::string& option, const std::string& set,
         return false;
     }
     const cli::config_key* key = cli::find_key(set.substr(0, eq));
+    if (!key && cli::is_firmware_own_key(set.substr(0, eq))) {  // checked per point
+        base->push_back({set.substr(0, eq), cli::typed_setting(json(set.substr(eq + 1)))});
+        return true;
+    }
     if (!key) {
         *error = option + ": " + cli::unknown_key_message(set.substr(0, eq));
         return false;

@@ -36,10 +36,13 @@ std::string processing_key(const cli::run_setup& s) {
     p.card_setup = defaults.card_setup;
     p.card_strobe = defaults.card_strobe;
     p.card_hold = defaults.card_hold;
-    p.mode = defaults.mode;
     p.sdram_traffic_on_bus = defaults.sdram_traffic_on_bus;
-    p.watchdog_ms = defaults.watchdog_ms;
-    p.card_start_timeout = defaults.card_start_timeout;
+    const auto bus_or_timer = [](const auto& setting) {
+        return setting.first == "firmware.mode" || setting.first == "firmware.watchdog_ms" ||
+               setting.first == "firmware.card_start_timeout";
+    };
+    auto& settings = p.firmware_settings;
+    settings.erase(std::remove_if(settings.begin(), settings.end(), bus_or_timer), settings.end());
     return cli::config_json(p).dump();
 }
 
@@ -157,12 +160,14 @@ json closed_form_cache::estimate(const cli::run_setup& setup) {
     const double cpu_mhz = static_cast<double>(config.dsk.cpu_hz) / 1e6;
     double processing_ms = std::numeric_limits<double>::quiet_NaN();
     std::string note;
-    if (config.replay_manifest.empty()) {
+    const stereosim_fw_descriptor* firmware = nullptr;
+    const stereosim_fw_host* entry = host_entry(setup.firmware, &firmware, &note);
+    if (!config.replay_manifest.empty()) {
+        note = "a replay has no rendered scene: no processing estimate";
+    } else if (firmware != nullptr) {
         const std::string key = processing_key(setup);
         auto it = m_cycles.find(key);
         if (it == m_cycles.end()) {
-            const stereosim_fw_descriptor* firmware = nullptr;
-            const stereosim_fw_host* entry = host_entry(setup.firmware, &firmware, &note);
             const double cycles = entry == nullptr
                                       ? std::numeric_limits<double>::quiet_NaN()
                                       : host_max_pair_cycles(config, *firmware, *entry, &note);
@@ -170,11 +175,10 @@ json closed_form_cache::estimate(const cli::run_setup& setup) {
         }
         processing_ms = it->second.first / cpu_mhz / 1e3;
         note = it->second.second;
-    } else {
-        note = "a replay has no rendered scene: no processing estimate";
     }
-    const platform::budget_estimate b =
-        platform::estimate_budget(config, std::isnan(processing_ms) ? 0.0 : processing_ms);
+    const bool overlapped = firmware == nullptr || platform::asks_overlapped(*firmware, config);
+    const platform::budget_estimate b = platform::estimate_budget(
+        config, std::isnan(processing_ms) ? 0.0 : processing_ms, overlapped);
     const double period_ms = static_cast<double>(config.period) / (simtime::ticks_per_ns * 1e6);
     json j = {{"capture_ms", round6(b.capture_ms)}, {"traffic_ms", round6(b.traffic_ms)}};
     if (std::isnan(processing_ms)) {

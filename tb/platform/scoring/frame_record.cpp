@@ -4,14 +4,6 @@
 
 namespace platform {
 
-dsp::controller_config controller_config_for(const scene::stereo_rig& rig) {
-    dsp::controller_config config;
-    config.max_width = rig.width;
-    config.max_height = rig.height;
-    config.rig = scene::to_dsp_rig(rig);
-    return config;
-}
-
 int first_motion_frame(const scene::sequence& sequence, int frames) {
     scene::vec3 previous{};
     for (int n = 0; n < frames; ++n) {

@@ -1,10 +1,8 @@
-// One processed stereo pair beside the scene's truth, and what the platform
-// and the host runner (tb/platform/host) both need to score it: the
-// firmware's configuration for a scene rig and the first frame that moves.
+// One processed stereo pair beside the scene's truth, and the first frame
+// that moves, what the platform and the tests' host runs both score with.
 // The pair's output is the firmware ABI's result: what any firmware reports.
 #pragma once
 
-#include "dsp/controller.h"
 #include "model/scene/sequence.h"
 #include "stereosim/firmware.h"
 
@@ -22,10 +20,6 @@ struct frame_record {
     bool truth_has_point = true;
     scene::ball_truth truth;
 };
-
-// The controller configuration for a scene rig: image size, the firmware's
-// integer rig, everything else at its default.
-dsp::controller_config controller_config_for(const scene::stereo_rig& rig);
 
 // The first frame whose ball centre differs from the previous frame's, or
 // -1 if the ball never moves within [0, frames).

@@ -7,6 +7,14 @@
 
 namespace host {
 
+dsp::controller_config controller_config_for(const scene::stereo_rig& rig) {
+    dsp::controller_config config;
+    config.max_width = rig.width;
+    config.max_height = rig.height;
+    config.rig = scene::to_dsp_rig(rig);
+    return config;
+}
+
 stereo_runner::stereo_runner(scene::scenario scenario, const dsp::controller_config& config,
                              const dsp::c64x::cost_model& model)
     : m_sequence(std::move(scenario)), m_hal(model), m_cfa(config.cfa) {

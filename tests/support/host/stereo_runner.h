@@ -16,6 +16,10 @@
 
 namespace host {
 
+// The controller configuration for a scene rig: image size, the firmware's
+// integer rig, everything else at its default.
+dsp::controller_config controller_config_for(const scene::stereo_rig& rig);
+
 // One pair the host runner processed: what the platform scores (the ABI's
 // result, frame_record::out) and the reference firmware's whole output.
 struct host_record : platform::frame_record {
