@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "dsp/c6416_regs.h"
-#include "dsp/plugin/reference_firmware.h"
+#include "tb/firmware/builtin.h"
 #include "model/time/sc_ticks.h"
 #include "tb/platform/arrangements/fast/fast_island.h"
 #include "tb/platform/arrangements/pins/pins_island.h"
@@ -59,7 +59,7 @@ platform_top::platform_top(const platform_config& config)
         if (!m_plugin) throw std::runtime_error(error);
         m_firmware = &m_plugin->descriptor();
     } else {
-        m_firmware = &dsp::plugin::reference_firmware();
+        m_firmware = &::firmware::builtin();
     }
     m_timeline.set_firmware_names(
         {m_firmware->stage_names, m_firmware->stage_names + m_firmware->stage_count},

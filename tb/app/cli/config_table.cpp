@@ -2,7 +2,7 @@
 // them: the platform's, then the built-in firmware's own.
 #include <string>
 
-#include "dsp/plugin/reference_firmware.h"
+#include "tb/firmware/builtin.h"
 #include "tb/app/cli/config_keys.h"
 #include "tb/app/cli/firmware_keys.h"
 
@@ -29,7 +29,7 @@ std::string config_table_markdown() {
 }
 
 std::string firmware_table_markdown() {
-    const stereosim_fw_descriptor& d = dsp::plugin::reference_firmware();
+    const stereosim_fw_descriptor& d = firmware::builtin();
     std::vector<double> defaults;
     for (uint32_t k = 0; k < d.key_count; ++k) defaults.push_back(d.keys[k].default_value);
     const nlohmann::json values = firmware_values_json(d, defaults);

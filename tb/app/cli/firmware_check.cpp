@@ -9,7 +9,7 @@
 #include <sstream>
 #include <vector>
 
-#include "dsp/plugin/reference_firmware.h"
+#include "tb/firmware/builtin.h"
 #include "tb/app/cli/child_run.h"
 #include "tb/app/cli/host_figures.h"
 #include "tb/app/cli/run_command.h"
@@ -133,7 +133,7 @@ int check_firmware(const std::string& binary, const std::string& path) {
         return exit_bad_input;
     }
     const stereosim_fw_descriptor& d =
-        plugin ? plugin->descriptor() : dsp::plugin::reference_firmware();
+        plugin ? plugin->descriptor() : firmware::builtin();
     std::string pattern = (fs::temp_directory_path() / "stereosim-check-XXXXXX").string();
     if (!mkdtemp(pattern.data())) {
         print_error("cannot create a folder for the check's runs in " +

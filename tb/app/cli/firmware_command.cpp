@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "dsp/plugin/reference_firmware.h"
+#include "tb/firmware/builtin.h"
 #include "tb/app/cli/firmware_check.h"
 #include "tb/app/cli/run_command.h"
 #include "tb/firmware/plugin.h"
@@ -74,7 +74,7 @@ int firmware_command::execute() {
         }
     }
     const stereosim_fw_descriptor& d =
-        plugin ? plugin->descriptor() : dsp::plugin::reference_firmware();
+        plugin ? plugin->descriptor() : firmware::builtin();
     std::printf("firmware  %s %s (ABI version %u)\n", d.name, d.version, d.abi_version);
     std::printf("file      %s\n", plugin ? plugin->path().c_str() : "built in");
     if (plugin) std::printf("sha256    %s\n", plugin->sha256().c_str());

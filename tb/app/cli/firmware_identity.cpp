@@ -1,6 +1,6 @@
 #include "tb/app/cli/firmware_identity.h"
 
-#include "dsp/plugin/reference_firmware.h"
+#include "tb/firmware/builtin.h"
 
 namespace cli {
 
@@ -19,14 +19,14 @@ json firmware_identity(const stereosim_fw_descriptor& d, const firmware::plugin*
 }
 
 json firmware_identity_of(const std::string& path, std::string* error) {
-    if (path.empty()) return firmware_identity(dsp::plugin::reference_firmware(), nullptr);
+    if (path.empty()) return firmware_identity(firmware::builtin(), nullptr);
     const std::unique_ptr<firmware::plugin> p = firmware::plugin::load(path, error);
     return p ? firmware_identity(p->descriptor(), p.get()) : json(nullptr);
 }
 
 json firmware_of_document(const json& document) {
     if (document.contains("firmware")) return document.at("firmware");
-    return firmware_identity(dsp::plugin::reference_firmware(), nullptr);
+    return firmware_identity(firmware::builtin(), nullptr);
 }
 
 }  // namespace cli

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <memory>
 
-#include "dsp/plugin/reference_firmware.h"
+#include "tb/firmware/builtin.h"
 #include "tb/firmware/plugin.h"
 
 namespace cli {
@@ -111,7 +111,7 @@ bool resolve_firmware_settings(const run_setup& setup,
     values->clear();
     if (setup.firmware_settings.empty()) return true;
     std::unique_ptr<firmware::plugin> loaded;
-    const stereosim_fw_descriptor* descriptor = &dsp::plugin::reference_firmware();
+    const stereosim_fw_descriptor* descriptor = &firmware::builtin();
     if (!setup.firmware.empty()) {
         loaded = firmware::plugin::load(setup.firmware, error);
         if (!loaded) return false;
@@ -144,7 +144,7 @@ std::vector<std::string> settings_it_takes(const std::vector<std::string>& setti
     std::unique_ptr<firmware::plugin> loaded;
     if (!path.empty()) loaded = firmware::plugin::load(path, &error);
     const stereosim_fw_descriptor& d =
-        loaded ? loaded->descriptor() : dsp::plugin::reference_firmware();
+        loaded ? loaded->descriptor() : firmware::builtin();
     std::vector<std::string> taken;
     for (const std::string& setting : settings) {
         const size_t eq = setting.find('=');
@@ -190,7 +190,7 @@ bool print_firmware_keys(const std::string& path, std::string* error) {
         if (!loaded) return false;
     }
     const stereosim_fw_descriptor& d =
-        loaded ? loaded->descriptor() : dsp::plugin::reference_firmware();
+        loaded ? loaded->descriptor() : firmware::builtin();
     const run_setup defaults;
     for (const config_key& k : config_keys())
         std::printf("%-30s %-34s default %-12s %s\n", k.name.c_str(), k.range_text().c_str(),

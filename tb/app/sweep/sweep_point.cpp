@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "dsp/plugin/reference_firmware.h"
+#include "tb/firmware/builtin.h"
 #include "tb/platform/closed_form.h"
 #include "tb/platform/firmware_board.h"
 #include "tb/platform/host/firmware_host.h"
@@ -135,8 +135,8 @@ const stereosim_fw_host* closed_form_cache::host_entry(const std::string& path,
                                                        const stereosim_fw_descriptor** firmware,
                                                        std::string* note) {
     if (path.empty()) {
-        *firmware = &dsp::plugin::reference_firmware();
-        return &dsp::plugin::reference_host();
+        *firmware = &firmware::builtin();
+        return &firmware::builtin_host();
     }
     auto it = m_plugins.find(path);
     if (it == m_plugins.end()) {
