@@ -2,7 +2,7 @@
 
 #include <cstring>
 
-#include "dsp/c6416_regs.h"
+#include "model/emif/cectl.h"
 #include "model/scene/camera.h"
 
 namespace platform {
@@ -70,20 +70,13 @@ bool asks_overlapped(const stereosim_fw_descriptor& d, const platform_config& co
 }
 
 uint32_t card_cectl_asked(const platform_config& config) {
-    namespace emifa = dsp::c6416::emifa;
-    uint32_t v = config.dsk.version == 2 || config.dsk.version == 3 ? emifa::dsk_cectl_card_v2
-                                                                    : emifa::dsk_cectl_card_v1;
-    const auto put = [&v](uint32_t value, uint32_t mask, uint32_t shift) {
-        if (value != 0) v = (v & ~mask) | ((value << shift) & mask);
-    };
+    const bool v2_or_v3 = config.dsk.version == 2 || config.dsk.version == 3;
+    emif::cectl_fields f = emif::cectl_unpack(v2_or_v3 ? emif::cectl_dsk_v2 : emif::cectl_dsk_v1);
     const card_bus_timing& t = config.card_timing;
-    put(t.setup, emifa::cectl_wrsetup_mask, emifa::cectl_wrsetup_shift);
-    put(t.setup, emifa::cectl_rdsetup_mask, emifa::cectl_rdsetup_shift);
-    put(t.strobe, emifa::cectl_wrstrb_mask, emifa::cectl_wrstrb_shift);
-    put(t.strobe, emifa::cectl_rdstrb_mask, emifa::cectl_rdstrb_shift);
-    put(t.hold, emifa::cectl_wrhld_mask, emifa::cectl_wrhld_shift);
-    put(t.hold, emifa::cectl_rdhld_mask, emifa::cectl_rdhld_shift);
-    return v;
+    if (t.setup != 0) f.wrsetup = f.rdsetup = t.setup;
+    if (t.strobe != 0) f.wrstrb = f.rdstrb = t.strobe;
+    if (t.hold != 0) f.wrhld = f.rdhld = t.hold;
+    return emif::cectl_pack(f);
 }
 
 }  // namespace platform

@@ -108,6 +108,24 @@ TEST(ReferencePlugin, MakesTheConfigurationARunAsksFor) {
     EXPECT_EQ(d.rearm_on_every_sync_error, own.rearm_on_every_sync_error);
 }
 
+// The CECTL the closed forms predict is what the reference firmware
+// programs for the same board (its own computation, dsp::card_cectl).
+TEST(ReferencePlugin, TheBoardAsksTheCectlTheFirmwarePrograms) {
+    const platform::card_bus_timing timings[] = {{0, 0, 0}, {3, 20, 1}, {15, 63, 3}, {0, 7, 0}};
+    for (int version = 1; version <= 3; ++version)
+        for (const platform::card_bus_timing& t : timings) {
+            platform::platform_config config;
+            config.dsk = c6416::dsk_version(version);
+            config.card_timing = t;
+            const std::vector<double> values =
+                platform::plugin_values(dsp::plugin::reference_firmware(), config);
+            const uint32_t programmed = dsp::card_cectl(
+                dsp::plugin::reference_config(platform::board_of(config), values.data()));
+            EXPECT_EQ(platform::card_cectl_asked(config), programmed)
+                << "v" << version << " " << t.setup << "/" << t.strobe << "/" << t.hold;
+        }
+}
+
 // Another firmware's keys: each takes the run's setting by its name, or the
 // default it declares (never the reference's default of a key of the same
 // name).
