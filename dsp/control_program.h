@@ -6,7 +6,7 @@
 // Boot (in this order, each step reported through hal::report):
 //   1. EMIFA: GBLCTL 0x00012070, CE0 SDRAM 0xFFFFFFD3 + SDCTL/SDTIM/SDEXT,
 //      CE2/CE3 (card) 0x22A28A22 on DSK v1, 0x23228C22 on v2/v3 (the DSK's
-//      GEL init_emif values, dsp/c6416_regs.h).
+//      GEL init_emif values, model/c6416/c6416_regs.h).
 //   2. Interrupt selector at its reset mapping (INT4-7 = EXT_INT4-7, INT8 =
 //      EDMA_INT, INT15 = TINT1), EXTPOL 0 (the card pulses high), IER =
 //      INT5 (sync error) | INT6 (overflow) | INT8 (EDMA) | INT15 (watchdog).
@@ -68,10 +68,10 @@
 
 #include <cstdint>
 
-#include "dsp/c6416_regs.h"
 #include "dsp/card_regs.h"
 #include "dsp/controller.h"
 #include "dsp/hal.h"
+#include "model/c6416/c6416_regs.h"
 
 namespace dsp {
 

@@ -5,7 +5,7 @@
 //   - time: charge_cycles (CPU cycles), kernel_cycles (a kernel call's cycles
 //     under the run's cost model);
 //   - registers and memory at physical addresses: read32 / write32 (C6416
-//     peripheral registers of dsp/c6416_regs.h, the card's registers and
+//     peripheral registers of model/c6416/c6416_regs.h, the card's registers and
 //     pixel ports of dsp/card_regs.h, L2 and SDRAM), and memory(): a pointer
 //     into modelled L2 (0x00000000) or SDRAM (0x80000000) for the firmware's
 //     buffers;
@@ -18,8 +18,8 @@
 
 #include <cstdint>
 
-#include "dsp/c64x_cost_model.h"
 #include "dsp/stage.h"
+#include "model/c64x/cost_model.h"
 
 namespace dsp {
 
@@ -125,7 +125,7 @@ class hal {
     static constexpr int no_interrupt = -1;
 
     // CPU time spent on a stage, in C64x cycles from the cost model
-    // (dsp/c64x_cost_model.h). The platform advances simulated time by it.
+    // (model/c64x/cost_model.h). The platform advances simulated time by it.
     virtual void charge_cycles(stage s, uint64_t cycles) = 0;
     // The same charge, for kernels whose data lives in SDRAM: `traffic` is
     // what those cycles' memory stalls moved over EMIFA. A HAL with a bus
@@ -170,7 +170,7 @@ class hal {
 
     // ---- CPU interrupts (simplified IER / IFR / ICR) ---------------------------------------
     // Bits 4..15 are the maskable interrupts INT4..INT15 (routed to events by
-    // the interrupt selector, dsp/c6416_regs.h irq::). IFR latches an
+    // the interrupt selector, model/c6416/c6416_regs.h irq::). IFR latches an
     // interrupt's event whatever IER says; GIE and NMIE are not modelled and
     // no interrupt service routine runs asynchronously: the firmware polls
     // (interrupt_flags) or sleeps (wait_for_interrupt).

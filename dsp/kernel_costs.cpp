@@ -1,6 +1,6 @@
 // Op profiles of the firmware kernels as a C64x engineer would hand-code
 // them, run through the C64x cost model. Counts are per loop iteration;
-// "l s m d ls lsd" are the unit classes of dsp::c64x::op_mix. Loads are
+// "l s m d ls lsd" are the unit classes of c64x::op_mix. Loads are
 // LDDW/LDNDW (8 bytes), stores STDW, unless said otherwise. Every loop ends
 // in a B (.S) and most decrement a counter (one lsd op); pointer increments
 // ride in the load/store addressing modes and cost nothing.

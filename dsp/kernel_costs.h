@@ -1,5 +1,5 @@
 // Modelled C64x cycles of each firmware kernel call, from the C64x cost
-// model (dsp/c64x_cost_model.h): every function describes the operations a
+// model (model/c64x/cost_model.h): every function describes the operations a
 // hand-scheduled C64x implementation of the kernel issues per functional
 // unit (packed 8-bit SIMD such as SUBABS4 and DOTPU4, 64-bit loads) and
 // where its data lives, and lets the model turn that into cycles.
@@ -14,8 +14,8 @@
 
 #include <cstdint>
 
-#include "dsp/c64x_cost_model.h"
 #include "dsp/hal.h"
+#include "model/c64x/cost_model.h"
 
 namespace dsp::cost {
 

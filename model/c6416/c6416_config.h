@@ -22,7 +22,7 @@ struct c6416_config {
     // stall cycles are all it costs, as before issue 5).
     bool replay_sdram_traffic = true;
     // L2 cache line: the unit of the replayed transfers (ASSUMED 128 bytes,
-    // as dsp::c64x::model_params::l2_line_bytes; NOT FOUND in the sheet).
+    // as c64x::model_params::l2_line_bytes; NOT FOUND in the sheet).
     uint32_t l2_line_bytes = 128;
     // SDRAM window the replayed transfers read and write (line after line,
     // wrapping): the top 4 MB of the DSK's 16 MB, which the firmware's pair

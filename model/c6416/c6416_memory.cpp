@@ -1,10 +1,10 @@
 #include "model/c6416/c6416_memory.h"
 
-#include "dsp/c6416_regs.h"
+#include "model/c6416/c6416_regs.h"
 
 namespace c6416 {
 
-namespace regs = dsp::c6416;
+namespace regs = c6416;
 
 c6416_memory::c6416_memory(bool sdram_over_emifa)
     : m_sdram_over_emifa(sdram_over_emifa),

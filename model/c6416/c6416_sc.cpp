@@ -4,12 +4,12 @@
 #include <cstring>
 #include <string>
 
-#include "dsp/c6416_regs.h"
+#include "model/c6416/c6416_regs.h"
 #include "model/c6416/firmware_hal.h"
 
 namespace c6416 {
 
-namespace regs = dsp::c6416;
+namespace regs = c6416;
 using sc_core::sc_time;
 
 // ---- the chip's memory map as the EDMA transfer controller sees it ------------------------

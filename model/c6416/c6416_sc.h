@@ -6,8 +6,8 @@
 // control registers (emifa_registers.h), the interrupt selector, the EDMA
 // (channel controller edma_core.h + one transfer controller
 // edma_transfer_controller.h, run on the EDMA thread here) and timers 0-2 (timer_block.h), at their
-// data-sheet addresses (dsp/c6416_regs.h). This module wires the blocks together and runs their
-// SystemC processes; each block is its own class.
+// data-sheet addresses (model/c6416/c6416_regs.h). This module wires the blocks together and runs
+// their SystemC processes; each block is its own class.
 //
 // Ports and sockets (named after the pins / roles):
 //   ext_int4..7  bool signal inputs: the EXT_INT pins (J3), each may stay

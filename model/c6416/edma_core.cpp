@@ -2,7 +2,7 @@
 
 namespace c6416 {
 
-namespace edma = dsp::c6416::edma;
+namespace edma = c6416::edma;
 
 namespace {
 

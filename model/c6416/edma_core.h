@@ -1,4 +1,4 @@
-// The C64x EDMA channel controller (dsp/c6416_regs.h edma::; [CSL
+// The C64x EDMA channel controller (model/c6416/c6416_regs.h edma::; [CSL
 // csl_edmahal.h], [DS] Tables 8 and 25), plain C++: the parameter RAM, the
 // event / enable / clear / set registers, completion codes, chaining and
 // linking. It turns synchronisation events into transfer requests; the
@@ -30,7 +30,7 @@
 #include <cstdint>
 #include <deque>
 
-#include "dsp/c6416_regs.h"
+#include "model/c6416/c6416_regs.h"
 
 namespace c6416 {
 
@@ -88,7 +88,7 @@ class edma_core {
     uint64_t null_transfers() const { return m_null_transfers; }
 
   private:
-    static constexpr uint32_t pram_words = dsp::c6416::edma::pram_bytes / 4;
+    static constexpr uint32_t pram_words = c6416::edma::pram_bytes / 4;
 
     void submit(int channel);
     void set_completion(uint32_t code);

@@ -2,11 +2,11 @@
 
 #include <cstring>
 
-#include "dsp/c6416_regs.h"
+#include "model/c6416/c6416_regs.h"
 
 namespace c6416 {
 
-namespace regs = dsp::c6416;
+namespace regs = c6416;
 
 void edma_transfer_controller::execute(const transfer_request& r) {
     const uint64_t array_bytes = static_cast<uint64_t>(r.elements) * r.element_bytes;

@@ -2,7 +2,7 @@
 
 namespace c6416 {
 
-namespace regs = dsp::c6416;
+namespace regs = c6416;
 
 emifa_registers::emifa_registers() {
     for (int ce = 0; ce < 4; ++ce) {

@@ -1,5 +1,5 @@
 // The EMIFA control registers (GBLCTL, CECTL0-3, SDCTL, ...) at their
-// data-sheet addresses (dsp/c6416_regs.h emifa::). Plain C++: they only hold
+// data-sheet addresses (model/c6416/c6416_regs.h emifa::). Plain C++: they only hold
 // values; the EMIF model takes its timing from the writes (observer).
 #pragma once
 
@@ -7,7 +7,7 @@
 #include <functional>
 #include <utility>
 
-#include "dsp/c6416_regs.h"
+#include "model/c6416/c6416_regs.h"
 
 namespace c6416 {
 
@@ -27,7 +27,7 @@ class emifa_registers {
   private:
     static bool index_of(uint32_t address, int& index);
 
-    uint32_t m_regs[dsp::c6416::emifa::block_bytes / 4] = {};
+    uint32_t m_regs[c6416::emifa::block_bytes / 4] = {};
     observer m_observer;
 };
 

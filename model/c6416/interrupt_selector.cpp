@@ -1,10 +1,10 @@
 #include "model/c6416/interrupt_selector.h"
 
-#include "dsp/c6416_regs.h"
+#include "model/c6416/c6416_regs.h"
 
 namespace c6416 {
 
-namespace irq = dsp::c6416::irq;
+namespace irq = c6416::irq;
 
 void interrupt_selector::reset() {
     m_muxh = irq::muxh_reset;

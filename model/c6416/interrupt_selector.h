@@ -1,4 +1,4 @@
-// The C6416 interrupt selector (dsp/c6416_regs.h irq::; [DS] Table 26):
+// The C6416 interrupt selector (model/c6416/c6416_regs.h irq::; [DS] Table 26):
 // MUXL / MUXH route one of 32 interrupt events to each maskable CPU
 // interrupt INT4..INT15; EXTPOL sets the active edge of EXT_INT4..7.
 // Plain C++ (no SystemC): the c6416 module feeds it pin levels and events.

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 
-#include "dsp/c6416_regs.h"
+#include "model/c6416/c6416_regs.h"
 
 namespace c6416 {
 
-namespace timer = dsp::c6416::timer;
+namespace timer = c6416::timer;
 
 timer_block::timer_block() {
     for (timer_unit& t : m_timers) t.reset();

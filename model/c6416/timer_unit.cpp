@@ -1,10 +1,10 @@
 #include "model/c6416/timer_unit.h"
 
-#include "dsp/c6416_regs.h"
+#include "model/c6416/c6416_regs.h"
 
 namespace c6416 {
 
-namespace timer = dsp::c6416::timer;
+namespace timer = c6416::timer;
 
 void timer_unit::reset() {
     m_ctl = 0;

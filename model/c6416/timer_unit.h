@@ -1,4 +1,4 @@
-// One C6416 32-bit timer (dsp/c6416_regs.h timer::; [CSL csl_timerhal.h]),
+// One C6416 32-bit timer (model/c6416/c6416_regs.h timer::; [CSL csl_timerhal.h]),
 // plain C++ on a time axis of CPU clock cycles. Semantics (ASSUMED where
 // SPRU582 was not at hand, docs/c6416.md):
 //   - CLKSRC = 1: the counter counts the internal clock, CPU clock / 8

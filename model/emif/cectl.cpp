@@ -13,7 +13,7 @@ bool is_async(memory_type t) {
 }
 
 cectl_fields cectl_unpack(uint32_t v) {
-    namespace r = dsp::c6416::emifa;
+    namespace r = c6416::emifa;
     const auto field = [v](uint32_t mask, uint32_t shift) { return (v & mask) >> shift; };
     cectl_fields f;
     f.wrsetup = field(r::cectl_wrsetup_mask, r::cectl_wrsetup_shift);

@@ -13,13 +13,13 @@
 
 #include <cstdint>
 
-#include "dsp/c6416_regs.h"
+#include "model/c6416/c6416_regs.h"
 
 namespace emif {
 
 // MTYPE values (docs/hardware-facts.md section 3), one definition with the
 // firmware's register header.
-using memory_type = dsp::c6416::emifa::mtype;
+using memory_type = c6416::emifa::mtype;
 
 bool is_sdram(memory_type t);
 bool is_async(memory_type t);

@@ -4,9 +4,9 @@
 #include <chrono>
 #include <stdexcept>
 
-#include "dsp/c6416_regs.h"
-#include "tb/firmware/builtin.h"
+#include "model/c6416/c6416_regs.h"
 #include "model/time/sc_ticks.h"
+#include "tb/firmware/builtin.h"
 #include "tb/platform/arrangements/fast/fast_island.h"
 #include "tb/platform/arrangements/pins/pins_island.h"
 #include "tb/platform/firmware_board.h"
@@ -91,7 +91,7 @@ platform_top::platform_top(const platform_config& config)
     m_cpu->emifa_edma.bind(m_target->edma);
     m_cpu->set_emifa_register_observer([this](uint32_t address, uint32_t value) {
         for (int ce = 0; ce < emif::ce_count; ++ce) {
-            if (address == dsp::c6416::emifa::cectl(ce)) m_engine.set_cectl(ce, value);
+            if (address == c6416::emifa::cectl(ce)) m_engine.set_cectl(ce, value);
         }
     });
     m_island->ext_int4.bind(m_int[0]);

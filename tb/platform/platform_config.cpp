@@ -13,13 +13,13 @@ emif::emif_config engine_config(const platform_config& config) {
     return e;
 }
 
-dsp::c64x::cost_model cost_model_of(const platform_config& config) {
-    dsp::c64x::model_params params;
+c64x::cost_model cost_model_of(const platform_config& config) {
+    c64x::model_params params;
     params.cpu_hz = static_cast<uint64_t>(config.dsk.cpu_hz);
     params.emif_hz = static_cast<uint64_t>(config.dsk.emif_hz);
     params.compiled_c_factor_q8 =
         static_cast<uint32_t>(std::lround(config.compiled_c_factor * 256.0));
-    return dsp::c64x::cost_model(params);
+    return c64x::cost_model(params);
 }
 
 void set_firmware_key(platform_config* config, const std::string& name, double value) {

@@ -8,9 +8,9 @@
 #include <utility>
 #include <vector>
 
-#include "dsp/c64x_cost_model.h"
 #include "dsp/card_regs.h"
 #include "model/c6416/dsk_profile.h"
+#include "model/c64x/cost_model.h"
 #include "model/emif/emif_async_master.h"
 #include "model/scene/sequence.h"
 #include "model/sensor/fault.h"
@@ -78,7 +78,7 @@ struct platform_config {
     // as L2 line transfers (docs/c6416.md): bus time that competes with the
     // capture.
     bool sdram_traffic_on_bus = true;
-    // The cost model's compiled-C factor (dsp/c64x_cost_model.h): 1 = the
+    // The cost model's compiled-C factor (model/c64x/cost_model.h): 1 = the
     // hand-scheduled kernels the profiles describe; the `paper` scenario
     // models the paper's compiled C (docs/paper.md).
     double compiled_c_factor = 1.0;
@@ -125,6 +125,6 @@ double firmware_key(const platform_config& config, const std::string& name, doub
 emif::emif_config engine_config(const platform_config& config);
 // The kernel cost model for `config`: its CPU / EMIF clocks (SDRAM stalls
 // depend on their ratio) and compiled-C factor (dsp/kernel_costs.h).
-dsp::c64x::cost_model cost_model_of(const platform_config& config);
+c64x::cost_model cost_model_of(const platform_config& config);
 
 }  // namespace platform

@@ -52,7 +52,7 @@ class probe_hal {
     using memory_hook = std::function<void(uint32_t address, uint32_t bytes)>;
 
     // The firmware's kernels are priced with `model` (kernel_cycles).
-    probe_hal(dsp::hal& inner, timeline& events, const dsp::c64x::cost_model& model)
+    probe_hal(dsp::hal& inner, timeline& events, const c64x::cost_model& model)
         : m_inner(inner), m_events(events), m_model(model) {}
 
     // Called once on the CPU thread before the firmware starts.
@@ -125,7 +125,7 @@ class probe_hal {
     timeline& m_events;
     const char* const* m_stage_names = nullptr;
     int m_stage_count = 0;
-    dsp::c64x::cost_model m_model;
+    c64x::cost_model m_model;
     event_hook m_hook;
     memory_hook m_memory_hook;
     std::vector<charge_record> m_charges;

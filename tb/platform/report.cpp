@@ -3,8 +3,6 @@
 #include <cctype>
 #include <string>
 
-#include "dsp/c6416_regs.h"
-#include "dsp/kernel_costs.h"
 #include "tb/platform/firmware_board.h"
 
 namespace platform {
@@ -79,7 +77,7 @@ void print_run(std::FILE* out, const platform_top& top) {
         static_cast<unsigned long long>(isl.pin_hash()),
         static_cast<unsigned long long>(st.pin_changes), top.events().events().size(),
         static_cast<unsigned long long>(top.events().hash()));
-    std::fprintf(out, "cycles from cost model %s\n", dsp::cost::default_model().id());
+    std::fprintf(out, "cycles from cost model %s\n", c64x::cost_model().id());
 }
 
 // The OE starts against the sensors' timing truth, and the data path.
@@ -179,7 +177,7 @@ void print_stages(std::FILE* out, const budget_report& budget) {
     std::fprintf(
         out,
         "\n-- stages (modelled, %s at %.0f MHz): mean / max per processed pair, ms; total cycles\n",
-        dsp::cost::default_model().id(), budget.cpu_hz / 1e6);
+        c64x::cost_model().id(), budget.cpu_hz / 1e6);
     const int stages = static_cast<int>(budget.stage_names.size());
     for (int s = 0; s < stages; ++s) {
         std::fprintf(out, "  %-11s %8.3f %8.3f  %12llu\n", budget.stage_names[s].c_str(),

@@ -24,9 +24,9 @@
 #include <new>
 #include <vector>
 
-#include "dsp/c6416_regs.h"
 #include "dsp/card_regs.h"
 #include "dsp/control_program.h"
+#include "model/c6416/c6416_regs.h"
 #include "tests/support/heap_counter.h"
 #include "tests/support/host/counting_hal.h"
 #include "tests/support/host/scenarios.h"
@@ -34,7 +34,7 @@
 
 namespace {
 
-namespace regs = dsp::c6416;
+namespace regs = c6416;
 namespace card = dsp::card_regs;
 using dsp::firmware_event;
 

@@ -1,4 +1,4 @@
-// The C64x cost model (dsp/c64x_cost_model.h): the unit scheduler against a
+// The C64x cost model (model/c64x/cost_model.h): the unit scheduler against a
 // brute-force assignment, the section formula against hand arithmetic, the
 // fit against TI IMGLIB's published C64x cycle formulas (docs/hardware-facts.md
 // section 5), the check set it was not fitted on, memory costs and the
@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "dsp/c64x_cost_model.h"
+#include "model/c64x/cost_model.h"
 
 namespace {
 
-using namespace dsp::c64x;
+using namespace c64x;
 
 // One IMGLIB case: the model's profile and the published cycle count.
 struct imglib_case {

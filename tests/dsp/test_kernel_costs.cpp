@@ -7,8 +7,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "dsp/c64x_cost_model.h"
 #include "dsp/kernel_costs.h"
+#include "model/c64x/cost_model.h"
 #include "model/scene/sequence.h"
 #include "tb/platform/scoring/frame_record.h"
 #include "tests/support/host/counting_hal.h"

@@ -12,11 +12,11 @@
 #include <vector>
 
 #include "c6416_test_util.h"
-#include "dsp/c6416_regs.h"
+#include "model/c6416/c6416_regs.h"
 #include "model/c6416/c6416_sc.h"
 
 using namespace c6416_test;
-namespace regs = dsp::c6416;
+namespace regs = c6416;
 
 TEST(C6416BusSc, CpuAccessesTakeTheTargetsTimeAndEmifaWritesAreObserved) {
     const sc_core::sc_time word(140, sc_core::SC_NS);

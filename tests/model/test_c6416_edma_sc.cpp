@@ -12,11 +12,11 @@
 #include <cstring>
 
 #include "c6416_test_util.h"
-#include "dsp/c6416_regs.h"
+#include "model/c6416/c6416_regs.h"
 #include "model/c6416/c6416_sc.h"
 
 using namespace c6416_test;
-namespace edma = dsp::c6416::edma;
+namespace edma = c6416::edma;
 
 namespace {
 

@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "c6416_test_util.h"
-#include "dsp/c6416_regs.h"
 #include "dsp/card_regs.h"
 #include "dsp/control_program.h"
+#include "model/c6416/c6416_regs.h"
 #include "model/c6416/c6416_sc.h"
 
 using namespace c6416_test;
@@ -202,7 +202,7 @@ TEST(C6416FirmwareSc, ControlProgramCapturesThroughTheModelsEdma) {
 
     std::vector<uint32_t> cectl2;
     chip.set_emifa_register_observer([&](uint32_t address, uint32_t value) {
-        if (address == dsp::c6416::emifa::cectl2) cectl2.push_back(value);
+        if (address == c6416::emifa::cectl2) cectl2.push_back(value);
     });
     dsp::control_program program;
     std::vector<uint32_t> processed_frames;

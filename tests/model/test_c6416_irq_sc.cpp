@@ -10,12 +10,12 @@
 #include <cstdio>
 
 #include "c6416_test_util.h"
-#include "dsp/c6416_regs.h"
+#include "model/c6416/c6416_regs.h"
 #include "model/c6416/c6416_sc.h"
 
 using namespace c6416_test;
-namespace irq = dsp::c6416::irq;
-namespace timer = dsp::c6416::timer;
+namespace irq = c6416::irq;
+namespace timer = c6416::timer;
 
 namespace {
 

@@ -1,4 +1,4 @@
-// The C6416 register map (dsp/c6416_regs.h) against the numbers of its
+// The C6416 register map (model/c6416/c6416_regs.h) against the numbers of its
 // sources, typed here from them (docs/hardware-facts.md sections 1, 3, 4; TI CSL
 // csl_edmahal.h / csl_irqhal.h / csl_timerhal.h; DSK6416.gel), and the plain
 // C++ parts of the model that interpret it: the interrupt selector, the
@@ -8,14 +8,14 @@
 
 #include <cstdio>
 
-#include "dsp/c6416_regs.h"
+#include "model/c6416/c6416_regs.h"
 #include "model/c6416/edma_core.h"
 #include "model/c6416/interrupt_selector.h"
 #include "model/c6416/timer_unit.h"
 
-namespace regs = dsp::c6416;
-namespace edma = dsp::c6416::edma;
-namespace irq = dsp::c6416::irq;
+namespace regs = c6416;
+namespace edma = c6416::edma;
+namespace irq = c6416::irq;
 
 TEST(C6416Regs, AddressesMatchTheDataSheetAndCsl) {
     // Memory map [DS Table 3]; SDRAM [TR].

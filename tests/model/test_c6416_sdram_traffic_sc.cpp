@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "c6416_test_util.h"
-#include "dsp/c6416_regs.h"
 #include "dsp/kernel_costs.h"
+#include "model/c6416/c6416_regs.h"
 #include "model/c6416/c6416_sc.h"
 #include "model/emif/cectl.h"
 #include "model/emif/emif_tlm_target_sc.h"
@@ -157,12 +157,12 @@ TEST(C6416SdramTrafficSc, FirmwareSdramLinesTakeBusTimeAndDelayTheCapture) {
               rows_touched(0, transfers_a) * ec.sdram.access_cycles + transfers_a * data_edges);
     EXPECT_EQ(fs_of(a_begin), 0);
     EXPECT_EQ(fs_of(a_end), cpu_edge_fs(cycles_a, 600000000));
-    // The cost model's own figure for the same bytes (dsp/c64x_cost_model.h:
+    // The cost model's own figure for the same bytes (model/c64x/cost_model.h:
     // 7 + 16 ECLK per line, the engine's line with its row closed).
-    dsp::c64x::memory_traffic stream;
+    c64x::memory_traffic stream;
     stream.bytes_read = traffic_a.bytes_read;
     stream.bytes_written = traffic_a.bytes_written;
-    stream.where = dsp::c64x::placement::sdram;
+    stream.where = c64x::placement::sdram;
     const uint64_t cost_model_ps = dsp::cost::default_model().emif_busy_ps(stream);
     EXPECT_EQ(cost_model_ps, transfers_a * line_edges * eclk_ps);
     std::printf(

@@ -10,13 +10,13 @@
 #include <vector>
 
 #include "c6416_test_util.h"
-#include "dsp/c6416_regs.h"
+#include "model/c6416/c6416_regs.h"
 #include "model/c6416/c6416_sc.h"
 
 using namespace c6416_test;
-namespace irq = dsp::c6416::irq;
-namespace timer = dsp::c6416::timer;
-namespace edma = dsp::c6416::edma;
+namespace irq = c6416::irq;
+namespace timer = c6416::timer;
+namespace edma = c6416::edma;
 
 TEST(C6416TimerSc, PeriodicInterruptsCountAndTimerPacedDma) {
     c6416::c6416_config config;

@@ -11,8 +11,8 @@
 #include <cstdio>
 #include <memory>
 
-#include "dsp/c6416_regs.h"
 #include "dsp/kernel_costs.h"
+#include "model/c6416/c6416_regs.h"
 #include "tb/platform/budget.h"
 #include "tb/platform/closed_form.h"
 #include "tb/platform/platform.h"
@@ -69,10 +69,10 @@ inline platform::capture_figures closed_form_capture(const platform::platform_to
 // The firmware's SDRAM lines per pair on the bus (docs/budget.md).
 inline platform::traffic_figures closed_form_traffic(const platform::platform_top& top) {
     const platform::platform_config& c = top.config();
-    return platform::firmware_traffic(c.profile.active_cols, c.profile.active_rows,
-                                      c.dsk.version >= 2 ? dsp::c6416::emifa::dsk_cectl_card_v2
-                                                         : dsp::c6416::emifa::dsk_cectl_card_v1,
-                                      top.engine().config());
+    return platform::firmware_traffic(
+        c.profile.active_cols, c.profile.active_rows,
+        c.dsk.version >= 2 ? c6416::emifa::dsk_cectl_card_v2 : c6416::emifa::dsk_cectl_card_v1,
+        top.engine().config());
 }
 
 }  // namespace system_test

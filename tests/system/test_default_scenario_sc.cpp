@@ -9,7 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "dsp/c6416_regs.h"
+#include "model/c6416/c6416_regs.h"
 #include "tests/system/system_run.h"
 
 namespace {
@@ -136,7 +136,7 @@ TEST(default_scenario, capture_and_budget_agree_with_the_closed_forms) {
     // pair 1) and at most that plus every line of the previous pair inside
     // its card bursts (27 ECLK each); within 2 % of that range.
     const platform::traffic_figures tf = platform::firmware_traffic(
-        640, 480, dsp::c6416::emifa::dsk_cectl_card_v1, r.top->engine().config());
+        640, 480, c6416::emifa::dsk_cectl_card_v1, r.top->engine().config());
     EXPECT_EQ(tf.lines, 4800u);
     EXPECT_EQ(tf.line_eclk, 27u);
     int judged = 0;

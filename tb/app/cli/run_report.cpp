@@ -10,7 +10,6 @@
 #include <filesystem>
 #include <set>
 
-#include "dsp/kernel_costs.h"
 #include "tb/app/cli/config_keys.h"
 #include "tb/app/cli/firmware_keys.h"
 #include "tb/platform/firmware_board.h"
@@ -345,7 +344,7 @@ json build_report(const run_setup& setup, const platform::platform_top& top,
 
     json report;
     report["schema_version"] = report_schema_version;
-    report["tool"] = {{"name", "stereosim"}, {"cost_model", dsp::cost::default_model().id()}};
+    report["tool"] = {{"name", "stereosim"}, {"cost_model", c64x::cost_model().id()}};
     // The firmware under test; a plugin's file and digest, null when built in.
     report["tool"]["firmware"] =
         firmware_identity(top.firmware_descriptor(), top.firmware_plugin());

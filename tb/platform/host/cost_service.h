@@ -6,14 +6,14 @@
 
 #include <cstdint>
 
-#include "dsp/c64x_cost_model.h"
+#include "model/c64x/cost_model.h"
 #include "stereosim/firmware.h"
 
 namespace host {
 
 // The cycles of one call of `kernel` under `model`; `traffic` (may be
 // null) gets the bytes those cycles' SDRAM stalls moved.
-uint64_t kernel_cycles(const dsp::c64x::cost_model& model, const stereosim_kernel_profile& kernel,
+uint64_t kernel_cycles(const c64x::cost_model& model, const stereosim_kernel_profile& kernel,
                        stereosim_sdram_traffic* traffic);
 
 }  // namespace host

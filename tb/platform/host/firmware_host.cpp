@@ -17,7 +17,7 @@ firmware_host& host_of(void* ctx) {
 
 firmware_host::firmware_host(const stereosim_fw_host& entry, uint32_t stage_count,
                              scene::scenario scenario, const stereosim_board& board,
-                             const dsp::c64x::cost_model& model)
+                             const c64x::cost_model& model)
     : m_entry(entry),
       m_stage_count(stage_count),
       m_sequence(std::move(scenario)),
@@ -28,7 +28,7 @@ std::unique_ptr<firmware_host> firmware_host::create(const stereosim_fw_host& en
                                                      uint32_t stage_count, scene::scenario scenario,
                                                      const stereosim_board& board,
                                                      const std::vector<double>& values,
-                                                     const dsp::c64x::cost_model& model,
+                                                     const c64x::cost_model& model,
                                                      std::string* error) {
     std::unique_ptr<firmware_host> h(
         new firmware_host(entry, stage_count, std::move(scenario), board, model));

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "dsp/c64x_cost_model.h"
+#include "model/c64x/cost_model.h"
 #include "model/scene/sequence.h"
 #include "stereosim/firmware.h"
 
@@ -27,8 +27,7 @@ class firmware_host {
                                                  uint32_t stage_count, scene::scenario scenario,
                                                  const stereosim_board& board,
                                                  const std::vector<double>& values,
-                                                 const dsp::c64x::cost_model& model,
-                                                 std::string* error);
+                                                 const c64x::cost_model& model, std::string* error);
     ~firmware_host();
     firmware_host(const firmware_host&) = delete;
     firmware_host& operator=(const firmware_host&) = delete;
@@ -40,14 +39,14 @@ class firmware_host {
 
   private:
     firmware_host(const stereosim_fw_host& entry, uint32_t stage_count, scene::scenario scenario,
-                  const stereosim_board& board, const dsp::c64x::cost_model& model);
+                  const stereosim_board& board, const c64x::cost_model& model);
     void serve();
 
     const stereosim_fw_host& m_entry;
     uint32_t m_stage_count;
     scene::sequence m_sequence;
     stereosim_board m_board;
-    dsp::c64x::cost_model m_model;
+    c64x::cost_model m_model;
     stereosim_services m_services{};
     void* m_instance = nullptr;
 

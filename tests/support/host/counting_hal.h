@@ -14,13 +14,13 @@ namespace host {
 class counting_hal final : public dsp::hal {
   public:
     // Kernels priced with `model` (default: DSK v1, hand-scheduled).
-    explicit counting_hal(const dsp::c64x::cost_model& model = {}) : m_model(model) {}
+    explicit counting_hal(const c64x::cost_model& model = {}) : m_model(model) {}
 
     // Starts a new frame: the per-frame counters go back to zero.
     void begin_frame();
 
     void charge_cycles(dsp::stage s, uint64_t cycles) override;
-    uint64_t kernel_cycles(const dsp::c64x::kernel_profile& kernel) override {
+    uint64_t kernel_cycles(const c64x::kernel_profile& kernel) override {
         return m_model.cycles(kernel);
     }
     void stage_begin(dsp::stage s) override;
@@ -40,7 +40,7 @@ class counting_hal final : public dsp::hal {
   private:
     static int index(dsp::stage s) { return static_cast<int>(s); }
 
-    dsp::c64x::cost_model m_model;
+    c64x::cost_model m_model;
 
     uint64_t m_frame_cycles[dsp::stage_count] = {};
     uint64_t m_total_cycles[dsp::stage_count] = {};

@@ -16,7 +16,7 @@ dsp::controller_config controller_config_for(const scene::stereo_rig& rig) {
 }
 
 stereo_runner::stereo_runner(scene::scenario scenario, const dsp::controller_config& config,
-                             const dsp::c64x::cost_model& model)
+                             const c64x::cost_model& model)
     : m_sequence(std::move(scenario)), m_hal(model), m_cfa(config.cfa) {
     m_controller.init(config, m_hal);
 }

@@ -33,7 +33,7 @@ class stereo_runner {
   public:
     // The firmware's kernels priced with `model` (dsp::hal::kernel_cycles).
     stereo_runner(scene::scenario scenario, const dsp::controller_config& config,
-                  const dsp::c64x::cost_model& model = {});
+                  const c64x::cost_model& model = {});
 
     // Renders frame n and mosaics it into raw_left() / raw_right().
     void render(int n);

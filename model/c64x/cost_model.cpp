@@ -1,6 +1,6 @@
-#include "dsp/c64x_cost_model.h"
+#include "model/c64x/cost_model.h"
 
-namespace dsp::c64x {
+namespace c64x {
 
 namespace {
 
@@ -347,4 +347,4 @@ kernel_profile perimeter(int cols) {
 
 }  // namespace imglib
 
-}  // namespace dsp::c64x
+}  // namespace c64x

@@ -45,7 +45,7 @@
 
 #include <cstdint>
 
-namespace dsp::c64x {
+namespace c64x {
 
 // DSK clocks (docs/hardware-facts.md section 2): v1 600 MHz CPU / 100 MHz EMIF,
 // v2 720 / 120, v3 (C6416T DSK) 1 GHz / 125 (the BSL says 120: discrepancy).
@@ -141,11 +141,11 @@ struct kernel_profile {
 };
 
 // The per-loop-entry overhead fitted on the IMGLIB formulas (value and
-// method in c64x_cost_model.cpp, "FIT").
+// method in cost_model.cpp, "FIT").
 constexpr uint32_t fitted_loop_overhead = 2;
 
 struct model_params {
-    // Fitted / documented CPU parameters (see c64x_cost_model.cpp for the fit).
+    // Fitted / documented CPU parameters (see cost_model.cpp for the fit).
     uint32_t call_overhead = 6;  // cycles per call: IMGLIB's "includes 6 cycles of call overhead"
     uint32_t loop_overhead = fitted_loop_overhead;  // cycles per loop entry
     // Compiled C vs hand-scheduled: cycles scale by this factor (Q8, 256 = 1.0).
@@ -230,4 +230,4 @@ kernel_profile pix_expand(int n);        // 3 n / 16 + 15
 kernel_profile perimeter(int cols);      // 10 cols / 16 + 55
 }  // namespace imglib
 
-}  // namespace dsp::c64x
+}  // namespace c64x

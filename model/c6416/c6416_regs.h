@@ -1,5 +1,7 @@
 // TMS320C6416 register addresses and bit fields: the ONE source used by the
-// firmware (dsp/control_program.cpp) and the C6416 model (model/c6416).
+// C6416 model (model/c6416), the platform's board wiring, and the reference
+// firmware (dsp/control_program.cpp), which includes it as a real firmware
+// includes TI's CSL headers: the map is the chip's.
 // Plain constants, no dependencies. Sources (keys of docs/hardware-facts.md):
 //   [DS]  C6416 data sheet SPRS146 (memory map Table 3, EDMA Table 8/25,
 //         interrupt selector Table 26);
@@ -14,7 +16,7 @@
 
 #include <cstdint>
 
-namespace dsp::c6416 {
+namespace c6416 {
 
 // ---- memory map [DS] Table 3 -------------------------------------------------------------
 constexpr uint32_t l2_base = 0x00000000u;   // internal L2 SRAM (all of it mapped, no L2 cache)
@@ -258,4 +260,4 @@ constexpr uint32_t ctl_tstat = 0x800u;
 constexpr uint32_t cpu_cycles_per_internal_clock = 8;  // [CSL TIMER_CTL_CLKSRC_CPUOVR8]
 }  // namespace timer
 
-}  // namespace dsp::c6416
+}  // namespace c6416
