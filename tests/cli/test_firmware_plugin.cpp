@@ -342,6 +342,10 @@ TEST(FirmwareKeys, ABadKeyOrValueIsOneLineAndNothingWritten) {
         {minimal + " --set firmware.capture_cycles=10",
          "unknown config key 'firmware.capture_cycles' (the firmware 'minimal' declares of its "
          "own: firmware.cycles_per_wait, firmware.mode)"},
+        // The fault extension's option is the firmware's key, checked alike.
+        {" --hard-error-rearms 20",
+         "--hard-error-rearms: config key 'firmware.hard_error_rearms': 20 is out of range "
+         "0..16"},
         // Nor is a key of the same name: the plugin's own choices hold.
         {minimal + " --mode sequential",
          "config key 'firmware.mode': \"sequential\" is not one of quiet|chatty"},
