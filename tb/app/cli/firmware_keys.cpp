@@ -139,12 +139,7 @@ bool resolve_firmware_settings(const run_setup& setup,
 }
 
 std::vector<std::string> settings_it_takes(const std::vector<std::string>& settings,
-                                           const std::string& path) {
-    std::string error;
-    std::unique_ptr<firmware::plugin> loaded;
-    if (!path.empty()) loaded = firmware::plugin::load(path, &error);
-    const stereosim_fw_descriptor& d =
-        loaded ? loaded->descriptor() : firmware::builtin();
+                                           const stereosim_fw_descriptor& d) {
     std::vector<std::string> taken;
     for (const std::string& setting : settings) {
         const size_t eq = setting.find('=');
@@ -189,8 +184,7 @@ bool print_firmware_keys(const std::string& path, std::string* error) {
         loaded = firmware::plugin::load(path, error);
         if (!loaded) return false;
     }
-    const stereosim_fw_descriptor& d =
-        loaded ? loaded->descriptor() : firmware::builtin();
+    const stereosim_fw_descriptor& d = loaded ? loaded->descriptor() : firmware::builtin();
     const run_setup defaults;
     for (const config_key& k : config_keys())
         std::printf("%-30s %-34s default %-12s %s\n", k.name.c_str(), k.range_text().c_str(),

@@ -33,14 +33,14 @@ bool resolve_firmware_settings(const run_setup& setup,
                                std::vector<std::pair<std::string, double>>* values,
                                std::string* error);
 
-// Of `settings` (KEY=VALUE), those the firmware at `path` (empty: the
-// built-in reference) can take: every key of the platform's table, and the
+// Of `settings` (KEY=VALUE), those the firmware `d` describes can take:
+// every key of the platform's table, and the
 // firmware's own keys it declares with a value its declaration accepts. A
 // campaign's plan asks every firmware for the same settings; a firmware
 // without the key (or whose key of that name means something else) runs
 // the row without it.
 std::vector<std::string> settings_it_takes(const std::vector<std::string>& settings,
-                                           const std::string& path);
+                                           const stereosim_fw_descriptor& d);
 
 // Every key value a firmware ran with (its descriptor's `values`, in order)
 // as a config file's "firmware" object holds them: {"NAME": value, ...}.

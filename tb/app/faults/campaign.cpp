@@ -25,6 +25,8 @@
 #include "tb/app/cli/run_command.h"
 #include "tb/app/faults/campaign_files.h"
 #include "tb/app/faults/child_exit.h"
+#include "tb/firmware/builtin.h"
+#include "tb/firmware/plugin.h"
 #include "tb/platform/firmware_crash.h"
 #include "tb/platform/platform_config.h"
 
@@ -184,8 +186,13 @@ json row_json(const campaign_row& r) {
 // The shard's runs whose spec matches --match A|B (contains A or B).
 std::vector<campaign_run> selected_runs(const campaign_options& o) {
     std::vector<campaign_run> plan;
+    // The firmware under test's keys, read once (the command checked it loads).
+    std::string error;
+    const std::unique_ptr<firmware::plugin> plugin =
+        o.firmware.empty() ? nullptr : firmware::plugin::load(o.firmware, &error);
+    const stereosim_fw_descriptor& under_test = plugin ? plugin->descriptor() : firmware::builtin();
     for (campaign_run r : shard_of(campaign_plan(o.name, o.seeds), o.shard, o.shards)) {
-        r.settings = cli::settings_it_takes(r.settings, o.firmware);
+        r.settings = cli::settings_it_takes(r.settings, under_test);
         const std::string spec = r.fault.empty() ? "clean" : r.fault;
         bool hit = false;
         for (size_t from = 0; from <= o.match.size();) {
