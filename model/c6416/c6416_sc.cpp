@@ -5,7 +5,6 @@
 #include <string>
 
 #include "model/c6416/c6416_regs.h"
-#include "model/c6416/firmware_hal.h"
 
 namespace c6416 {
 
@@ -59,7 +58,7 @@ c6416_sc::c6416_sc(sc_core::sc_module_name name, const c6416_config& config)
       emifa_edma("emifa_edma"),
       m_config(config),
       m_cpu_clock(simtime::tick_clock(config.dsk.cpu_period())),
-      m_hal(std::make_unique<firmware_hal>(*this)),
+      m_port(*this),
       m_memory(config.sdram_over_emifa),
       m_replay(traffic_window(config)),
       m_edma_port(std::make_unique<edma_port>(*this)),
@@ -105,7 +104,7 @@ uint64_t c6416_sc::charged_cycles_total() const {
 // ---- the CPU -----------------------------------------------------------------------------
 void c6416_sc::cpu_thread() {
     if (!m_firmware) return;
-    m_firmware(*m_hal);
+    m_firmware(m_port);
     m_firmware_returned = true;
     m_firmware_returned_event.notify(sc_core::SC_ZERO_TIME);
     if (m_config.stop_when_firmware_returns) sc_core::sc_stop();
@@ -121,10 +120,10 @@ uint64_t c6416_sc::scaled_cycles(uint64_t k0, uint64_t cycles) const {
     return before + static_cast<uint64_t>((after + m_scale_den - 1) / m_scale_den);
 }
 
-void c6416_sc::charge(dsp::stage s, uint64_t cycles, const dsp::sdram_traffic& traffic) {
+void c6416_sc::charge(int stage, uint64_t cycles, const sdram_traffic& traffic) {
     const uint64_t k0 = m_cpu_clock.current_cycle();
     const uint64_t scaled = scaled_cycles(k0, cycles);
-    m_stage_cycles[static_cast<int>(s)] += scaled;
+    m_stage_cycles[stage] += scaled;
     const sc_time start = time_of_cpu_cycle(k0);
     const sc_time target = time_of_cpu_cycle(k0 + scaled);
     m_charge_end = target;
@@ -141,8 +140,7 @@ void c6416_sc::charge(dsp::stage s, uint64_t cycles, const dsp::sdram_traffic& t
     m_charge_end = sc_core::SC_ZERO_TIME;
 }
 
-void c6416_sc::replay_traffic(uint64_t first_cycle, uint64_t cycles,
-                              const dsp::sdram_traffic& traffic) {
+void c6416_sc::replay_traffic(uint64_t first_cycle, uint64_t cycles, const sdram_traffic& traffic) {
     if (traffic.empty() || !m_config.sdram_over_emifa || !m_config.replay_sdram_traffic ||
         emifa_cpu.size() == 0) {
         return;
@@ -171,15 +169,9 @@ int c6416_sc::wait_for_interrupt() {
             m_ifr &= ~(1u << n);
             return n;
         }
-        if (m_stop) return dsp::hal::no_interrupt;
+        if (m_stop) return cpu_port::no_interrupt;
         sc_core::wait(m_irq_event);
     }
-}
-
-void c6416_sc::report(const dsp::event_record& e) {
-    const timed_event te{sc_core::sc_time_stamp(), e};
-    m_events.push_back(te);
-    if (m_event_observer) m_event_observer(te);
 }
 
 uint32_t c6416_sc::cpu_read32(uint32_t address) {

@@ -1,7 +1,7 @@
 // The TMS320C6416 as a loosely-timed SystemC / TLM-2.0 model (docs/c6416.md).
 //
-// What it holds: the CPU (a thread that runs the firmware natively through
-// dsp::hal, firmware_hal.h), 1 MB L2 SRAM at 0x00000000 and the DSK's 16 MB
+// What it holds: the CPU (a thread that runs a program natively on the
+// chip's cpu_port, cpu_port.h), 1 MB L2 SRAM at 0x00000000 and the DSK's 16 MB
 // SDRAM storage for EMIFA CE0 (0x80000000) (c6416_memory.h), the EMIFA
 // control registers (emifa_registers.h), the interrupt selector, the EDMA
 // (channel controller edma_core.h + one transfer controller
@@ -31,16 +31,15 @@
 // set_emifa_register_observer (-> emif_async_master::set_cectl).
 //
 // Time: the CPU clock is a simtime::tick_clock of the DSK profile's period.
-// charge_cycles(n) waits from the CPU edge at or after now to the edge n
+// charge(stage, n) waits from the CPU edge at or after now to the edge n
 // cycles later, each edge placed at to_fs(its exact tick): no rounded period
 // is ever accumulated. The SystemC time resolution must be 1 fs
 // (tests/support/sc_test_main.cpp).
 // "CPU too slow" fault: set_cycle_scale(num, den, from): cycles charged
 // after `from` are multiplied by num / den (rounded up).
 //
-// The firmware's own SDRAM traffic (dsp::hal::charge_with_traffic,
-// sdram_traffic_replay.h): the
-// bytes a charge's kernels stream from / to SDRAM go out on emifa_cpu as L2
+// A program's own SDRAM traffic (cpu_port::charge, sdram_traffic_replay.h):
+// the bytes a charge's kernels stream from / to SDRAM go out on emifa_cpu as L2
 // line transfers (one 128-byte burst per line read; a line written is
 // fetched (write-allocate) and later written back: two), spread evenly over
 // the charge's CPU cycles (transfer k issued at CPU cycle k0 + n k / T), so
@@ -61,11 +60,10 @@
 #include <tlm>
 #include <vector>
 
-#include "dsp/hal.h"
-#include "dsp/stage.h"
 #include "model/c6416/c6416_config.h"
 #include "model/c6416/c6416_memory.h"
 #include "model/c6416/cpu_clock_sc.h"
+#include "model/c6416/cpu_port.h"
 #include "model/c6416/dsk_profile.h"
 #include "model/c6416/edma_core.h"
 #include "model/c6416/edma_transfer_controller.h"
@@ -76,12 +74,6 @@
 #include "model/time/ticks.h"
 
 namespace c6416 {
-
-// A firmware report with its simulated time.
-struct timed_event {
-    sc_core::sc_time time;
-    dsp::event_record event;
-};
 
 class c6416_sc : public sc_core::sc_module {
   public:
@@ -95,10 +87,7 @@ class c6416_sc : public sc_core::sc_module {
     tlm_utils::simple_initiator_socket_optional<c6416_sc> emifa_cpu;
     tlm_utils::simple_initiator_socket_optional<c6416_sc> emifa_edma;
 
-    using firmware_entry = std::function<void(dsp::hal&)>;
-    using event_observer = std::function<void(const timed_event&)>;
-    using result_observer = std::function<void(const sc_core::sc_time&, const dsp::frame_output&)>;
-    using stage_observer = std::function<void(const sc_core::sc_time&, dsp::stage, bool begin)>;
+    using firmware_entry = std::function<void(cpu_port&)>;
     using register_observer = std::function<void(uint32_t address, uint32_t value)>;
 
     SC_HAS_PROCESS(c6416_sc);
@@ -113,9 +102,6 @@ class c6416_sc : public sc_core::sc_module {
     bool firmware_returned() const { return m_firmware_returned; }
     const sc_core::sc_event& firmware_returned_event() const { return m_firmware_returned_event; }
 
-    void set_event_observer(event_observer f) { m_event_observer = std::move(f); }
-    void set_result_observer(result_observer f) { m_result_observer = std::move(f); }
-    void set_stage_observer(stage_observer f) { m_stage_observer = std::move(f); }
     // Every write to an EMIFA control register (GBLCTL, CECTLn, SDCTL, ...):
     // the EMIF model takes its timing from them.
     void set_emifa_register_observer(register_observer f) {
@@ -140,14 +126,13 @@ class c6416_sc : public sc_core::sc_module {
     uint32_t ier() const { return m_ier; }
     edma_core& edma() { return m_edma; }
     const interrupt_selector& selector() const { return m_selector; }
-    const std::vector<timed_event>& events() const { return m_events; }
 
     // ---- statistics ------------------------------------------------------------------------
     // Stages a firmware may charge (the firmware ABI's 15, and a spare).
     static constexpr int max_stages = 16;
-    uint64_t charged_cycles(dsp::stage s) const { return m_stage_cycles[static_cast<int>(s)]; }
+    uint64_t charged_cycles(int stage) const { return m_stage_cycles[stage]; }
     uint64_t charged_cycles_total() const;
-    sc_core::sc_time cpu_busy_time() const { return m_cpu_busy; }  // charge_cycles
+    sc_core::sc_time cpu_busy_time() const { return m_cpu_busy; }  // charges
     // When the charge the CPU is in ends (its cycles fixed as it began, the
     // slow-down included), or zero between charges.
     sc_core::sc_time charge_end() const { return m_charge_end; }
@@ -165,7 +150,7 @@ class c6416_sc : public sc_core::sc_module {
     sc_core::sc_time sdram_late_time() const { return m_sdram_late; }
 
   private:
-    class firmware_hal;
+    friend class cpu_port;
     class edma_port;
 
     // Processes.
@@ -174,15 +159,14 @@ class c6416_sc : public sc_core::sc_module {
     void ext_int_method();
     void timer_method();
 
-    // CPU side (called on the CPU thread through firmware_hal).
-    void charge(dsp::stage s, uint64_t cycles, const dsp::sdram_traffic& traffic);
+    // CPU side (called on the CPU thread through cpu_port).
+    void charge(int stage, uint64_t cycles, const sdram_traffic& traffic);
     uint64_t scaled_cycles(uint64_t k0, uint64_t cycles) const;
-    void replay_traffic(uint64_t first_cycle, uint64_t cycles, const dsp::sdram_traffic& traffic);
+    void replay_traffic(uint64_t first_cycle, uint64_t cycles, const sdram_traffic& traffic);
     void wait_cpu_cycles(uint64_t cycles);
     uint32_t cpu_read32(uint32_t address);
     void cpu_write32(uint32_t address, uint32_t value);
     int wait_for_interrupt();
-    void report(const dsp::event_record& e);
 
     // Registers.
     bool is_peripheral(uint32_t address) const;
@@ -201,7 +185,7 @@ class c6416_sc : public sc_core::sc_module {
 
     c6416_config m_config;
     cpu_clock_sc m_cpu_clock;
-    std::unique_ptr<firmware_hal> m_hal;
+    cpu_port m_port;
     firmware_entry m_firmware;
 
     c6416_memory m_memory;
@@ -226,11 +210,6 @@ class c6416_sc : public sc_core::sc_module {
 
     uint32_t m_scale_num = 1, m_scale_den = 1;
     sc_core::sc_time m_scale_from;
-
-    event_observer m_event_observer;
-    result_observer m_result_observer;
-    stage_observer m_stage_observer;
-    std::vector<timed_event> m_events;
 
     uint64_t m_stage_cycles[max_stages] = {};
     sc_core::sc_time m_cpu_busy, m_cpu_bus, m_edma_busy;

@@ -11,7 +11,7 @@ sdram_traffic_replay::sdram_traffic_replay(const sdram_window& window)
 // once if the previous one ended later). Write-backs are interleaved evenly
 // among the reads (Bresenham), each after at least one fetch.
 void sdram_traffic_replay::run(const cpu_clock_sc& clock, uint64_t first_cycle, uint64_t cycles,
-                               const dsp::sdram_traffic& traffic, const line_transfer& transfer) {
+                               const sdram_traffic& traffic, const line_transfer& transfer) {
     const uint64_t line = m_line_buffer.size();
     const uint64_t written = (traffic.bytes_written + line - 1) / line;
     const uint64_t fetched = (traffic.bytes_read + line - 1) / line + written;

@@ -1,4 +1,4 @@
-// The firmware's own SDRAM traffic (dsp::hal::charge_with_traffic) replayed
+// A program's own SDRAM traffic (cpu_port::charge) replayed
 // as L2 line transfers on EMIFA (docs/c6416.md): one burst per line read; a
 // line written is fetched (write-allocate) and later written back (two),
 // spread evenly over the charge's CPU cycles so the transfers compete with
@@ -11,8 +11,8 @@
 #include <systemc>
 #include <vector>
 
-#include "dsp/hal.h"
 #include "model/c6416/cpu_clock_sc.h"
+#include "model/c6416/cpu_port.h"
 
 namespace c6416 {
 
@@ -33,7 +33,7 @@ class sdram_traffic_replay {
     // Issues the charge's traffic over CPU cycles [first_cycle, first_cycle +
     // cycles) (waits on the calling thread).
     void run(const cpu_clock_sc& clock, uint64_t first_cycle, uint64_t cycles,
-             const dsp::sdram_traffic& traffic, const line_transfer& transfer);
+             const sdram_traffic& traffic, const line_transfer& transfer);
 
     uint64_t lines_read() const { return m_lines_read; }
     uint64_t lines_written() const { return m_lines_written; }

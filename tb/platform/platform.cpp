@@ -101,7 +101,7 @@ platform_top::platform_top(const platform_config& config)
     m_cpu->ext_int5.bind(m_int[1]);
     m_cpu->ext_int6.bind(m_int[2]);
     m_cpu->ext_int7.bind(m_int[3]);  // not connected on the card: stays low
-    m_cpu->set_firmware([this](dsp::hal& hal) { firmware(hal); });
+    m_cpu->set_firmware([this](c6416::cpu_port& cpu) { firmware(cpu); });
 }
 
 platform_top::~platform_top() {
@@ -110,10 +110,10 @@ platform_top::~platform_top() {
     if (m_instance != nullptr) m_firmware->destroy(m_instance);
 }
 
-void platform_top::firmware(dsp::hal& hal) {
+void platform_top::firmware(c6416::cpu_port& cpu) {
     // Kernels priced for this DSK's clocks (SDRAM stalls depend on the CPU /
-    // EMIF ratio, dsp/kernel_costs.h) and compiled-C factor.
-    m_probe = std::make_unique<probe_hal>(hal, m_timeline, cost_model_of(m_config));
+    // EMIF ratio, model/c64x/cost_model.h) and compiled-C factor.
+    m_probe = std::make_unique<probe_hal>(cpu, m_timeline, cost_model_of(m_config));
     m_probe->set_event_hook([this](const fw_event& e) { on_firmware_event(e); });
     m_probe->set_memory_hook([this](uint32_t address, uint32_t bytes) {
         m_reads.push_back({address, bytes});

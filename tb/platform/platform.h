@@ -1,5 +1,5 @@
 // The platform top (docs/platform.md): two sensors -> the daughter card RTL
-// -> EMIFA -> the C6416 model running the firmware of dsp/ -> 3D track, in
+// -> EMIFA -> the C6416 model running the firmware under test -> 3D track, in
 // the arrangement platform_config names (tb/platform/arrangements/), with
 // the observers the scoreboard and the budget checker read after the run.
 //
@@ -135,7 +135,7 @@ class platform_top {
   private:
     // sc_start up to tick t (the run's end at most), if not there yet.
     void advance_to(simtime::ticks t);
-    void firmware(dsp::hal& hal);
+    void firmware(c6416::cpu_port& cpu);
     void on_firmware_event(const fw_event& e);
     void check_captured(captured_pair& pair);
     void check_used(const stereosim_event& frames_used);

@@ -124,7 +124,7 @@ double firmware_key(const platform_config& config, const std::string& name, doub
 // The EMIF engine's configuration (ECLK, SDRAM refresh) for `config`.
 emif::emif_config engine_config(const platform_config& config);
 // The kernel cost model for `config`: its CPU / EMIF clocks (SDRAM stalls
-// depend on their ratio) and compiled-C factor (dsp/kernel_costs.h).
+// depend on their ratio) and compiled-C factor (model/c64x/cost_model.h).
 c64x::cost_model cost_model_of(const platform_config& config);
 
 }  // namespace platform

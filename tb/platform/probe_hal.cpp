@@ -35,17 +35,12 @@ void probe_hal::charge(int stage, uint64_t cycles, const stereosim_sdram_traffic
     enter();
     const simtime::ticks begin = now();
     // The model's stage tables hold every stage the ABI allows.
-    const auto s = static_cast<dsp::stage>(stage);
-    if (traffic == nullptr) {
-        m_inner.charge_cycles(s, cycles);
-    } else {
-        dsp::sdram_traffic t;
-        t.bytes_read = traffic->bytes_read;
-        t.bytes_written = traffic->bytes_written;
-        m_inner.charge_with_traffic(s, cycles, t);
-        m_stage_traffic[stage].bytes_read += t.bytes_read;
-        m_stage_traffic[stage].bytes_written += t.bytes_written;
-    }
+    c6416::sdram_traffic t;
+    if (traffic != nullptr) t = {traffic->bytes_read, traffic->bytes_written};
+    m_inner.charge(stage, cycles, t);
+    // Counted once the charge is over: a run that stops inside one leaves it out.
+    m_stage_traffic[stage].bytes_read += t.bytes_read;
+    m_stage_traffic[stage].bytes_written += t.bytes_written;
     m_charges.push_back(
         {begin, now(), stage, cycles, traffic != nullptr ? *traffic : stereosim_sdram_traffic{}});
     m_stage_cycles[stage] += cycles;
@@ -58,7 +53,6 @@ void probe_hal::stage_begin(int stage) {
     m_open_stage = stage;
     m_open_cycles = 0;
     m_events.add(now(), event_kind::stage_begin, static_cast<uint8_t>(stage));
-    m_inner.stage_begin(static_cast<dsp::stage>(stage));
     leave();
 }
 
@@ -67,7 +61,6 @@ void probe_hal::stage_end(int stage) {
     m_events.add(now(), event_kind::stage_end, static_cast<uint8_t>(stage),
                  static_cast<uint32_t>(m_open_cycles));
     m_open_stage = -1;
-    m_inner.stage_end(static_cast<dsp::stage>(stage));
     leave();
 }
 
@@ -123,15 +116,6 @@ void probe_hal::report(const stereosim_event& e) {
     if (m_hook) m_hook(te);
     m_fw_events.push_back(te);
     m_events.add(te.tick, event_kind::firmware, static_cast<uint8_t>(e.kind), e.pair, e.value);
-    // The C6416 model keeps the reports it knows (its own tests read them).
-    if (e.kind <= STEREOSIM_EV_HARD_ERROR) {
-        dsp::event_record r;
-        r.kind = static_cast<dsp::firmware_event>(e.kind);
-        r.pair = e.pair;
-        r.value = e.value;
-        r.detail = e.detail;
-        m_inner.report(r);
-    }
     leave();
 }
 

@@ -1,6 +1,6 @@
 // What the platform's services (firmware_services.h) run on: every call the
-// firmware makes through the ABI goes to the C6416 model's HAL unchanged,
-// and the probe records, with the simulated tick of
+// firmware makes through the ABI goes to the C6416 model's CPU port
+// (model/c6416/cpu_port.h) unchanged, and the probe records, with the simulated tick of
 // each, what the firmware did: stage intervals and the cycles charged in
 // them, when the CPU slept in wait_for_interrupt, every report and result
 // (docs/platform.md, "Timeline"). It also measures the host time the
@@ -13,7 +13,7 @@
 #include <functional>
 #include <vector>
 
-#include "dsp/hal.h"
+#include "model/c6416/cpu_port.h"
 #include "model/time/ticks.h"
 #include "stereosim/firmware.h"
 #include "tb/platform/firmware_report.h"
@@ -52,7 +52,7 @@ class probe_hal {
     using memory_hook = std::function<void(uint32_t address, uint32_t bytes)>;
 
     // The firmware's kernels are priced with `model` (kernel_cycles).
-    probe_hal(dsp::hal& inner, timeline& events, const c64x::cost_model& model)
+    probe_hal(c6416::cpu_port& inner, timeline& events, const c64x::cost_model& model)
         : m_inner(inner), m_events(events), m_model(model) {}
 
     // Called once on the CPU thread before the firmware starts.
@@ -121,7 +121,7 @@ class probe_hal {
     void leave();
     static simtime::ticks now();
 
-    dsp::hal& m_inner;
+    c6416::cpu_port& m_inner;
     timeline& m_events;
     const char* const* m_stage_names = nullptr;
     int m_stage_count = 0;

@@ -15,6 +15,11 @@
 
 namespace c6416_test {
 
+// Stage indices the tests charge to: the chip only counts cycles per index.
+namespace stage {
+constexpr int capture = 0, preprocess = 1, detect = 2, track = 3;
+}
+
 inline sc_core::sc_time fs(int64_t femtoseconds) {
     return sc_core::sc_time::from_value(static_cast<sc_core::sc_time::value_type>(femtoseconds));
 }

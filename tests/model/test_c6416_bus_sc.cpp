@@ -39,8 +39,8 @@ TEST(C6416BusSc, CpuAccessesTakeTheTargetsTimeAndEmifaWritesAreObserved) {
 
     std::vector<sc_core::sc_time> ta, tb;
     uint32_t read_a = 0, read_b = 0, l2_read = 0;
-    a.set_firmware([&](dsp::hal& h) {
-        h.charge_cycles(dsp::stage::capture, 3);
+    a.set_firmware([&](c6416::cpu_port& h) {
+        h.charge(stage::capture, 3);
         ta.push_back(sc_core::sc_time_stamp());
         h.write32(0x80000010u, 0x12345678u);  // SDRAM through the bus
         ta.push_back(sc_core::sc_time_stamp());
@@ -50,7 +50,7 @@ TEST(C6416BusSc, CpuAccessesTakeTheTargetsTimeAndEmifaWritesAreObserved) {
         l2_read = h.read32(0x00000040u);
         ta.push_back(sc_core::sc_time_stamp());
     });
-    b.set_firmware([&](dsp::hal& h) {
+    b.set_firmware([&](c6416::cpu_port& h) {
         tb.push_back(sc_core::sc_time_stamp());
         h.write32(regs::emifa::cectl2, regs::emifa::dsk_cectl_card_v1);  // 20 cycles
         tb.push_back(sc_core::sc_time_stamp());

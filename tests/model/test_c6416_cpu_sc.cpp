@@ -39,16 +39,16 @@ TEST(C6416CpuSc, ChargeCyclesAdvancesTimeExactlyAndTheSlowCpuHookScalesIt) {
             std::make_unique<c6416::c6416_sc>(("chip_" + std::to_string(i)).c_str(), config));
         runs[i].hz = profiles[i].cpu_hz;
         cpu_run& run = runs[i];
-        chips[i]->set_firmware([&run](dsp::hal& h) {
+        chips[i]->set_firmware([&run](c6416::cpu_port& h) {
             uint64_t edge = 0;
             auto charge = [&](uint64_t n) {
-                h.charge_cycles(dsp::stage::preprocess, n);
+                h.charge(stage::preprocess, n);
                 edge += n;
                 run.checkpoints.push_back({edge, fs_of(sc_core::sc_time_stamp())});
             };
             charge(1);
             charge(1000);
-            for (uint64_t k = 0; k < single_charges; ++k) h.charge_cycles(dsp::stage::track, 1);
+            for (uint64_t k = 0; k < single_charges; ++k) h.charge(stage::track, 1);
             edge += single_charges;
             run.checkpoints.push_back({edge, fs_of(sc_core::sc_time_stamp())});
         });
@@ -57,17 +57,17 @@ TEST(C6416CpuSc, ChargeCyclesAdvancesTimeExactlyAndTheSlowCpuHookScalesIt) {
     const uint64_t onset_edge = 1 + 1000 + single_charges + 400;
     chips[0]->set_cycle_scale(3, 2, chips[0]->time_of_cpu_cycle(onset_edge));
     std::vector<int64_t> scaled_fs;
-    chips[0]->set_firmware([&runs, &scaled_fs](dsp::hal& h) {
+    chips[0]->set_firmware([&runs, &scaled_fs](c6416::cpu_port& h) {
         cpu_run& run = runs[0];
         uint64_t edge = 0;
-        h.charge_cycles(dsp::stage::preprocess, 1);
-        h.charge_cycles(dsp::stage::preprocess, 1000);
-        for (uint64_t k = 0; k < single_charges; ++k) h.charge_cycles(dsp::stage::track, 1);
+        h.charge(stage::preprocess, 1);
+        h.charge(stage::preprocess, 1000);
+        for (uint64_t k = 0; k < single_charges; ++k) h.charge(stage::track, 1);
         edge = 1 + 1000 + single_charges;
         run.checkpoints.push_back({edge, fs_of(sc_core::sc_time_stamp())});
-        h.charge_cycles(dsp::stage::detect, 1000);  // 400 before the onset, 600 after -> 900
+        h.charge(stage::detect, 1000);  // 400 before the onset, 600 after -> 900
         scaled_fs.push_back(fs_of(sc_core::sc_time_stamp()));
-        h.charge_cycles(dsp::stage::detect, 1001);  // -> 1502 (1501.5 rounded up)
+        h.charge(stage::detect, 1001);  // -> 1502 (1501.5 rounded up)
         scaled_fs.push_back(fs_of(sc_core::sc_time_stamp()));
     });
     sc_core::sc_start(us(1000.0));
@@ -86,8 +86,8 @@ TEST(C6416CpuSc, ChargeCyclesAdvancesTimeExactlyAndTheSlowCpuHookScalesIt) {
     ASSERT_EQ(scaled_fs.size(), 2u);
     EXPECT_EQ(scaled_fs[0], cpu_edge_fs(101001 + 400 + 900, 600000000));
     EXPECT_EQ(scaled_fs[1], cpu_edge_fs(101001 + 400 + 900 + 1502, 600000000));
-    EXPECT_EQ(chips[0]->charged_cycles(dsp::stage::detect), 900u + 400u + 1502u);
-    EXPECT_EQ(chips[0]->charged_cycles(dsp::stage::track), single_charges);
+    EXPECT_EQ(chips[0]->charged_cycles(stage::detect), 900u + 400u + 1502u);
+    EXPECT_EQ(chips[0]->charged_cycles(stage::track), single_charges);
     EXPECT_EQ(chips[0]->charged_cycles_total(), 101001u + 2802u);
     EXPECT_EQ(fs_of(chips[0]->cpu_busy_time()), cpu_edge_fs(101001 + 2802, 600000000));
 

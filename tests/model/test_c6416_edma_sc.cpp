@@ -24,7 +24,7 @@ constexpr uint32_t src_base = 0xB0000000u;
 constexpr uint32_t fifo_port = 0xB0008000u;
 constexpr uint32_t dst_a = 0x00010000u, dst_b = 0x00020000u, dst_c = 0x00030000u;
 
-void write_entry(dsp::hal& h, uint32_t address, const uint32_t (&w)[6]) {
+void write_entry(c6416::cpu_port& h, uint32_t address, const uint32_t (&w)[6]) {
     for (uint32_t i = 0; i < 6; ++i) h.write32(address + 4 * i, w[i]);
 }
 
@@ -57,7 +57,7 @@ TEST(C6416EdmaSc, ExtInt4EdgeMovesWordsIntoL2AndRaisesInt8OnTime) {
         *bus.data(src_base + i) = static_cast<uint8_t>(i * 7 + 3);
 
     observed o;
-    chip.set_firmware([&](dsp::hal& h) {
+    chip.set_firmware([&](c6416::cpu_port& h) {
         // Channel 4: 8 arrays of 16 words, 2-D source with arrays 256 B
         // apart, 1-D destination (packed in L2); completion code 20 chains.
         write_entry(h, edma::entry(4),
@@ -77,7 +77,7 @@ TEST(C6416EdmaSc, ExtInt4EdgeMovesWordsIntoL2AndRaisesInt8OnTime) {
         o.int8_first = sc_core::sc_time_stamp();
         o.cipr_after_first = h.read32(edma::cipr_l);
         h.write32(edma::cipr_l, 0xFFFFFFFFu);
-        h.charge_cycles(dsp::stage::capture, 36000);  // 60 us at 600 MHz: past the EXT_INT5 edge
+        h.charge(stage::capture, 36000);  // 60 us at 600 MHz: past the EXT_INT5 edge
         o.er_before_enable = h.read32(edma::er_l);
         o.ifr_before_enable = h.interrupt_flags();
         o.enabled_at = sc_core::sc_time_stamp();

@@ -11,11 +11,13 @@
 #include <cstdio>
 #include <cstring>
 #include <deque>
+#include <functional>
 #include <vector>
 
 #include "c6416_test_util.h"
 #include "dsp/card_regs.h"
 #include "dsp/control_program.h"
+#include "dsp/hal.h"
 #include "model/c6416/c6416_regs.h"
 #include "model/c6416/c6416_sc.h"
 
@@ -23,6 +25,51 @@ using namespace c6416_test;
 namespace card = dsp::card_regs;
 
 namespace {
+
+// dsp::hal (the reference firmware's own HAL) on the bare chip, without the
+// platform: charges, registers, memory and interrupts go to the CPU port;
+// reports go to `on_report` with their simulated time.
+class chip_hal final : public dsp::hal {
+  public:
+    using report_hook = std::function<void(const sc_core::sc_time&, const dsp::event_record&)>;
+
+    chip_hal(c6416::cpu_port& cpu, report_hook on_report = {})
+        : m_cpu(cpu), m_on_report(std::move(on_report)) {}
+
+    void charge_cycles(dsp::stage s, uint64_t cycles) override {
+        m_cpu.charge(static_cast<int>(s), cycles);
+    }
+    void charge_with_traffic(dsp::stage s, uint64_t cycles,
+                             const dsp::sdram_traffic& traffic) override {
+        m_cpu.charge(static_cast<int>(s), cycles, {traffic.bytes_read, traffic.bytes_written});
+    }
+    uint32_t read32(uint32_t address) override { return m_cpu.read32(address); }
+    void write32(uint32_t address, uint32_t value) override { m_cpu.write32(address, value); }
+    uint8_t* memory(uint32_t address, uint32_t bytes) override {
+        return m_cpu.memory(address, bytes);
+    }
+    void set_interrupt_enable(uint32_t ier) override { m_cpu.set_interrupt_enable(ier); }
+    uint32_t interrupt_flags() override { return m_cpu.interrupt_flags(); }
+    void clear_interrupt_flags(uint32_t mask) override { m_cpu.clear_interrupt_flags(mask); }
+    int wait_for_interrupt() override { return m_cpu.wait_for_interrupt(); }
+    void report(const dsp::event_record& e) override {
+        if (m_on_report) m_on_report(sc_core::sc_time_stamp(), e);
+    }
+    bool stop_requested() override { return m_cpu.stop_requested(); }
+
+  private:
+    c6416::cpu_port& m_cpu;
+    report_hook m_on_report;
+};
+
+// A program written against dsp::hal, as the chip's firmware entry.
+c6416::c6416_sc::firmware_entry on_hal(std::function<void(dsp::hal&)> program,
+                                       chip_hal::report_hook on_report = {}) {
+    return [program = std::move(program), on_report = std::move(on_report)](c6416::cpu_port& cpu) {
+        chip_hal hal(cpu, on_report);
+        program(hal);
+    };
+}
 
 constexpr int width = 64, height = 48;
 constexpr uint32_t frame_words = width * height / 4;
@@ -208,13 +255,13 @@ TEST(C6416FirmwareSc, ControlProgramCapturesThroughTheModelsEdma) {
     std::vector<uint32_t> processed_frames;
     std::vector<sc_core::sc_time> captured_at;
     int content_errors = 0;
-    chip.set_event_observer([&](const c6416::timed_event& te) {
-        if (te.event.kind == dsp::firmware_event::pair_captured) captured_at.push_back(te.time);
-        if (te.event.kind != dsp::firmware_event::pair_processed) return;
-        const uint32_t frame = card_model.frame_of_pair[te.event.pair];
+    const auto on_report = [&](const sc_core::sc_time& at, const dsp::event_record& e) {
+        if (e.kind == dsp::firmware_event::pair_captured) captured_at.push_back(at);
+        if (e.kind != dsp::firmware_event::pair_processed) return;
+        const uint32_t frame = card_model.frame_of_pair[e.pair];
         processed_frames.push_back(frame);
-        if (!buffer_holds(chip, program, static_cast<int>(te.event.value), frame)) ++content_errors;
-    });
+        if (!buffer_holds(chip, program, static_cast<int>(e.value), frame)) ++content_errors;
+    };
     dsp::control_program_config pc;
     pc.pipeline.max_width = width;
     pc.pipeline.max_height = height;
@@ -222,10 +269,12 @@ TEST(C6416FirmwareSc, ControlProgramCapturesThroughTheModelsEdma) {
     pc.card.active_rows = height;
     pc.max_pairs = 4;
     bool initialised = false;
-    chip.set_firmware([&](dsp::hal& h) {
-        initialised = program.init(pc, h);
-        program.run();
-    });
+    chip.set_firmware(on_hal(
+        [&](dsp::hal& h) {
+            initialised = program.init(pc, h);
+            program.run();
+        },
+        on_report));
     sc_core::sc_start(us(300000.0));
 
     ASSERT_TRUE(initialised);

@@ -44,7 +44,7 @@ TEST(C6416IrqSc, SelectorRoutesEdgesByPolarityAndIerGatesTheWakeUp) {
     std::vector<wake> wakes;
     uint32_t ifr_after_int5 = 0, ifr_after_ext7 = 0;
     sc_core::sc_time charge_end, timer_started;
-    chip.set_firmware([&](dsp::hal& h) {
+    chip.set_firmware([&](c6416::cpu_port& h) {
         auto take = [&] {
             const int n = h.wait_for_interrupt();
             wakes.push_back({n, sc_core::sc_time_stamp()});
@@ -61,7 +61,7 @@ TEST(C6416IrqSc, SelectorRoutesEdgesByPolarityAndIerGatesTheWakeUp) {
         h.clear_interrupt_flags(0xFFFFu);
         h.set_interrupt_enable(1u << 4);
         take();  // EXT_INT6 falling at `odd`
-        h.charge_cycles(dsp::stage::capture, 1);
+        h.charge(stage::capture, 1);
         charge_end = sc_core::sc_time_stamp();
         ifr_after_ext7 = h.interrupt_flags();  // EXT_INT7 at 9 us: not yet
         // Timer 0 -> TINT0 -> INT14 (reset MUXH): 75 timer clocks of 8 cycles = 1 us.
@@ -94,7 +94,7 @@ TEST(C6416IrqSc, SelectorRoutesEdgesByPolarityAndIerGatesTheWakeUp) {
     EXPECT_EQ(ifr_after_ext7 & (1u << 7), 0u);
     EXPECT_EQ(wakes[4].n, 14);
     EXPECT_EQ(wakes[4].at, chip.time_of_cpu_cycle(chip.cpu_cycle_at_or_after(timer_started) + 600));
-    EXPECT_EQ(wakes[5].n, dsp::hal::no_interrupt);
+    EXPECT_EQ(wakes[5].n, c6416::cpu_port::no_interrupt);
     EXPECT_EQ(wakes[5].at, us(20.0));
     EXPECT_NE(chip.ifr() & (1u << 7), 0u);  // EXT_INT7 at 9 us latched, never enabled
     EXPECT_EQ(chip.selector().selected_event(4), irq::sel_gpint6);

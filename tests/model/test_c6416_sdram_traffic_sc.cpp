@@ -18,9 +18,9 @@
 #include <vector>
 
 #include "c6416_test_util.h"
-#include "dsp/kernel_costs.h"
 #include "model/c6416/c6416_regs.h"
 #include "model/c6416/c6416_sc.h"
+#include "model/c64x/cost_model.h"
 #include "model/emif/cectl.h"
 #include "model/emif/emif_tlm_target_sc.h"
 #include "tests/support/emif/async_sram_slave.h"
@@ -103,32 +103,32 @@ TEST(C6416SdramTrafficSc, FirmwareSdramLinesTakeBusTimeAndDelayTheCapture) {
 
     // Phase A: 1 ms of CPU (600,000 cycles) streaming 100 lines in, 50 out.
     const uint64_t cycles_a = 600000;
-    const dsp::sdram_traffic traffic_a{100 * line_bytes, 50 * line_bytes};
+    const c6416::sdram_traffic traffic_a{100 * line_bytes, 50 * line_bytes};
     // Phase C: 200 us from 3.010 ms, 40 lines in, while the card burst
     // (3.000 ms + 2000 x 14 ECLK = 280 us) runs.
     const uint64_t cycles_c = 120000;
-    const dsp::sdram_traffic traffic_c{40 * line_bytes, 0};
+    const c6416::sdram_traffic traffic_c{40 * line_bytes, 0};
     // Phase D: 10 us of CPU for 100 lines (100 x 23 ECLK = 23 us of bus).
     const uint64_t cycles_d = 6000;
-    const dsp::sdram_traffic traffic_d{100 * line_bytes, 0};
+    const c6416::sdram_traffic traffic_d{100 * line_bytes, 0};
 
     bus_snapshot before_a, after_a, before_c, after_c;
     sc_core::sc_time a_begin, a_end, c_begin, c_end, d_begin, d_end;
-    chip.set_firmware([&](dsp::hal& h) {
+    chip.set_firmware([&](c6416::cpu_port& h) {
         before_a = snapshot();
         a_begin = sc_core::sc_time_stamp();
-        h.charge_with_traffic(dsp::stage::preprocess, cycles_a, traffic_a);
+        h.charge(stage::preprocess, cycles_a, traffic_a);
         a_end = sc_core::sc_time_stamp();
         after_a = snapshot();
-        h.charge_cycles(dsp::stage::capture, 1806000 - cycles_a);  // to 3.010 ms
+        h.charge(stage::capture, 1806000 - cycles_a);  // to 3.010 ms
         before_c = snapshot();
         c_begin = sc_core::sc_time_stamp();
-        h.charge_with_traffic(dsp::stage::detect, cycles_c, traffic_c);
+        h.charge(stage::detect, cycles_c, traffic_c);
         c_end = sc_core::sc_time_stamp();
         after_c = snapshot();
-        h.charge_cycles(dsp::stage::capture, 2400000 - 1806000 - cycles_c);  // to 4 ms
+        h.charge(stage::capture, 2400000 - 1806000 - cycles_c);  // to 4 ms
         d_begin = sc_core::sc_time_stamp();
-        h.charge_with_traffic(dsp::stage::track, cycles_d, traffic_d);
+        h.charge(stage::track, cycles_d, traffic_d);
         d_end = sc_core::sc_time_stamp();
     });
     sc_core::sc_start(us(5000));
@@ -163,7 +163,7 @@ TEST(C6416SdramTrafficSc, FirmwareSdramLinesTakeBusTimeAndDelayTheCapture) {
     stream.bytes_read = traffic_a.bytes_read;
     stream.bytes_written = traffic_a.bytes_written;
     stream.where = c64x::placement::sdram;
-    const uint64_t cost_model_ps = dsp::cost::default_model().emif_busy_ps(stream);
+    const uint64_t cost_model_ps = c64x::cost_model().emif_busy_ps(stream);
     EXPECT_EQ(cost_model_ps, transfers_a * line_edges * eclk_ps);
     std::printf(
         "A: %llu transfers, bus busy %llu ECLK (engine: 16 per line, 7 per row opened) vs cost "

@@ -29,8 +29,8 @@ TEST(C6416TimerSc, PeriodicInterruptsCountAndTimerPacedDma) {
     uint32_t cnt_read = 0, cnt_held_1 = 0, cnt_held_2 = 0;
     std::vector<std::pair<int, sc_core::sc_time>> timer2_wakes;
     sc_core::sc_time start2;
-    chip.set_firmware([&](dsp::hal& h) {
-        h.charge_cycles(dsp::stage::capture, 7);  // start off cycle 0
+    chip.set_firmware([&](c6416::cpu_port& h) {
+        h.charge(stage::capture, 7);  // start off cycle 0
         h.set_interrupt_enable(1u << 15);
         h.write32(timer::base1 + timer::prd, 900);  // 900 x 8 cycles = 10 us at 720 MHz
         start = sc_core::sc_time_stamp();
@@ -39,13 +39,13 @@ TEST(C6416TimerSc, PeriodicInterruptsCountAndTimerPacedDma) {
             EXPECT_EQ(h.wait_for_interrupt(), 15);
             tint1.push_back(sc_core::sc_time_stamp());
         }
-        h.charge_cycles(dsp::stage::capture, 8 * 333 + 5);  // 333 timer clocks and 5 cycles on
+        h.charge(stage::capture, 8 * 333 + 5);  // 333 timer clocks and 5 cycles on
         read_at = sc_core::sc_time_stamp();
         cnt_read = h.read32(timer::base1 + timer::cnt);
         h.write32(timer::base1 + timer::ctl, timer::ctl_clksrc);  // hold
         held_at = sc_core::sc_time_stamp();
         cnt_held_1 = h.read32(timer::base1 + timer::cnt);
-        h.charge_cycles(dsp::stage::capture, 80000);
+        h.charge(stage::capture, 80000);
         cnt_held_2 = h.read32(timer::base1 + timer::cnt);
 
         // Timer 2: INT9 <- TINT2, EDMA channel 19 copies one L2 word per period.
