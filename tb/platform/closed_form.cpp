@@ -7,14 +7,12 @@
 
 namespace platform {
 
-namespace {
-
-// The pair buffer's status header ahead of the left frame in the capture
-// the closed form models: the reference design's (dsp/control_program.h,
-// control_program_edma::header_bytes; docs/budget.md).
-constexpr uint64_t pair_header_bytes = 64;
-
-}  // namespace
+frame_placement reference_placement(int cols, int rows) {
+    // control_program_edma::header_bytes ahead of the left frame (docs/budget.md).
+    constexpr uint64_t header_bytes = 64;
+    const uint64_t frame_bytes = static_cast<uint64_t>(cols) * static_cast<uint64_t>(rows);
+    return {header_bytes, header_bytes + frame_bytes};
+}
 
 readout_figures readout(const sensor::sensor_profile& p) {
     readout_figures r;
@@ -30,7 +28,8 @@ readout_figures readout(const sensor::sensor_profile& p) {
     return r;
 }
 
-capture_figures capture(int cols, int rows, uint32_t card_cectl, const emif::emif_config& emif) {
+capture_figures capture(int cols, int rows, uint32_t card_cectl, const emif::emif_config& emif,
+                        const frame_placement& frames) {
     capture_figures c;
     const emif::async_timing card = emif::decode_cectl(card_cectl);
     const uint64_t ta = card.turnaround;  // CE2/CE3 <-> CE0 and back: the async space's TA
@@ -44,14 +43,12 @@ capture_figures capture(int cols, int rows, uint32_t card_cectl, const emif::emi
     c.line_eclk = ta + words_per_line * card.read_cycles() + ta + sdram_write(words_per_line);
     c.pair_eclk = c.header_eclk + 2 * static_cast<uint64_t>(rows) * c.line_eclk;
     // An SDRAM line burst that crosses a 2 KB row boundary pays the row
-    // access again there (docs/emif.md). The pair buffer (4 KB aligned)
-    // holds the 64-byte header, then the left frame, then the right, each
-    // line after line (dsp/control_program.h).
+    // access again there (docs/emif.md). Each frame is written line after line.
     const uint64_t line_bytes = static_cast<uint64_t>(cols);
-    const uint64_t frame_bytes = line_bytes * static_cast<uint64_t>(rows);
-    for (uint64_t frame = 0; sd.row_bytes > 0 && frame < 2; ++frame) {
-        for (uint64_t k = 0; k < static_cast<uint64_t>(rows); ++k) {
-            const uint64_t first = pair_header_bytes + frame * frame_bytes + k * line_bytes;
+    const uint64_t starts[2] = {frames.left, frames.right};
+    for (uint64_t start : starts) {
+        for (uint64_t k = 0; sd.row_bytes > 0 && k < static_cast<uint64_t>(rows); ++k) {
+            const uint64_t first = start + k * line_bytes;
             const uint64_t last = first + line_bytes - 1;
             c.row_crossings += last / sd.row_bytes - first / sd.row_bytes;
         }
@@ -118,7 +115,7 @@ budget_estimate estimate_budget(const platform_config& config, double processing
     const uint32_t cectl = card_cectl_asked(config);
     const int cols = config.profile.active_cols, rows = config.profile.active_rows;
     budget_estimate b;
-    b.capture_ms = capture(cols, rows, cectl, emif).total_ms();
+    b.capture_ms = capture(cols, rows, cectl, emif, reference_placement(cols, rows)).total_ms();
     b.traffic_ms = config.sdram_traffic_on_bus ? firmware_traffic(cols, rows, cectl, emif).ms() : 0;
     b.processing_ms = processing_ms;
     const double period_ms = static_cast<double>(config.period) / (simtime::ticks_per_ns * 1e6);

@@ -28,11 +28,11 @@ struct readout_figures {
 };
 readout_figures readout(const sensor::sensor_profile& p);
 
-// The firmware's capture chain for one pair (dsp/control_program.h): the
-// card's 5 status registers into the pair buffer's header, then the left and
-// the right frame line by line, each line a fixed-address burst from the
-// card's pixel port (CE3) followed by an incrementing burst into the SDRAM
-// buffer (CE0), every transfer started when the one before completed.
+// A capture chain for one pair as the card's protocol asks (docs/budget.md):
+// the card's 5 status registers into the pair buffer, then the left and the
+// right frame line by line, each line a fixed-address burst from the card's
+// pixel port (CE3) followed by an incrementing burst into the SDRAM buffer
+// (CE0), every transfer started when the one before completed.
 struct capture_figures {
     uint64_t header_eclk = 0;       // status registers + header write
     uint64_t line_eclk = 0;         // one line: card read + SDRAM write + turnarounds
@@ -43,9 +43,19 @@ struct capture_figures {
     double eclk_ns = 0.0;
     double total_ms() const { return total_eclk * eclk_ns * 1e-6; }
 };
+// Where the chain writes the frames in SDRAM: only their place within an
+// SDRAM row matters (a line burst crossing a row pays a row access).
+struct frame_placement {
+    uint64_t left = 0, right = 0;  // the frames' first bytes
+};
+// The reference firmware's pair buffer: 4 KB aligned, a 64-byte status
+// header, then the left frame and the right (dsp/control_program.h). What
+// the closed form assumes before a run has shown where a firmware puts them.
+frame_placement reference_placement(int cols, int rows);
 // cols x rows active pixels (4 per 32-bit word); card_cectl = CECTL2/3; the
 // SDRAM numbers and the ECLK period of the engine's configuration.
-capture_figures capture(int cols, int rows, uint32_t card_cectl, const emif::emif_config& emif);
+capture_figures capture(int cols, int rows, uint32_t card_cectl, const emif::emif_config& emif,
+                        const frame_placement& frames);
 
 // The firmware's own SDRAM traffic per pair on EMIFA (dsp/controller.h memory
 // plan: the raw pair read once through the L2 cache, 2 cols rows bytes in

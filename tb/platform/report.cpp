@@ -37,8 +37,16 @@ run_figures figures_of(const platform_top& top) {
 }
 
 capture_figures capture_closed_form(const platform_top& top) {
-    return capture(top.config().profile.active_cols, top.config().profile.active_rows,
-                   card_cectl(top), top.engine().config());
+    const int cols = top.config().profile.active_cols, rows = top.config().profile.active_rows;
+    frame_placement frames = reference_placement(cols, rows);
+    if (top.firmware_started()) {
+        for (const fw_event& e : top.probe().fw_events()) {
+            if (e.event.kind != STEREOSIM_EV_PAIR_CAPTURED) continue;
+            frames = {e.event.left, e.event.right};
+            break;
+        }
+    }
+    return capture(cols, rows, card_cectl(top), top.engine().config(), frames);
 }
 
 namespace {

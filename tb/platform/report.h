@@ -23,7 +23,9 @@ struct run_figures {
 };
 run_figures figures_of(const platform_top& top);
 
-// The closed-form capture figures for this configuration (CECTL of the DSK).
+// The closed-form capture figures for this configuration: the CECTL the
+// firmware programmed, the frames where its first PAIR_CAPTURED put them
+// (the reference's pair buffer if it reported none).
 capture_figures capture_closed_form(const platform_top& top);
 
 void print_report(std::FILE* out, const platform_top& top, const scoreboard_report& score,

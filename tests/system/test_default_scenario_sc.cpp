@@ -130,6 +130,14 @@ TEST(default_scenario, capture_and_budget_agree_with_the_closed_forms) {
     EXPECT_EQ(cf.header_eclk, 82u);
     EXPECT_EQ(cf.row_crossings, 300u);
     EXPECT_NEAR(cf.total_ms(), 22.556, 0.001);
+    // Frames at the start of a row (a firmware without the header): of the
+    // 149 row boundaries inside each 300 KB frame, the 29 at a multiple of
+    // 5 rows (10 KB = 16 lines) fall between two lines; 120 per frame.
+    const platform::capture_figures aligned =
+        platform::capture(640, 480, c6416::emifa::dsk_cectl_card_v1, r.top->engine().config(),
+                          {0x80000000u, 0x80000000u + 640u * 480u});
+    EXPECT_EQ(aligned.row_crossings, 240u);
+    EXPECT_EQ(cf.pair_eclk - aligned.pair_eclk, 60u * r.top->engine().config().sdram.access_cycles);
 
     // The firmware's SDRAM lines (the raw pair, 4,800 x 128 B) share the bus:
     // a capture takes at least the closed form alone (no line inside it, as
