@@ -13,6 +13,7 @@
 #include <string>
 
 #include "dsp/plugin/reference_firmware.h"
+#include "model/scene/renderer.h"
 #include "model/scene/sequence.h"
 #include "tb/app/cli/config_keys.h"
 #include "tb/app/cli/firmware_keys.h"
@@ -197,6 +198,55 @@ TEST(cli_config, default_setup_is_the_platform_default_scene) {
     EXPECT_EQ(config.quantum, platform::platform_config{}.quantum);
     std::printf("default setup: %d frame times compared with scene::default_scenario(3)\n",
                 compared);
+}
+
+// The spin keys reach the renderer: `--scenario spinning` turns the ball's
+// texture while its outline follows the path. Rendered with and without the
+// spin: before the throw (no turn yet) the images are equal; at frame 10 the
+// coverage (the outline) is equal and only pixels the ball covers differ.
+TEST(cli_config, spin_turns_the_ball_texture_not_its_outline) {
+    cli::run_setup spinning;
+    std::string error;
+    ASSERT_TRUE(cli::apply_assignments({{"scenario.name", json("spinning")}}, &spinning, &error))
+        << error;
+    EXPECT_EQ(spinning.scenario.spin_rpm, 300.0);
+    EXPECT_EQ(spinning.scenario.spin_axis, "x");
+    cli::run_setup still = spinning;
+    still.scenario.spin_rpm = 0.0;
+    const platform::platform_config a = cli::platform_config_of(spinning);
+    const platform::platform_config b = cli::platform_config_of(still);
+    ASSERT_EQ(a.scenario.scene.balls.size(), 1u);
+    EXPECT_DOUBLE_EQ(a.scenario.scene.balls[0].spin_rad_s, 10.0 * M_PI);  // 300 rpm
+    const scene::renderer with_spin(a.scenario.scene), without(b.scenario.scene);
+    const double period = a.scenario.frame_period_s;
+    for (int frame : {1, 10}) {
+        scene::rgb_image ia, ib;
+        scene::gray_image ca, cb;
+        with_spin.render(scene::camera_id::right, frame * period, &ia, &ca);
+        without.render(scene::camera_id::right, frame * period, &ib, &cb);
+        int ball_pixels = 0, differ_on_ball = 0, differ_off_ball = 0, outline_differs = 0;
+        for (int y = 0; y < ia.height; ++y) {
+            for (int x = 0; x < ia.width; ++x) {
+                if (ca.at(x, y) != cb.at(x, y)) ++outline_differs;
+                const bool on_ball = ca.at(x, y) > 0;
+                const dsp::rgb8 p = ia.at(x, y), q = ib.at(x, y);
+                const bool differ = p.r != q.r || p.g != q.g || p.b != q.b;
+                ball_pixels += on_ball ? 1 : 0;
+                differ_on_ball += on_ball && differ ? 1 : 0;
+                differ_off_ball += !on_ball && differ ? 1 : 0;
+            }
+        }
+        EXPECT_EQ(outline_differs, 0) << frame;
+        EXPECT_EQ(differ_off_ball, 0) << frame;
+        EXPECT_GT(ball_pixels, 2000) << frame;  // 61 px wide or more: ~2900 px
+        if (frame == 1) {
+            EXPECT_EQ(differ_on_ball, 0);  // the throw starts at frame 3
+        } else {
+            EXPECT_GT(differ_on_ball, ball_pixels / 2);
+        }
+        std::printf("frame %d: %d ball pixels, %d differ with the spin\n", frame, ball_pixels,
+                    differ_on_ball);
+    }
 }
 
 }  // namespace

@@ -23,6 +23,8 @@ struct scenario_params {
     double depth_m = 2.6;          // the ball's starting depth (circle: the plane's depth)
     double speed = 1.0;            // 1 = the path's nominal speed; a time scale
     double ball_radius_mm = 50.0;  // docs/design-brief.md default ball radius 5 cm
+    double spin_rpm = 0.0;         // the ball's spin once it moves, revolutions per minute
+    std::string spin_axis = "x";   // x | y | z of the world (right camera) frame
     std::string light = "none";    // none | step | ramp
     int light_frame = 6;           // frame of the step / start of the ramp
     double light_gain = 0.6;       // global gain after the change
