@@ -121,6 +121,12 @@ uint64_t c6416_sc::scaled_cycles(uint64_t k0, uint64_t cycles) const {
 }
 
 void c6416_sc::charge(int stage, uint64_t cycles, const sdram_traffic& traffic) {
+    if (stage < 0 || stage >= max_stages) {
+        SC_REPORT_ERROR(name(), ("a charge to stage " + std::to_string(stage) + ", outside 0.." +
+                                 std::to_string(max_stages - 1))
+                                    .c_str());
+        return;
+    }
     const uint64_t k0 = m_cpu_clock.current_cycle();
     const uint64_t scaled = scaled_cycles(k0, cycles);
     m_stage_cycles[stage] += scaled;

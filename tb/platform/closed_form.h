@@ -6,9 +6,11 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "model/emif/emif_async_master.h"
 #include "model/sensor/profile.h"
+#include "tb/platform/firmware_report.h"
 #include "tb/platform/platform_config.h"
 
 namespace platform {
@@ -52,6 +54,9 @@ struct frame_placement {
 // header, then the left frame and the right (dsp/control_program.h). What
 // the closed form assumes before a run has shown where a firmware puts them.
 frame_placement reference_placement(int cols, int rows);
+// Where the firmware's first PAIR_CAPTURED that names two frames in SDRAM
+// (EMIFA CE0) put them; the reference's placement if none did.
+frame_placement reported_placement(const std::vector<fw_event>& events, int cols, int rows);
 // cols x rows active pixels (4 per 32-bit word); card_cectl = CECTL2/3; the
 // SDRAM numbers and the ECLK period of the engine's configuration.
 capture_figures capture(int cols, int rows, uint32_t card_cectl, const emif::emif_config& emif,

@@ -38,14 +38,9 @@ run_figures figures_of(const platform_top& top) {
 
 capture_figures capture_closed_form(const platform_top& top) {
     const int cols = top.config().profile.active_cols, rows = top.config().profile.active_rows;
-    frame_placement frames = reference_placement(cols, rows);
-    if (top.firmware_started()) {
-        for (const fw_event& e : top.probe().fw_events()) {
-            if (e.event.kind != STEREOSIM_EV_PAIR_CAPTURED) continue;
-            frames = {e.event.left, e.event.right};
-            break;
-        }
-    }
+    const frame_placement frames = top.firmware_started()
+                                       ? reported_placement(top.probe().fw_events(), cols, rows)
+                                       : reference_placement(cols, rows);
     return capture(cols, rows, card_cectl(top), top.engine().config(), frames);
 }
 

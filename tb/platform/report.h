@@ -24,8 +24,7 @@ struct run_figures {
 run_figures figures_of(const platform_top& top);
 
 // The closed-form capture figures for this configuration: the CECTL the
-// firmware programmed, the frames where its first PAIR_CAPTURED put them
-// (the reference's pair buffer if it reported none).
+// firmware programmed, the frames where it reported them (reported_placement).
 capture_figures capture_closed_form(const platform_top& top);
 
 void print_report(std::FILE* out, const platform_top& top, const scoreboard_report& score,

@@ -13,25 +13,14 @@
 // add 4.9 ms).
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <fstream>
+#include <cstdio>
 #include <nlohmann/json.hpp>
-#include <string>
 
-#include "tests/support/shell.h"
+#include "tests/cli/scenario_tracking.h"
 
 namespace {
 
 using nlohmann::json;
-
-json run(const std::string& dir, const std::string& scenario) {
-    const auto r =
-        testsupport::run_command(std::string(STEREOSIM_BINARY) + " run --quiet --frames 30 " +
-                                 "--scenario " + scenario + " --out " + dir);
-    EXPECT_EQ(r.exit_code, 0) << r.output;
-    std::ifstream in(dir + "/report.json");
-    return json::parse(in, nullptr, false);
-}
 
 void expect_tracked_within_bounds(const json& report, double max_depth_pct) {
     ASSERT_TRUE(report.is_object());
@@ -44,40 +33,28 @@ void expect_tracked_within_bounds(const json& report, double max_depth_pct) {
     EXPECT_GE(accuracy["detect_latency_frames"].get<int>(), 1);
     EXPECT_LE(accuracy["detect_latency_frames"].get<int>(), 3);
 
-    int scored = 0, after = 0;
-    double box_sum = 0.0, depth_max = 0.0;
-    for (const json& f : report["frames"]) {
-        if (f["pair"].is_null() || !f["pair"]["processed"].get<bool>()) continue;
-        if (f["pair"]["scene_frame"].get<int>() < detected) continue;
-        ++after;
-        EXPECT_EQ(f["tracker_state"], "TRACK") << f["frame"];
-        const json& e = f["errors"];
-        if (e["box_centre_px"].is_null() || e["depth_pct"].is_null()) continue;
-        ++scored;
-        box_sum += e["box_centre_px"].get<double>();
-        depth_max = std::max(depth_max, std::fabs(e["depth_pct"].get<double>()));
-    }
-    ASSERT_GE(after, 20);
-    EXPECT_EQ(scored, after) << "a pair without a box or a 3D point";
-    EXPECT_LE(box_sum / scored, 5.0);
-    EXPECT_LE(depth_max, max_depth_pct);
+    const scenario_test::tracking t = scenario_test::tracking_after_detection(report, detected);
+    ASSERT_GE(t.after, 20);
+    EXPECT_EQ(t.scored, t.after) << "a pair without a box or a 3D point";
+    EXPECT_LE(t.box_mean_px, 5.0);
+    EXPECT_LE(t.depth_max_pct, max_depth_pct);
     EXPECT_LT(report["summary"]["timing"]["processing_ms_max"].get<double>(), 24.5);
     std::printf(
         "%d pairs after the detection, box centre error mean %.2f px, |depth| max %.2f %%, "
         "processing max %.3f ms, track max %.3f ms, stereo_sad max %.3f ms\n",
-        after, box_sum / scored, depth_max,
+        t.after, t.box_mean_px, t.depth_max_pct,
         report["summary"]["timing"]["processing_ms_max"].get<double>(),
         report["summary"]["timing"]["stage_ms"]["track"]["max"].get<double>(),
         report["summary"]["timing"]["stage_ms"]["stereo_sad"]["max"].get<double>());
 }
 
 TEST(ObjectSizeScenarios, SmallBallTenPixelsWide) {
-    const json report = run(testsupport::temp_dir("small"), "small");
+    const json report = scenario_test::run("small");
     expect_tracked_within_bounds(report, 1.0);
 }
 
 TEST(ObjectSizeScenarios, LargeBallHalfTheImageWide) {
-    const json report = run(testsupport::temp_dir("large"), "large");
+    const json report = scenario_test::run("large");
     expect_tracked_within_bounds(report, 1.0);
 }
 

@@ -1,4 +1,4 @@
-// The CPU's time in the C6416 model: charge_cycles(n) moves simulated time
+// The CPU's time in the C6416 model: charge(stage, n) moves simulated time
 // to the CPU edge n cycles on, every edge at its exact tick rounded once to
 // femtoseconds (600 MHz: 30 ticks per cycle), for the three DSK profiles and
 // an off-grid 850 MHz clock (360/17 ticks), also after 100,000 single-cycle

@@ -1,5 +1,5 @@
 // The firmware's own SDRAM traffic on EMIFA (issue 5, docs/c6416.md): a
-// charge_with_traffic puts its SDRAM bytes on emifa_cpu as 128-byte L2 line
+// charge with SDRAM traffic puts its bytes on emifa_cpu as 128-byte L2 line
 // transfers, spread over the charge's CPU cycles, through the real EMIF
 // engine (emif_tlm_target + emif_cycle_driver, SDRAM on CE0, an SRAM with the
 // card's timing on CE2). One simulation, four phases:

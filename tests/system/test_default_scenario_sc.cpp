@@ -130,9 +130,9 @@ TEST(default_scenario, capture_and_budget_agree_with_the_closed_forms) {
     EXPECT_EQ(cf.header_eclk, 82u);
     EXPECT_EQ(cf.row_crossings, 300u);
     EXPECT_NEAR(cf.total_ms(), 22.556, 0.001);
-    // Frames at the start of a row (a firmware without the header): of the
-    // 149 row boundaries inside each 300 KB frame, the 29 at a multiple of
-    // 5 rows (10 KB = 16 lines) fall between two lines; 120 per frame.
+    // The same chain with the frames at the start of a row: of the 149 row
+    // boundaries inside each 300 KB frame, the 29 at a multiple of 5 rows
+    // (10 KB = 16 lines) fall between two lines; 120 per frame.
     const platform::capture_figures aligned =
         platform::capture(640, 480, c6416::emifa::dsk_cectl_card_v1, r.top->engine().config(),
                           {0x80000000u, 0x80000000u + 640u * 480u});

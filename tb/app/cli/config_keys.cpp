@@ -101,13 +101,14 @@ std::vector<config_key> scenario_keys() {
                "time scale of the path: 1 nominal, 2 twice as fast, 0 at rest"),
         number("scenario.ball_radius_mm", scenario_field(&scenario_params::ball_radius_mm), 5.0,
                300.0, "ball radius, mm (docs/design-brief.md default 50)"),
-        // A thrown or tossed ball turns a few times a second; 6000 rpm is
-        // 2.4 turns per 24.5 ms frame, past which the texture aliases.
-        number("scenario.spin_rpm", scenario_field(&scenario_params::spin_rpm), 0.0, 6000.0,
+        // A tossed or thrown ball turns 1-10 times a second. Frames are
+        // rendered at an instant, so past half a turn per 24.5 ms frame
+        // (1224 rpm) the texture's motion aliases.
+        number("scenario.spin_rpm", scenario_field(&scenario_params::spin_rpm), 0.0, 1200.0,
                "the ball's spin once it moves, revolutions per minute (0: none)"),
         choice("scenario.spin_axis", scenario_field(&scenario_params::spin_axis), {"x", "y", "z"},
-               "the spin's axis in the right camera's frame: x across the view (top or back "
-               "spin), y vertical (side spin), z along the view (the texture turns in the image)"),
+               "the spin's axis in the right camera's frame: x across the view, y vertical, z "
+               "along the view (the texture turns in the image plane)"),
         choice("scenario.light", scenario_field(&scenario_params::light), {"none", "step", "ramp"},
                "a global lighting change: none, a step, or a linear ramp"),
         integer("scenario.light_frame", scenario_field(&scenario_params::light_frame), 0, 100000,

@@ -56,11 +56,11 @@ const std::vector<builtin_scenario>& builtin_scenarios() {
          {{"scenario.path", "pass"},
           {"scenario.depth_m", "1.4"},
           {"scenario.ball_radius_mm", "278"}}},
-        // A thrown ball spins: 100 mm, 61 px wide at 2.6 m to 99 px at 1.6 m,
+        // A thrown ball spins: 100 mm radius, 61 px wide at 2.6 m to 99 px at 1.6 m,
         // turning 5 times a second (44 degrees a frame) about the axis across
         // the view, so its texture moves against its outline.
         {"spinning",
-         "the default throw with a 100 mm ball (61-99 px) spinning at 5 rev/s (300 rpm)",
+         "the default throw, a ball of 100 mm radius (61-99 px) spinning at 5 rev/s (300 rpm)",
          {{"scenario.ball_radius_mm", "100"},
           {"scenario.spin_rpm", "300"},
           {"scenario.spin_axis", "x"}}},

@@ -1,0 +1,54 @@
+// A built-in scenario co-simulated as a user would run it (`stereosim run
+// --frames 30 --scenario NAME`), and what its report.json says of the
+// tracking from the detection on: the scenario tests' shared reading.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tests/support/shell.h"
+
+namespace scenario_test {
+
+inline nlohmann::json run(const std::string& scenario) {
+    const std::string dir = testsupport::temp_dir(scenario);
+    const auto r =
+        testsupport::run_command(std::string(STEREOSIM_BINARY) + " run --quiet --frames 30 " +
+                                 "--scenario " + scenario + " --out " + dir);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    std::ifstream in(dir + "/report.json");
+    return nlohmann::json::parse(in, nullptr, false);
+}
+
+// Pairs processed from the detection frame on; each must say TRACK (checked).
+struct tracking {
+    int after = 0;   // pairs from the detection on
+    int scored = 0;  // of them, with a box and a 3D point scored
+    double box_mean_px = 0.0, box_max_px = 0.0, depth_max_pct = 0.0;
+};
+
+inline tracking tracking_after_detection(const nlohmann::json& report, int detected) {
+    tracking t;
+    double box_sum = 0.0;
+    for (const nlohmann::json& f : report["frames"]) {
+        if (f["pair"].is_null() || !f["pair"]["processed"].get<bool>()) continue;
+        if (f["pair"]["scene_frame"].get<int>() < detected) continue;
+        ++t.after;
+        EXPECT_EQ(f["tracker_state"], "TRACK") << f["frame"];
+        const nlohmann::json& e = f["errors"];
+        if (e["box_centre_px"].is_null() || e["depth_pct"].is_null()) continue;
+        ++t.scored;
+        box_sum += e["box_centre_px"].get<double>();
+        t.box_max_px = std::max(t.box_max_px, e["box_centre_px"].get<double>());
+        t.depth_max_pct = std::max(t.depth_max_pct, std::fabs(e["depth_pct"].get<double>()));
+    }
+    t.box_mean_px = t.scored > 0 ? box_sum / t.scored : 0.0;
+    return t;
+}
+
+}  // namespace scenario_test
