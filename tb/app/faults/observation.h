@@ -119,9 +119,9 @@ struct run_observation {
     // OE raises after which the firmware processed a pair without first
     // reporting in_step (the host learns the card is in step from it).
     int unreported_in_step = 0;
-    // Overflows the firmware reported that its configured recovery
-    // (dsp::control_program_config::rearm_on_overflow) did not follow with an
-    // OE restart on the card's pins within rearm_window_ms.
+    // Overflows the firmware reported that its declared recovery (its
+    // policy's rearm_on_overflow, include/stereosim/firmware.h) did not
+    // follow with an OE restart on the card's pins within rearm_window_ms.
     int unrearmed_overflows = 0;
     // Pair identity at the point of use: the frames the firmware read for
     // each processed pair against the sensors' frames of the pair it names.

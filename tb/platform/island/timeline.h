@@ -19,12 +19,12 @@ enum class event_kind : uint8_t {
     oe,            // a: level; the card's OE pin to both sensors
     irq,           // a: EXT_INT number (4..6), b: level
     sensor_frame,  // a: camera (0 L, 1 R), b: truth index; VSYNC rose
-    stage_begin,   // a: dsp::stage
-    stage_end,     // a: dsp::stage, b: cycles charged in it
+    stage_begin,   // a: the firmware's stage index (its descriptor's names)
+    stage_end,     // a: stage index, b: cycles charged in it
     firmware,      // a: the report's stereosim_event_kind, b: pair, c: value
     cpu_sleep,     // the CPU waits for an interrupt
     cpu_wake,      // a: interrupt taken (-1 as 255: stop)
-    result,        // a: dsp::tracker_state after the pair, b: pair, c: 1 with a 3D point
+    result,        // a: tracker state index after the pair, b: pair, c: 1 with a 3D point
     // An injected fault took effect (tb/app/faults, docs/faults.md): a: its index
     // in the run's --fault list, b: faults::fault_type, c: the frame it hit
     // (sensor truth index, or sync period for bus / CPU faults). Inserted
