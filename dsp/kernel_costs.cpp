@@ -425,13 +425,10 @@ kernel_profile triangulate_profile() {
 }
 
 sdram_traffic sdram_traffic_of(const kernel_profile& kernel) {
+    const c64x::sdram_bytes b = c64x::sdram_bytes_of(kernel);
     sdram_traffic t;
-    for (int i = 0; i < kernel.traffic_count; ++i) {
-        const memory_traffic& stream = kernel.traffic[i];
-        if (stream.where != placement::sdram) continue;
-        t.bytes_read += stream.bytes_read;
-        t.bytes_written += stream.bytes_written;
-    }
+    t.bytes_read = b.read;
+    t.bytes_written = b.written;
     return t;
 }
 

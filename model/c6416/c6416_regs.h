@@ -33,6 +33,11 @@ constexpr uint32_t sdram_bytes = 0x01000000u;     // 16 MB [TR]
 constexpr bool in_emifa(uint32_t address) {
     return address >= emifa_ce0_base && address < emifa_ce0_base + 4 * emifa_ce_bytes;
 }
+// True for [address, address + bytes) inside the DSK's SDRAM.
+constexpr bool in_sdram(uint32_t address, uint32_t bytes = 1) {
+    return address >= sdram_base &&
+           uint64_t{address} + bytes <= uint64_t{sdram_base} + uint64_t{sdram_bytes};
+}
 // The CE space number (0..3) of an EMIFA address.
 constexpr int emifa_ce_of(uint32_t address) {
     return static_cast<int>((address - emifa_ce0_base) / emifa_ce_bytes);

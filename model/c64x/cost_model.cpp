@@ -106,6 +106,16 @@ bool kernel_profile::add_call(const kernel_profile& other, uint64_t times) {
     return fits;
 }
 
+sdram_bytes sdram_bytes_of(const kernel_profile& kernel) {
+    sdram_bytes b;
+    for (int i = 0; i < kernel.traffic_count; ++i) {
+        if (kernel.traffic[i].where != placement::sdram) continue;
+        b.read += kernel.traffic[i].bytes_read;
+        b.written += kernel.traffic[i].bytes_written;
+    }
+    return b;
+}
+
 section_cost cost_model::section(const loop_profile& loop) const {
     section_cost cost;
     cost.resource_ii = resource_ii(loop.ops);

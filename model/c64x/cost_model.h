@@ -140,6 +140,14 @@ struct kernel_profile {
     bool add_call(const kernel_profile& other, uint64_t times = 1);
 };
 
+// The bytes a kernel's SDRAM streams move: what its stalls wait for, and
+// what a platform with a bus model puts on EMIFA.
+struct sdram_bytes {
+    uint64_t read = 0;
+    uint64_t written = 0;
+};
+sdram_bytes sdram_bytes_of(const kernel_profile& kernel);
+
 // The per-loop-entry overhead fitted on the IMGLIB formulas (value and
 // method in cost_model.cpp, "FIT").
 constexpr uint32_t fitted_loop_overhead = 2;

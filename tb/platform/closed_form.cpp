@@ -30,14 +30,11 @@ readout_figures readout(const sensor::sensor_profile& p) {
 }
 
 frame_placement reported_placement(const std::vector<fw_event>& events, int cols, int rows) {
-    const auto in_sdram = [](uint32_t a) {
-        return a >= c6416::sdram_base && a - c6416::sdram_base < c6416::sdram_bytes;
-    };
     for (const fw_event& e : events) {
         if (e.event.kind != STEREOSIM_EV_PAIR_CAPTURED) continue;
         // Both at one address: the report named no frames (as rule 7 reads it).
         if (e.event.left == e.event.right) continue;
-        if (!in_sdram(e.event.left) || !in_sdram(e.event.right)) continue;
+        if (!c6416::in_sdram(e.event.left) || !c6416::in_sdram(e.event.right)) continue;
         return {e.event.left, e.event.right};
     }
     return reference_placement(cols, rows);

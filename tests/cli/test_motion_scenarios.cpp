@@ -44,6 +44,7 @@ TEST(MotionScenarios, SpinningBall) {
 TEST(MotionScenarios, FastThrow) {
     const json report = scenario_test::run("fast");
     expect_tracked_in_budget(report, "fast");
+    EXPECT_EQ(report["config"]["scenario"]["speed"], 2.0);
 }
 
 }  // namespace

@@ -51,11 +51,13 @@ void expect_tracked_within_bounds(const json& report, double max_depth_pct) {
 TEST(ObjectSizeScenarios, SmallBallTenPixelsWide) {
     const json report = scenario_test::run("small");
     expect_tracked_within_bounds(report, 1.0);
+    EXPECT_EQ(report["config"]["scenario"]["ball_radius_mm"], 16.5);
 }
 
 TEST(ObjectSizeScenarios, LargeBallHalfTheImageWide) {
     const json report = scenario_test::run("large");
     expect_tracked_within_bounds(report, 1.0);
+    EXPECT_EQ(report["config"]["scenario"]["ball_radius_mm"], 278.0);
 }
 
 }  // namespace

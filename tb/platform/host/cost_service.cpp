@@ -36,16 +36,13 @@ c64x::kernel_profile model_profile(const stereosim_kernel_profile& kernel) {
 
 uint64_t kernel_cycles(const c64x::cost_model& model, const stereosim_kernel_profile& kernel,
                        stereosim_sdram_traffic* traffic) {
+    const c64x::kernel_profile k = model_profile(kernel);
     if (traffic != nullptr) {
-        // What the SDRAM streams move; the cost model's stalls are theirs.
-        *traffic = stereosim_sdram_traffic{};
-        for (uint32_t i = 0; i < kernel.stream_count && i < STEREOSIM_PROFILE_MAX_STREAMS; ++i) {
-            if (kernel.streams[i].where != STEREOSIM_IN_SDRAM) continue;
-            traffic->bytes_read += kernel.streams[i].bytes_read;
-            traffic->bytes_written += kernel.streams[i].bytes_written;
-        }
+        const c64x::sdram_bytes b = c64x::sdram_bytes_of(k);
+        traffic->bytes_read = b.read;
+        traffic->bytes_written = b.written;
     }
-    return model.cycles(model_profile(kernel));
+    return model.cycles(k);
 }
 
 }  // namespace host
