@@ -2,6 +2,7 @@
 
 #include <cstring>
 
+#include "dsp/box_refit.h"
 #include "dsp/kernel_costs.h"
 #include "dsp/sobel.h"
 
@@ -62,38 +63,43 @@ int64_t disparity_q8_at_depth(const camera_rig& rig, int32_t depth_mm) {
            rig.principal_offset_q8();
 }
 
-// Where object(t-1) is looked for when the object's box at t-1 was `last`:
-// the box grown by its own size each side (3 x 3 boxes), clipped to the
-// frame. A box much smaller than the object (an 8-21 px box started on an
-// 80 px ball) sees its object's extent only in a region this wide; grown by
-// a quarter of its size, the box shrank on such a ball instead of growing.
-box size_rule_region(box last, int width, int height) {
-    const int grow_x = max_int(2, last.width), grow_y = max_int(2, last.height);
+// Where the differences are read when the object's box at t-1 was `last`:
+// the box grown by its own size and by `reach` (how far the object may have
+// moved since) each side, clipped to the frame. A box much smaller than the
+// object (an 8-21 px box started on an 80 px ball) sees its object's extent
+// only in a region this wide; grown by a quarter of its size, the box shrank
+// on such a ball instead of growing.
+box size_rule_region(box last, int reach, int width, int height) {
+    const int grow_x = max_int(2, last.width) + reach, grow_y = max_int(2, last.height) + reach;
     const int x0 = max_int(0, last.x - grow_x), y0 = max_int(0, last.y - grow_y);
     const int x1 = min_int(width, last.right() + grow_x);
     const int y1 = min_int(height, last.bottom() + grow_y);
     return box{x0, y0, max_int(0, x1 - x0), max_int(0, y1 - y0)};
 }
 
-// One axis of the box refit (see controller::impl::refit_box): the SAD box
-// (found_start, found_size) gets a size moved towards the mask's extent by at
-// most a step, and its centre moved by half the offset between the last box
-// and the mask (object(t-1) was seen where the last box was), at most a step;
-// then it is kept inside [0, limit). step = max(1, larger of the two sizes
-// / 8): with the box's size alone, a box started small on an object cut by
-// the image border needed ~20 frames to grow to the object.
-void refit_axis(int found_start, int found_size, int last_start, int last_size, int mask_start,
-                int mask_size, int min_size, int max_size, int limit, int* start, int* size) {
-    const int step = max_int(1, max_int(found_size, mask_size) / 8);
-    const int moved = max_int(found_size - step, min_int(found_size + step, mask_size));
-    const int new_size = min_int(limit, max_int(min_size, min_int(max_size, moved)));
-    // Centres in Q1 as 2 * start + size (twice the centre, plus one).
-    const int offset2 = (2 * last_start + last_size) - (2 * mask_start + mask_size);
-    const int shift2 = max_int(-2 * step, min_int(2 * step, offset2 / 2));
-    const int centre2 = 2 * found_start + found_size - shift2;
-    const int new_start = (centre2 - new_size) >> 1;  // floor, also below 0
-    *size = new_size;
-    *start = max_int(0, min_int(limit - new_size, new_start));
+box from_spans(span x, span y) {
+    return box{x.start, y.start, x.size, y.size};
+}
+span x_span(box b) {
+    return span{b.x, b.width};
+}
+span y_span(box b) {
+    return span{b.y, b.height};
+}
+
+box intersection(box a, box b) {
+    const int x0 = max_int(a.x, b.x), y0 = max_int(a.y, b.y);
+    const int x1 = min_int(a.right(), b.right()), y1 = min_int(a.bottom(), b.bottom());
+    if (x1 <= x0 || y1 <= y0) return box{};
+    return box{x0, y0, x1 - x0, y1 - y0};
+}
+
+bool near_size(int measured, int size, int tolerance) {
+    return measured >= size - tolerance && measured <= size + tolerance;
+}
+
+box shifted(box b, int dx, int dy) {
+    return box{b.x + dx, b.y + dy, b.width, b.height};
 }
 
 // The part of an object box SAD stereo matches: the box less one eighth of
@@ -103,8 +109,16 @@ void refit_axis(int found_start, int found_size, int last_start, int last_size, 
 // background at 5 m). The core holds 0.7 % background for a disc; its mean
 // surface is 0.11 r nearer than the whole visible surface's (-5.5 mm for the
 // 5 cm ball: -0.55 % at 1 m, -0.18 % at 3 m).
+// An eighth of a side; below 16 px that rounds down to 1 px, which leaves
+// the corners of a small disc's core on the background (a core of side c is
+// inside a disc of diameter w when c <= w / sqrt(2)): 2 px. The 10 px ball's
+// depth error was 1.02 % in one pair with 1 px, 0.37 % with 2 px.
+int core_trim(int side) {
+    return side < 16 ? 2 : side / 8;
+}
+
 box object_core(box object) {
-    const int trim_x = object.width / 8, trim_y = object.height / 8;
+    const int trim_x = core_trim(object.width), trim_y = core_trim(object.height);
     return box{object.x + trim_x, object.y + trim_y, object.width - 2 * trim_x,
                object.height - 2 * trim_y};
 }
@@ -195,7 +209,18 @@ struct controller::impl {
     bool detect(frame_output& out);
     bool track(frame_output& out);
     bool track_object(uint64_t* cycles, sdram_traffic* traffic);
-    box refit_box(box last, box found, uint64_t* cycles, sdram_traffic* traffic);
+    // What the two frame differences say around the last box (dsp/box_refit.h).
+    struct motion_extents {
+        bool found = false;  // both differences hold enough pixels and share a box
+        box before;          // Dif(t-2,t-1)'s extent (DETECT: object(t-1))
+        box after;           // Dif(t-1,t)'s extent around the last box
+        box previous;        // object(t-1): the two extents' common box
+        box both;            // after, and object(t) if it is apart: object(t-1) and object(t)
+    };
+    motion_extents measure_motion(box last, const box* detected, uint64_t* cycles,
+                                  sdram_traffic* traffic);
+    bool follow_object(const motion_extents& motion, box last, box* followed) const;
+    box pull_box(const motion_extents& motion, box last, box found) const;
     void stereo_sad(box object, frame_output& out);
     void stereo_edge(box object, frame_output& out);
     bool choose_disparity(frame_output& out) const;
@@ -431,13 +456,26 @@ bool controller::impl::detect(frame_output& out) {
     tracker.start(history(1), found.object_box);
     const gray_cplane pattern = tracker.pattern();
     const int pattern_w = pattern.width, pattern_h = pattern.height;
-    // The size came from object(t-1); update() only finds the position.
-    const track_status status = tracker.update(history(0));
-    scope.charge(
+    // object(t) where Dif(t-1,t) reaches past object(t-1), as in TRACK
+    // (track_object); the size came from object(t-1).
+    uint64_t cycles = 0;
+    sdram_traffic traffic;
+    const motion_extents motion = measure_motion(b, &b, &cycles, &traffic);
+    box followed;
+    const bool follows = motion.found && follow_object(motion, b, &followed);
+    const track_status status =
+        follows ? tracker.update_near(history(0), followed) : tracker.update(history(0));
+    cycles +=
         cycles_of(cost::pattern_copy_profile(pattern_w, pattern_h)) +
         cycles_of(cost::sad_search_profile(pattern_w, pattern_h, tracker.last_match().positions)) +
-        cycles_of(cost::pattern_copy_profile(tracker.pattern().width, tracker.pattern().height)));
-    out.detected = status == track_status::tracking;
+        cycles_of(cost::pattern_copy_profile(tracker.pattern().width, tracker.pattern().height));
+    if (follows) {
+        tracker.start(history(0), followed);
+        cycles += cycles_of(
+            cost::pattern_copy_profile(tracker.pattern().width, tracker.pattern().height));
+    }
+    scope.charge(cycles, traffic);
+    out.detected = follows || status == track_status::tracking;
     return out.detected;
 }
 
@@ -459,24 +497,39 @@ bool controller::impl::track(frame_output& out) {
     return tracking;
 }
 
+// The box follows the object's silhouette where the differences give it
+// (follow_object), the SAD search then centred there: the pattern of paper
+// eq. 5 follows the object's texture, which a spinning ball moves against
+// its outline, and a search around the last position misses an object that
+// moved further than the search radius. Where they do not (the object
+// stopped, or an extent its size cannot explain), the SAD box is kept,
+// refitted towards object(t-1) (pull_box). A silhouette that moved as the
+// object does keeps the track when the pattern no longer matches (a texture
+// that turned); SAD's own lost rule decides only without one.
 bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic) {
     const box last = tracker.position();
     const box pattern = tracker.pattern_box();
-    const track_status status = tracker.update(history(0));
+    const motion_extents motion = measure_motion(last, nullptr, cycles, traffic);
+    box followed;
+    const bool follows = motion.found && follow_object(motion, last, &followed);
+    const track_status status =
+        follows ? tracker.update_near(history(0), followed) : tracker.update(history(0));
     *cycles += cycles_of(
         cost::sad_search_profile(pattern.width, pattern.height, tracker.last_match().positions));
-    if (status != track_status::tracking) return false;
-    *cycles += cycles_of(
-        cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
+    if (status != track_status::tracking && !follows) return false;
+    if (status == track_status::tracking)
+        *cycles += cycles_of(
+            cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
 
-    uint64_t refit_cycles = 0;
     const box found = tracker.position();
-    sdram_traffic refit_traffic;
-    const box resized = refit_box(last, found, &refit_cycles, &refit_traffic);
-    *cycles += refit_cycles;
-    *traffic += refit_traffic;
-    if (resized.x != found.x || resized.y != found.y || resized.width != found.width ||
-        resized.height != found.height) {
+    box resized = found;
+    if (follows) {
+        resized = followed;
+    } else if (motion.found) {
+        resized = pull_box(motion, last, found);
+    }
+    if (status != track_status::tracking || resized.x != found.x || resized.y != found.y ||
+        resized.width != found.width || resized.height != found.height) {
         tracker.start(history(0), resized);
         *cycles += cycles_of(
             cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
@@ -495,25 +548,28 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic) {
 // motion it holds almost nothing at the object's top and bottom (the lens
 // there is v^2 / 2R high, 0.08 px for a 320 px ball at 5 px per frame), and
 // measured the box's height jumped by up to 53 px from pair to pair.
-// If both have enough set pixels (at least min_area, or an eighth of the
-// last box's area if that is less), the box found by SAD is refitted per
-// axis (refit_axis): its size follows the object's, and its centre is pulled
-// towards the object's. The pull is what keeps the box on the object:
-// re-taking the pattern at an integer position every frame makes the box
-// drift by the rounding of the object's motion (0.3 px per frame at 0.7
-// px/frame, measured 9 px after 30 frames without it; 0.8 px per frame on a
-// ball 160 px wide). Too few moving pixels (the object stopped): the SAD
-// box is kept.
-box controller::impl::refit_box(box last, box found, uint64_t* cycles, sdram_traffic* traffic) {
-    const box region = size_rule_region(last, width, height);
+// Both need enough set pixels: at least min_area, or an eighth of the last
+// box's area if that is less (fewer: the object stopped).
+// In DETECT object(t-1) is the detection's (`detected`) and the packed mask
+// already holds Dif(t-1,t): only that difference is read.
+controller::impl::motion_extents controller::impl::measure_motion(box last, const box* detected,
+                                                                  uint64_t* cycles,
+                                                                  sdram_traffic* traffic) {
+    const box region = size_rule_region(last, config.track.search_radius, width, height);
     const uint8_t threshold = config.detect.threshold;
     motion_blocks& earlier = detector.blocks();
-    earlier.begin(region.width, region.height);
+    if (!detected) earlier.begin(region.width, region.height);
     later_blocks.begin(region.width, region.height);
     uint8_t* earlier_row = refit_rows;
     uint8_t* later_row = refit_rows + region.width;
     for (int y = 0; y < region.height; ++y) {
         const int frame_y = region.y + y;
+        if (detected) {
+            for (int x = 0; x < region.width; ++x)
+                later_row[x] = packed_bit(motion_mask, width, region.x + x, frame_y) ? 1 : 0;
+            later_blocks.add_row(later_row, y);
+            continue;
+        }
         const uint8_t* f_tm1 = history(1).row(frame_y) + region.x;
         const uint8_t* f_t = history(0).row(frame_y) + region.x;
         for (int x = 0; x < region.width; ++x) {
@@ -524,29 +580,93 @@ box controller::impl::refit_box(box last, box found, uint64_t* cycles, sdram_tra
         earlier.add_row(earlier_row, y);
         later_blocks.add_row(later_row, y);
     }
-    const box seed{last.x - region.x, last.y - region.y, last.width, last.height};
-    const block_group before = earlier.extent(seed, 0);
-    const block_group after = later_blocks.extent(seed, 0);
-    *cycles = cycles_of(cost::three_frame_difference_packed_profile(region.width, region.height,
-                                                                    config.frame_memory)) +
-              2 * cycles_of(cost::motion_blocks_profile(region.width, region.height));
-    *traffic = cost::three_frame_difference_packed_traffic(region.width, region.height,
-                                                           config.frame_memory);
+    const box seed = shifted(last, -region.x, -region.y);
+    const int labellings = detected ? 2 : 3;  // the extents below
+    *cycles += cycles_of(cost::three_frame_difference_packed_profile(region.width, region.height,
+                                                                     config.frame_memory)) +
+               labellings * cycles_of(cost::motion_blocks_profile(region.width, region.height));
+    *traffic += cost::three_frame_difference_packed_traffic(region.width, region.height,
+                                                            config.frame_memory);
+    motion_extents m;
     const int enough = min_int(config.detect.min_area, last.width * last.height / 8);
-    if (!before.found || !after.found || before.pixels < enough || after.pixels < enough)
-        return found;
-    const int x0 = max_int(before.bbox.x, after.bbox.x), y0 = max_int(before.bbox.y, after.bbox.y);
-    const int x1 = min_int(before.bbox.right(), after.bbox.right());
-    const int y1 = min_int(before.bbox.bottom(), after.bbox.bottom());
-    if (x1 <= x0 || y1 <= y0) return found;  // the motion reversed: no common box
+    const block_group after = later_blocks.extent(seed, 0);
+    if (!after.found || after.pixels < enough) return m;
+    if (detected) {
+        m.before = m.previous = shifted(*detected, -region.x, -region.y);
+    } else {
+        const block_group before = earlier.extent(seed, 0);
+        if (!before.found || before.pixels < enough) return m;
+        m.before = before.bbox;
+        m.previous = intersection(before.bbox, after.bbox);
+        if (m.previous.empty()) return m;  // the motion reversed: no common box
+    }
+    m.found = true;
+    m.after = m.both = after.bbox;
+    // An object that moved further than its size leaves object(t) apart
+    // from object(t-1) in Dif(t-1,t): the largest other group of the
+    // object's size (at least half, at most twice) is it.
+    const block_group ahead = later_blocks.extent_apart(after.bbox, enough);
+    if (ahead.found && 2 * ahead.bbox.width >= m.previous.width &&
+        ahead.bbox.width <= 2 * m.previous.width && 2 * ahead.bbox.height >= m.previous.height &&
+        ahead.bbox.height <= 2 * m.previous.height)
+        m.both = bounding_union(m.both, ahead.bbox);
+    m.before = shifted(m.before, region.x, region.y);
+    m.after = shifted(m.after, region.x, region.y);
+    m.previous = shifted(m.previous, region.x, region.y);
+    m.both = shifted(m.both, region.x, region.y);
+    return m;
+}
 
+// object(t) from the extents, per axis: object(t-1) (previous_axis) and
+// where Dif(t-1,t) reaches past it (follow_axis), as wide as object(t-1)
+// (the last box's size where the motion reversed). Not given when object(t-1)'s extent is not the size of the last
+// box (within an eighth, at least 2 px: else the difference did not
+// outline the object, which nearly stopped and only its texture changed,
+// or it held more than the object), when Dif(t-1,t) reaches further than
+// the object could have moved (twice the search radius: a change of the
+// light, another mover joined), or when object(t) touches the image border
+// (the SAD's rule then says whether it is leaving).
+bool controller::impl::follow_object(const motion_extents& motion, box last, box* followed) const {
     const track_params& p = config.track;
-    box resized;  // the object box: any size up to the frame's
-    refit_axis(found.x, found.width, last.x, last.width, region.x + x0, x1 - x0, p.min_size, width,
-               width, &resized.x, &resized.width);
-    refit_axis(found.y, found.height, last.y, last.height, region.y + y0, y1 - y0, p.min_size,
-               height, height, &resized.y, &resized.height);
-    return resized;
+    const span previous_x = previous_axis(x_span(motion.before), x_span(motion.after), last.width);
+    const span previous_y = previous_axis(y_span(motion.before), y_span(motion.after), last.height);
+    const int tolerance_x = max_int(2, last.width / 8), tolerance_y = max_int(2, last.height / 8);
+    if (!near_size(previous_x.size, last.width, tolerance_x) ||
+        !near_size(previous_y.size, last.height, tolerance_y))
+        return false;
+    // object(t-1)'s measured size (within the tolerance above of the last):
+    // its edges and object(t)'s leading edge are found alike, so their
+    // rounding cancels in the centre.
+    const int w = near_size(previous_x.size, last.width, 1)
+                      ? last.width
+                      : max_int(p.min_size, min_int(width, previous_x.size));
+    const int h = near_size(previous_y.size, last.height, 1)
+                      ? last.height
+                      : max_int(p.min_size, min_int(height, previous_y.size));
+    const int reach = 2 * p.search_radius;
+    if (motion.both.width - w > reach || motion.both.height - h > reach) return false;
+    const box b = from_spans(follow_axis(previous_x, x_span(motion.both), w),
+                             follow_axis(previous_y, y_span(motion.both), h));
+    const int border = config.detect.close_passes + 1;
+    if (b.x <= border || b.y <= border || b.right() >= width - border ||
+        b.bottom() >= height - border)
+        return false;
+    *followed = b;
+    return true;
+}
+
+// The SAD box refitted towards object(t-1) per axis (pull_axis): its size
+// follows the object's, and its centre is pulled towards the object's. The
+// pull keeps the box on the object: re-taking the pattern at an integer
+// position every frame makes the box drift by the rounding of the object's
+// motion (0.3 px per frame at 0.7 px/frame, measured 9 px after 30 frames
+// without it; 0.8 px per frame on a ball 160 px wide).
+box controller::impl::pull_box(const motion_extents& motion, box last, box found) const {
+    const track_params& p = config.track;
+    return from_spans(
+        pull_axis(x_span(found), x_span(last), x_span(motion.previous), p.min_size, width, width),
+        pull_axis(y_span(found), y_span(last), y_span(motion.previous), p.min_size, height,
+                  height));
 }
 
 // Stage stereo_sad: the object's core (the right pattern) along the same rows

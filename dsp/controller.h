@@ -22,17 +22,19 @@
 //     gives object(t-1), the object in the MIDDLE frame (paper eq. 4). It is
 //     turned into the current frame's pattern by starting the SAD tracker on
 //     the middle frame at the detected box and letting it find that pattern
-//     in the newest frame (a SAD search of track.search_radius around it).
+//     in the newest frame (a SAD search of track.search_radius around it,
+//     centred where Dif(t-1,t) reaches past object(t-1), as in TRACK).
 //     Both are charged to stage detect. Success -> TRACK on this very pair.
 //     A zone touching the image border (within close_passes + 1 px) is not
 //     started: an object entering the view is taken once wholly inside.
-//   TRACK: sad_tracker.update on the newest right frame (position only),
-//     then the box's size and centre are refitted to object(t-1): the
-//     three-frame mask around the LAST box (where the object was at t-1),
-//     not around the new one as sad_tracker's own size rule would look;
-//     size and centre move by at most max(1, larger of box and mask / 8) px
-//     per frame; the centre pull stops the drift of re-taking the pattern at
-//     integer positions (stage track). Lost -> LOST.
+//   TRACK: the two differences around the LAST box (where the object was
+//     at t-1) give object(t-1) and, where Dif(t-1,t) reaches past it,
+//     object(t) (dsp/box_refit.h); the SAD search (paper eq. 5) on the
+//     newest right frame is centred there and the box is object(t)'s. When
+//     the differences give no object (it nearly stopped, a light change),
+//     the SAD box is kept, its size and centre pulled towards object(t-1)
+//     by at most max(1, larger of box and mask / 8) px per frame (stage
+//     track). Lost (SAD's rule, without a silhouette) -> LOST.
 //   LOST: nothing but preprocess; after lost_frames_to_detect pairs in LOST
 //     the state becomes DETECT (so the three-frame history no longer holds
 //     the frames the track was lost in).

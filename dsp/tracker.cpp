@@ -105,11 +105,24 @@ box sad_tracker::refit_size(gray_cplane motion_mask, box matched) const {
 }
 
 track_status sad_tracker::update(gray_cplane frame, gray_cplane motion_mask) {
+    return search(frame, motion_mask, m_pattern_box);
+}
+
+track_status sad_tracker::update_near(gray_cplane frame, box expected) {
+    // The pattern keeps its place in the object box.
+    box centre = m_pattern_box;
+    centre.x += (expected.center_x2() - m_position.center_x2()) / 2;
+    centre.y += (expected.center_y2() - m_position.center_y2()) / 2;
+    return search(frame, gray_cplane{}, centre);
+}
+
+// `centre`: the pattern-sized box the window is centred on.
+track_status sad_tracker::search(gray_cplane frame, gray_cplane motion_mask, box centre) {
     if (m_status == track_status::lost) return m_status;
 
     const int r = m_params.search_radius;
     const box& p = m_pattern_box;
-    const box wanted{p.x - r, p.y - r, 2 * r + 1, 2 * r + 1};
+    const box wanted{centre.x - r, centre.y - r, 2 * r + 1, 2 * r + 1};
     m_window = clip_positions(wanted, frame.width, frame.height, p.width, p.height);
     m_last = sad_search(frame, pattern(), m_window);
     if (!m_last.valid) {

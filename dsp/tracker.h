@@ -85,6 +85,13 @@ class sad_tracker {
     // Once lost, update() returns lost until the next start().
     track_status update(gray_cplane frame, gray_cplane motion_mask = gray_cplane{});
 
+    // update() without a mask, the search window centred where the pattern
+    // would be if the object box were at `expected` (the object's position
+    // measured otherwise, e.g. from its motion) instead of where it was.
+    // The lost rule and the box's move are update()'s, relative to the
+    // pattern's last position.
+    track_status update_near(gray_cplane frame, box expected);
+
     track_status status() const { return m_status; }
     box position() const { return m_position; }          // the object box
     box pattern_box() const { return m_pattern_box; }    // where pattern() was taken
@@ -94,6 +101,7 @@ class sad_tracker {
     const track_params& params() const { return m_params; }
 
   private:
+    track_status search(gray_cplane frame, gray_cplane motion_mask, box centre);
     box pattern_box_of(box object) const;
     void take_pattern(gray_cplane frame);
     box refit_size(gray_cplane motion_mask, box matched) const;

@@ -5,8 +5,10 @@
 //
 // Bounds (the issue's): detected within 3 frames of its first motion, box
 // centre within 5 px of the truth on average over the tracked frames, depth
-// within 1 % in every tracked frame. Measured (depth error, max): 0.78,
-// 0.34, 0.35, 0.39, 0.42, 0.72, 0.88 % for 10 ... 320 px.
+// within 1 % in every tracked frame. Measured (depth error, max): 0.37,
+// 0.59, 0.46, 0.50, 0.60, 0.71, 0.61 % for 10 ... 320 px with the box on
+// the silhouette (dsp/box_refit.h); 0.78, 0.34, 0.35, 0.39, 0.42, 0.72,
+// 0.88 % with the box of before.
 //
 // Above 96 px the depth is the mean of the object's tiles
 // (dsp/object_depth.h). With the core's single match instead, the errors

@@ -287,4 +287,28 @@ TEST(sad_tracker, large_box_moves_with_its_centred_pattern) {
     EXPECT_EQ(tracker.pattern_box().y, 37 + 8);
 }
 
+TEST(sad_tracker, update_near_finds_an_object_beyond_the_radius_where_it_is_expected) {
+    std::mt19937 rng(5);
+    const gray_image background = random_texture(200, 150, 0, 255, rng);
+    const gray_image object = random_texture(24, 20, 0, 255, rng);
+    dsp::sad_tracker tracker;
+    tracker.init(params_with_radius(8));
+    tracker.start(compose(background, object, 40, 60).view(), dsp::box{40, 60, 24, 20});
+    // 30 px to the right: three radii away from the window around (40, 60).
+    const gray_image moved = compose(background, object, 70, 61);
+    dsp::sad_tracker around_last;
+    around_last.init(params_with_radius(8));
+    around_last.start(compose(background, object, 40, 60).view(), dsp::box{40, 60, 24, 20});
+    around_last.update(moved.view());
+    EXPECT_FALSE(around_last.position().x == 70 && around_last.position().y == 61);
+    // Expected 3 px off the truth: found exactly, the window centred there.
+    ASSERT_EQ(tracker.update_near(moved.view(), dsp::box{67, 63, 24, 20}),
+              dsp::track_status::tracking);
+    EXPECT_EQ(tracker.position().x, 70);
+    EXPECT_EQ(tracker.position().y, 61);
+    EXPECT_EQ(tracker.last_match().sad, 0u);
+    EXPECT_EQ(tracker.last_search_window().x, 67 - 8);
+    EXPECT_EQ(tracker.last_search_window().y, 63 - 8);
+}
+
 }  // namespace

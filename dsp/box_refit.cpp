@@ -1,0 +1,55 @@
+#include "dsp/box_refit.h"
+
+namespace dsp {
+namespace {
+
+int max_int(int a, int b) {
+    return a > b ? a : b;
+}
+int min_int(int a, int b) {
+    return a < b ? a : b;
+}
+
+}  // namespace
+
+span previous_axis(span before, span after, int size) {
+    const bool same_start = before.start - after.start <= 1 && after.start - before.start <= 1;
+    const bool same_end = before.end() - after.end() <= 1 && after.end() - before.end() <= 1;
+    if (same_start != same_end)
+        return same_end ? span{after.end() - size, size} : span{after.start, size};
+    const int start = max_int(before.start, after.start);
+    return span{start, max_int(0, min_int(before.end(), after.end()) - start)};
+}
+
+span follow_axis(span previous, span both, int size) {
+    const int past_end = both.end() - previous.end();
+    const int past_start = previous.start - both.start;
+    const int motion = max_int(0, both.size - size);
+    // Centres in Q1 as start + end (twice the centre, pixel edges).
+    int centre2 = both.start + both.end();
+    if (past_end > past_start) {
+        centre2 += motion;  // moved towards the end: object(t) ends where both does
+    } else if (past_start > past_end) {
+        centre2 -= motion;
+    }
+    return span{(centre2 - size) >> 1, size};  // floor, also below 0
+}
+
+int step_size(int size, int target, int min_size, int max_size, int limit) {
+    const int step = max_int(1, max_int(size, target) / 8);
+    const int moved = max_int(size - step, min_int(size + step, target));
+    return min_int(limit, max_int(min_size, min_int(max_size, moved)));
+}
+
+span pull_axis(span found, span last, span mask, int min_size, int max_size, int limit) {
+    const int step = max_int(1, max_int(found.size, mask.size) / 8);
+    const int new_size = step_size(found.size, mask.size, min_size, max_size, limit);
+    // Centres in Q1 as 2 * start + size (twice the centre, plus one).
+    const int offset2 = (2 * last.start + last.size) - (2 * mask.start + mask.size);
+    const int shift2 = max_int(-2 * step, min_int(2 * step, offset2 / 2));
+    const int centre2 = 2 * found.start + found.size - shift2;
+    const int new_start = (centre2 - new_size) >> 1;  // floor, also below 0
+    return span{max_int(0, min_int(limit - new_size, new_start)), new_size};
+}
+
+}  // namespace dsp

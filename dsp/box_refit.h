@@ -1,0 +1,57 @@
+// The object box's refit in TRACK, one image axis at a time, from the two
+// frame differences around the object (paper eq. 2-4 applied to extents):
+// Dif(t-2,t-1) spans object(t-2) and object(t-1), Dif(t-1,t) spans
+// object(t-1) and object(t). Their common part is object(t-1)
+// (`previous`); Dif(t-1,t)'s extent (`both`) reaches past it on the side
+// the object moved to, by the motion, and that far edge is object(t)'s
+// leading edge, measured in the current frame.
+//
+// follow_axis places object(t) there: the SAD pattern of paper eq. 5 finds
+// where the object's texture went, which on a spinning ball is not where the
+// ball went (measured 6-16 px off on a 61-99 px ball at 5 rev/s), and the
+// silhouette is not one frame late as object(t-1) is.
+//
+// pull_axis is the refit used when the differences do not give object(t)
+// (too little motion, or an extent the object's size cannot explain): the
+// SAD box's size moves towards object(t-1)'s and its centre is pulled
+// towards it, a bounded step per frame.
+#pragma once
+
+namespace dsp {
+
+// One axis of a box: pixels [start, start + size).
+struct span {
+    int start = 0;
+    int size = 0;
+    int end() const { return start + size; }
+};
+
+// object(t-1) on one axis from the extents of Dif(t-2,t-1) (`before`) and
+// Dif(t-1,t) (`after`): their common part, or, when they share one edge
+// only, `size` from that edge. A shared edge is the motion reversing within
+// the three frames (the bounce of a thrown ball: object(t-2) and object(t)
+// both above object(t-1)); the common part then also holds the nearer of
+// object(t-2) and object(t), and only the shared edge is object(t-1)'s.
+// Edges within 1 px count as shared.
+span previous_axis(span before, span after, int size);
+
+// object(t) on one axis, `size` wide, from object(t-1)'s extent `previous`
+// and Dif(t-1,t)'s extent `both`. The object moved towards the side where
+// `both` reaches further past `previous`; by |both| - size (the motion along
+// the axis, 0 if `both` is narrower than the object). With no side further,
+// object(t) is centred in `both`.
+span follow_axis(span previous, span both, int size);
+
+// The SAD box `found` gets a size moved towards `mask`'s (object(t-1)) by at
+// most a step, and its centre moved by half the offset between the last box
+// and the mask (object(t-1) was seen where the last box was), at most a
+// step; then it is kept inside [0, limit). step = max(1, larger of the two
+// sizes / 8): with the box's size alone, a box started small on an object
+// cut by the image border needed ~20 frames to grow to the object.
+span pull_axis(span found, span last, span mask, int min_size, int max_size, int limit);
+
+// A size moved towards `target` by at most max(1, larger of the two / 8),
+// within [min_size, max_size] and at most `limit`.
+int step_size(int size, int target, int min_size, int max_size, int limit);
+
+}  // namespace dsp
