@@ -26,13 +26,17 @@ inline nlohmann::json run(const std::string& scenario) {
 }
 
 // Pairs processed from the detection frame on; each must say TRACK (checked).
+// The errors are of the pairs after the first `unbounded` (the firmware's
+// first boxes start from the detection's object(t-1)).
 struct tracking {
-    int after = 0;   // pairs from the detection on
-    int scored = 0;  // of them, with a box and a 3D point scored
+    int after = 0;    // pairs from the detection on
+    int scored = 0;   // of them, with a box and a 3D point scored
+    int bounded = 0;  // of those, after the first `unbounded`: the errors below
     double box_mean_px = 0.0, box_max_px = 0.0, depth_max_pct = 0.0;
 };
 
-inline tracking tracking_after_detection(const nlohmann::json& report, int detected) {
+inline tracking tracking_after_detection(const nlohmann::json& report, int detected,
+                                         int unbounded = 0) {
     tracking t;
     double box_sum = 0.0;
     for (const nlohmann::json& f : report["frames"]) {
@@ -42,12 +46,13 @@ inline tracking tracking_after_detection(const nlohmann::json& report, int detec
         EXPECT_EQ(f["tracker_state"], "TRACK") << f["frame"];
         const nlohmann::json& e = f["errors"];
         if (e["box_centre_px"].is_null() || e["depth_pct"].is_null()) continue;
-        ++t.scored;
+        if (++t.scored <= unbounded) continue;
+        ++t.bounded;
         box_sum += e["box_centre_px"].get<double>();
         t.box_max_px = std::max(t.box_max_px, e["box_centre_px"].get<double>());
         t.depth_max_pct = std::max(t.depth_max_pct, std::fabs(e["depth_pct"].get<double>()));
     }
-    t.box_mean_px = t.scored > 0 ? box_sum / t.scored : 0.0;
+    t.box_mean_px = t.bounded > 0 ? box_sum / t.bounded : 0.0;
     return t;
 }
 

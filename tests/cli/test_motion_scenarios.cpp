@@ -1,12 +1,12 @@
 // `--scenario spinning` and `--scenario fast` co-simulated: the scenes on
-// which the reference firmware's box drifts (docs/firmware.md, "Tracking").
-// What holds today and is checked: the ball is detected within 3 frames of
-// the first motion and the tracker reports TRACK for every pair after, in
-// budget. The box and depth errors are printed, not bounded: measured on
-// 30 periods, spinning: box centre error mean 3.75 px, max 15.9 px, |depth|
-// max 1.37 %; fast: mean 15.7 px, max 90.0 px (the box leaves the ball
-// after the bounce and finds it again). A firmware that keeps its box on the
-// object tightens these into bounds.
+// which the reference firmware's box drifted before it followed the
+// silhouette (docs/firmware.md, "Fast and spinning objects"). Checked: the
+// ball is detected within 3 frames of the first motion, the tracker reports
+// TRACK with a box and a 3D point for every pair after, in budget; from the
+// third tracked pair on the box centre is within 3 px of the truth on
+// average and 6 px in every pair, the depth within 1 %. Before, on 30
+// periods: spinning mean 3.75 px, max 15.9 px, |depth| max 1.37 %; fast
+// mean 15.7 px, max 90.0 px (the box left the ball after the bounce).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -25,9 +25,13 @@ void expect_tracked_in_budget(const json& report, const char* scenario) {
     ASSERT_FALSE(accuracy["detection_frame"].is_null()) << "never detected";
     const int detected = accuracy["detection_frame"].get<int>();
     EXPECT_LE(accuracy["detect_latency_frames"].get<int>(), 3);
-    const scenario_test::tracking t = scenario_test::tracking_after_detection(report, detected);
+    const scenario_test::tracking t =
+        scenario_test::tracking_after_detection(report, detected, /*unbounded=*/2);
     ASSERT_GE(t.after, 20);
     EXPECT_EQ(t.scored, t.after) << "a pair without a box or a 3D point";
+    EXPECT_LE(t.box_mean_px, 3.0);
+    EXPECT_LE(t.box_max_px, 6.0);
+    EXPECT_LE(t.depth_max_pct, 1.0);
     std::printf(
         "%s: %d pairs after the detection, box centre error mean %.2f px max %.2f px, "
         "|depth| max %.2f %%, processing max %.3f ms\n",

@@ -5,12 +5,14 @@
 // within 3 frames of the first motion, tracked with a 3D point in every pair
 // from then on, box centre within 5 px on average, depth within 1 % in every
 // pair, and within the 24.5 ms budget, every stage included. 30 periods, as
-// tests/dsp/test_object_size.cpp. Measured: small: box error mean 1.17 px,
-// |depth| max 0.84 %, largest pair 7.5 ms; large: 2.53 px, 0.91 % (the
-// large ball's depth is its tiles' mean, dsp/object_depth.h: per pair
-// -0.55 % to +0.91 %; the core's single match gave 0.44 % here but 1.30 %
-// on the host runs), 21.5 ms (track 5.9 ms, stereo_sad 9.1 ms: the tiles
-// add 4.9 ms).
+// tests/dsp/test_object_size.cpp. Measured with the box on the silhouette
+// (dsp/box_refit.h): small: box error mean 1.00 px, |depth| max 0.74 %,
+// largest pair 7.6 ms; large: 1.12 px, 0.94 % (the large ball's depth is
+// its tiles' mean, dsp/object_depth.h), 22.1 ms (track 6.0 ms, stereo_sad
+// 9.1 ms: the tiles add 4.9 ms). With the box of before: small 1.17 px,
+// 0.84 %, 7.5 ms; large 2.53 px, 0.91 % (per pair -0.55 % to +0.91 %; the
+// core's single match gave 0.44 % here but 1.30 % on the host runs),
+// 21.5 ms.
 #include <gtest/gtest.h>
 
 #include <cstdio>

@@ -97,6 +97,10 @@ std::string write_composite_replay(const composite_spec& spec, const std::string
         scene::background_desc::procedural_plane(scene::procedural_texture_params{}, 5.0);
     scene::ball_desc ball;
     ball.radius_m = spec.radius_m;
+    ball.spin_rad_s = spec.spin_rps * 2.0 * M_PI;
+    ball.spin_axis = spec.spin_axis == scene_axis::x   ? scene::vec3{1.0, 0.0, 0.0}
+                     : spec.spin_axis == scene_axis::y ? scene::vec3{0.0, 1.0, 0.0}
+                                                       : scene::vec3{0.0, 0.0, 1.0};
     const double start_s = scene::motion_start_s(spec.still_frames, s.frame_period_s);
     ball.path = spec.pass ? scene::pass_path(spec.depth_m, spec.speed, start_s)
                           : scene::line_path(spec.depth_m, spec.speed, start_s);

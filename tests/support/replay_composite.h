@@ -26,6 +26,8 @@ struct pair_calibration {
     double disparity_offset_px = 0.0;
 };
 
+enum class scene_axis { x, y, z };
+
 struct composite_spec {
     std::string left_png, right_png;  // the real pair (left view, right view)
     pair_calibration calibration;
@@ -36,8 +38,10 @@ struct composite_spec {
     int still_frames = 3;  // frames the ball rests before it moves
     double depth_m = 1.3;  // the ball's line at this depth (in front of the scene)
     double radius_m = 0.05;
-    double speed = 1.0;  // line path time scale (scene::line_path)
-    bool pass = false;   // scene::pass_path (stays in view at any focal length)
+    double speed = 1.0;                    // line path time scale (scene::line_path)
+    bool pass = false;                     // scene::pass_path (stays in view at any focal length)
+    double spin_rps = 0.0;                 // the ball's spin, revolutions per second ...
+    scene_axis spin_axis = scene_axis::y;  // ... about this axis
 };
 
 // Writes DIR/left/frame_NNNN.png, DIR/right/..., DIR/truth.csv and
