@@ -619,13 +619,12 @@ controller::impl::motion_extents controller::impl::measure_motion(box last, cons
 
 // object(t) from the extents, per axis: object(t-1) (previous_axis) and
 // where Dif(t-1,t) reaches past it (follow_axis), as wide as object(t-1)
-// (the last box's size where the motion reversed). Not given when object(t-1)'s extent is not the size of the last
-// box (within an eighth, at least 2 px: else the difference did not
-// outline the object, which nearly stopped and only its texture changed,
-// or it held more than the object), when Dif(t-1,t) reaches further than
-// the object could have moved (twice the search radius: a change of the
-// light, another mover joined), or when object(t) touches the image border
-// (the SAD's rule then says whether it is leaving).
+// (the last box's size where the motion reversed). Not given when object(t-1)'s extent is not the
+// size of the last box (within an eighth, at least 2 px: else the difference did not outline the
+// object, which nearly stopped and only its texture changed, or it held more than the object), when
+// Dif(t-1,t) reaches further than the object could have moved (twice the search radius: a change of
+// the light, another mover joined), or when object(t) touches the image border (the SAD's rule then
+// says whether it is leaving).
 bool controller::impl::follow_object(const motion_extents& motion, box last, box* followed) const {
     const track_params& p = config.track;
     const span previous_x = previous_axis(x_span(motion.before), x_span(motion.after), last.width);
