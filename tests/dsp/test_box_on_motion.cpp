@@ -23,9 +23,6 @@
 // as they stand.
 #include <gtest/gtest.h>
 
-#include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -38,6 +35,7 @@
 #include "tb/platform/scoring/error_metrics.h"
 #include "tests/support/data_path.h"
 #include "tests/support/host/stereo_runner.h"
+#include "tests/support/photo_texture.h"
 
 namespace {
 
@@ -78,18 +76,7 @@ double radius_for_width(double diameter_px, double depth_m, double focal_px) {
 std::shared_ptr<const scene::texture_image> photograph(backdrop which) {
     const char* file = which == backdrop::photograph ? "middlebury_2001_2003/cones/im2.png"
                                                      : "kodak_demosaic_gt/kodim23.png";
-    const cv::Mat bgr = cv::imread(test_support::data_path(file), cv::IMREAD_COLOR);
-    if (bgr.empty()) return nullptr;
-    auto tex = std::make_shared<scene::texture_image>();
-    tex->width = bgr.cols;
-    tex->height = bgr.rows;
-    for (int y = 0; y < bgr.rows; ++y) {
-        for (int x = 0; x < bgr.cols; ++x) {
-            const cv::Vec3b p = bgr.at<cv::Vec3b>(y, x);
-            tex->pixels.push_back(dsp::rgb8{p[2], p[1], p[0]});
-        }
-    }
-    return tex;
+    return testsupport::load_photo_texture(test_support::data_path(file));
 }
 
 scene::scenario scenario_of(const motion_case& c) {

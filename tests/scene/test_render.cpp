@@ -14,6 +14,7 @@
 
 #include "model/scene/sequence.h"
 #include "tests/support/data_path.h"
+#include "tests/support/photo_texture.h"
 
 namespace {
 
@@ -148,18 +149,9 @@ TEST(Render, BackgroundParallaxIsFocalTimesBaselineOverDepth) {
 TEST(Render, RealImageOnThePlaneHasTheSameParallax) {
     // Middlebury tsukuba im3 (384 x 288) mapped on the plane, fitted to both
     // views.
-    const cv::Mat bgr = cv::imread(test_support::data_path("middlebury_2001_2003/tsukuba/im3.png"),
-                                   cv::IMREAD_COLOR);
-    ASSERT_FALSE(bgr.empty());
-    auto tex = std::make_shared<scene::texture_image>();
-    tex->width = bgr.cols;
-    tex->height = bgr.rows;
-    for (int y = 0; y < bgr.rows; ++y) {
-        for (int x = 0; x < bgr.cols; ++x) {
-            const cv::Vec3b p = bgr.at<cv::Vec3b>(y, x);
-            tex->pixels.push_back(dsp::rgb8{p[2], p[1], p[0]});
-        }
-    }
+    const std::shared_ptr<const scene::texture_image> tex = testsupport::load_photo_texture(
+        test_support::data_path("middlebury_2001_2003/tsukuba/im3.png"));
+    ASSERT_NE(tex, nullptr);
     const scene::stereo_rig rig;
     const double depth = rig.focal_px() * rig.baseline_m / 16.0;  // 16 px parallax
     const scene::background_desc bg = scene::background_desc::image_plane(tex, rig, depth);
@@ -182,7 +174,8 @@ TEST(Render, RealImageOnThePlaneHasTheSameParallax) {
     EXPECT_GT(at15.max_diff, 10);
     // The image content is really there: the centre of the right view shows
     // the centre of the picture (mean colour within a few levels).
-    const cv::Scalar tex_mean = cv::mean(bgr);
+    const cv::Scalar tex_mean = cv::mean(cv::imread(
+        test_support::data_path("middlebury_2001_2003/tsukuba/im3.png"), cv::IMREAD_COLOR));
     cv::Mat rgb(right.height, right.width, CV_8UC3, right.pixels.data());
     const cv::Scalar view_mean = cv::mean(rgb);
     std::printf(
