@@ -215,7 +215,7 @@ struct controller::impl {
         box before;          // Dif(t-2,t-1)'s extent (DETECT: object(t-1))
         box after;           // Dif(t-1,t)'s extent around the last box
         box previous;        // object(t-1): the two extents' common box
-        box both;            // after, and object(t) if it is apart: object(t-1) and object(t)
+        box both;            // Dif(t-1,t)'s extent: object(t-1) and object(t)
     };
     motion_extents measure_motion(box last, const box* detected, uint64_t* cycles,
                                   sdram_traffic* traffic);
@@ -581,7 +581,7 @@ controller::impl::motion_extents controller::impl::measure_motion(box last, cons
         later_blocks.add_row(later_row, y);
     }
     const box seed = shifted(last, -region.x, -region.y);
-    const int labellings = detected ? 2 : 3;  // the extents below
+    const int labellings = detected ? 1 : 2;  // the extents below
     *cycles += cycles_of(cost::three_frame_difference_packed_profile(region.width, region.height,
                                                                      config.frame_memory)) +
                labellings * cycles_of(cost::motion_blocks_profile(region.width, region.height));
@@ -602,14 +602,6 @@ controller::impl::motion_extents controller::impl::measure_motion(box last, cons
     }
     m.found = true;
     m.after = m.both = after.bbox;
-    // An object that moved further than its size leaves object(t) apart
-    // from object(t-1) in Dif(t-1,t): the largest other group of the
-    // object's size (at least half, at most twice) is it.
-    const block_group ahead = later_blocks.extent_apart(after.bbox, enough);
-    if (ahead.found && 2 * ahead.bbox.width >= m.previous.width &&
-        ahead.bbox.width <= 2 * m.previous.width && 2 * ahead.bbox.height >= m.previous.height &&
-        ahead.bbox.height <= 2 * m.previous.height)
-        m.both = bounding_union(m.both, ahead.bbox);
     m.before = shifted(m.before, region.x, region.y);
     m.after = shifted(m.after, region.x, region.y);
     m.previous = shifted(m.previous, region.x, region.y);

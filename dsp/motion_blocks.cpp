@@ -163,15 +163,6 @@ block_group joined(const block_group& a, const block_group& b) {
 }  // namespace
 
 block_group motion_blocks::extent(box seed, int min_pixels) {
-    return chosen_extent(seed, min_pixels, box{});
-}
-
-block_group motion_blocks::extent_apart(box apart, int min_pixels) {
-    return chosen_extent(box{}, min_pixels, apart);
-}
-
-// extent() with no group taken that is one object with `apart` (if given).
-block_group motion_blocks::chosen_extent(box seed, int min_pixels, box apart) {
     component_labeller labeller;
     labeller.begin(m_blocks_x, m_labels, m_parent, m_stats, max_groups);
     for (int by = 0; by < m_blocks_y; ++by) {
@@ -183,8 +174,7 @@ block_group motion_blocks::chosen_extent(box seed, int min_pixels, box apart) {
     int best = -1;
     for (int i = 0; i < count; ++i) {
         groups[i] = group_in(m_stats[i].bbox);
-        block_group& g = groups[i];
-        if (g.found && !apart.empty() && one_object(g.bbox, apart)) g.found = false;
+        const block_group& g = groups[i];
         if (!g.found || (best >= 0 && g.pixels <= groups[best].pixels)) continue;
         if (seed.empty() ? g.pixels >= min_pixels : one_object(g.bbox, seed)) best = i;
     }

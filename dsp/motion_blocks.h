@@ -62,11 +62,6 @@ class motion_blocks {
     // The group overlapping `seed` (empty seed: the largest group, if it has
     // at least min_pixels set pixels); found = false when there is none.
     block_group extent(box seed, int min_pixels);
-    // The largest group of at least min_pixels that is not one object with
-    // `apart`, joined as extent() joins (none that is one object with
-    // `apart`): a small object that moved further than its size, apart from
-    // where it was.
-    block_group extent_apart(box apart, int min_pixels);
 
     int blocks_x() const { return m_blocks_x; }
     int blocks_y() const { return m_blocks_y; }
@@ -76,7 +71,6 @@ class motion_blocks {
     bool moving(int bx, int by) const;
     void dilated_row(int by, uint8_t* out) const;
     block_group group_in(box blocks) const;
-    block_group chosen_extent(box seed, int min_pixels, box apart);
 
     int m_max_blocks_x = 0, m_max_blocks_y = 0;
     int m_width = 0;
