@@ -42,6 +42,8 @@ enum record_bit : uint32_t {
     bit_full_eval = 1u << 16,     // Verilator's own eval (the reset and the first evaluation)
     bit_input_region = 1u << 17,  // card_eval ran the input-combinational region
     bit_end_of_run = 1u << 18,    // no evaluation: the card's outputs after the last one
+    bit_l_fodd = 1u << 19,
+    bit_r_fodd = 1u << 20,
 };
 
 struct record {
@@ -71,8 +73,8 @@ inline record record_of(const Vcard& d, uint32_t kind) {
              bit(d.l_vsync, bit_l_vsync) | bit(d.l_href, bit_l_href) | bit(d.l_valid, bit_l_valid) |
              bit(d.r_vsync, bit_r_vsync) | bit(d.r_href, bit_r_href) | bit(d.r_valid, bit_r_valid) |
              bit(d.ce2_n, bit_ce2_n) | bit(d.ce3_n, bit_ce3_n) | bit(d.aoe_n, bit_aoe_n) |
-             bit(d.are_n, bit_are_n) | bit(d.awe_n, bit_awe_n) |
-             bit(root.__Vtrigrprev__TOP__pclk, bit_prev_pclk) |
+             bit(d.are_n, bit_are_n) | bit(d.awe_n, bit_awe_n) | bit(d.l_fodd, bit_l_fodd) |
+             bit(d.r_fodd, bit_r_fodd) | bit(root.__Vtrigrprev__TOP__pclk, bit_prev_pclk) |
              bit(root.__Vtrigrprev__TOP__eclk, bit_prev_eclk);
     r.l_data = d.l_data;
     r.r_data = d.r_data;
@@ -99,10 +101,12 @@ inline void apply(Vcard& d, const record& r) {
     d.l_href = on(bit_l_href);
     d.l_valid = on(bit_l_valid);
     d.l_data = r.l_data;
+    d.l_fodd = on(bit_l_fodd);
     d.r_vsync = on(bit_r_vsync);
     d.r_href = on(bit_r_href);
     d.r_valid = on(bit_r_valid);
     d.r_data = r.r_data;
+    d.r_fodd = on(bit_r_fodd);
     d.ce2_n = on(bit_ce2_n);
     d.ce3_n = on(bit_ce3_n);
     d.aoe_n = on(bit_aoe_n);

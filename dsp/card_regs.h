@@ -26,7 +26,7 @@ constexpr uint32_t pixels_per_word = 0x00000004u;
 
 // ID (RO): Card identification
 constexpr uint32_t id = 0x00u;
-constexpr uint32_t id_reset = 0x57E50001u;
+constexpr uint32_t id_reset = 0x57E50002u;
 constexpr uint32_t id_magic_shift = 16;  // Constant 0x57E5
 constexpr uint32_t id_magic_mask = 0xFFFF0000u;
 constexpr uint32_t id_version_shift = 0;  // RTL version of this register map
@@ -97,6 +97,10 @@ constexpr uint32_t verdict_start_timeout_shift = 6;  // No VSYNC within START_TI
 constexpr uint32_t verdict_start_timeout_mask = 0x00000040u;
 constexpr uint32_t verdict_overflow_shift = 7;  // A FIFO overflowed during this frame
 constexpr uint32_t verdict_overflow_mask = 0x00000080u;
+constexpr uint32_t verdict_l_frame_id_shift = 8;  // Left stream: its frame identity (FODD at the VSYNC rise) did not change from its previous frame (a repeated frame) or differs from the right's in the first frame after OE rose
+constexpr uint32_t verdict_l_frame_id_mask = 0x00000100u;
+constexpr uint32_t verdict_r_frame_id_shift = 9;  // Right stream: frame identity unchanged (a repeated frame) or differs from the left's in the first frame
+constexpr uint32_t verdict_r_frame_id_mask = 0x00000200u;
 constexpr uint32_t verdict_frame_shift = 16;  // Index of the common frame since the last OE start (0 = first frame)
 constexpr uint32_t verdict_frame_mask = 0xFFFF0000u;
 
@@ -270,6 +274,12 @@ constexpr uint32_t start_timeout = 0x98u;
 constexpr uint32_t start_timeout_reset = 0x0000041Au;
 constexpr uint32_t start_timeout_value_shift = 0;  // Lines
 constexpr uint32_t start_timeout_value_mask = 0x0000FFFFu;
+
+// CHECKS (RW): Optional pair checks beside the dark-pixel check
+constexpr uint32_t checks = 0x9Cu;
+constexpr uint32_t checks_reset = 0x00000001u;
+constexpr uint32_t checks_frame_id_shift = 0;  // 1 = compare the sensors' frame identity (FODD) per frame: a repeated or out-of-step frame fails the pair (VERDICT L_FRAME_ID and R_FRAME_ID). 0 = the paper's card: the dark-pixel check only
+constexpr uint32_t checks_frame_id_mask = 0x00000001u;
 
 }  // namespace dsp::card_regs
 // clang-format on

@@ -31,7 +31,8 @@ constexpr uint32_t channel_bit_high(int channel) {
     return channel >= 32 ? 1u << (channel - 32) : 0u;
 }
 
-constexpr uint32_t verdict_causes_mask = 0x000000FFu;
+// VERDICT bits 9..0, every cause (docs/card-registers.md): a pair with any is not used.
+constexpr uint32_t verdict_causes_mask = 0x000003FFu;
 constexpr uint32_t timer1 = timer::base1;
 
 }  // namespace

@@ -21,13 +21,16 @@ module card_capture #(
     input  logic        l_href,
     input  logic        l_valid,
     input  logic [ 7:0] l_data,
+    input  logic        l_fodd,
     input  logic        r_vsync,
     input  logic        r_href,
     input  logic        r_valid,
     input  logic [ 7:0] r_data,
+    input  logic        r_fodd,
     output logic        sensor_oe,
     // Configuration (from the bus side, quasi-static)
     input  logic        cfg_enable,
+    input  logic        cfg_frame_id_check,
     input  logic [ 7:0] cfg_dark_threshold,
     input  logic [15:0] cfg_h_start,
     input  logic [15:0] cfg_dark_cols_left,
@@ -67,7 +70,7 @@ module card_capture #(
     output logic [31:0] overflows,
     output logic [31:0] discarded,
     output logic [31:0] skipped,
-    output logic [ 7:0] verdict_causes,  // VERDICT bits 7..0
+    output logic [ 9:0] verdict_causes,  // VERDICT bits 9..0
     output logic [15:0] verdict_frame,
     output logic [15:0] mm_line,
     output logic [15:0] mm_col,
@@ -85,7 +88,7 @@ module card_capture #(
     logic origin, frame_start, frame_end, timeout, active_px;
     logic run, wait_origin, fail_evt, retry_evt, start_evt;
     logic l_vs_rise, r_vs_rise;
-    logic [5:0] frame_causes;
+    logic [7:0] frame_causes;
     logic [15:0] frame_index, cur_mm_line, cur_mm_col;
     logic [1:0] active_phase;
     logic [7:0] l_pixel, r_pixel;
@@ -97,12 +100,15 @@ module card_capture #(
         .l_href(l_href),
         .l_valid(l_valid),
         .l_data(l_data),
+        .l_fodd(l_fodd),
         .r_vsync(r_vsync),
         .r_href(r_href),
         .r_valid(r_valid),
         .r_data(r_data),
+        .r_fodd(r_fodd),
         .run(run),
         .wait_origin(wait_origin),
+        .frame_id_check(cfg_frame_id_check),
         .dark_threshold(cfg_dark_threshold),
         .h_start(cfg_h_start),
         .dark_cols_left(cfg_dark_cols_left),
@@ -135,7 +141,7 @@ module card_capture #(
         .r_vs_rise(r_vs_rise)
     );
 
-    wire sync_bad_now = frame_causes != 6'd0;
+    wire sync_bad_now = frame_causes != 8'd0;
 
     oe_control u_oe (
         .pclk(pclk),
@@ -279,14 +285,14 @@ module card_capture #(
             if (ovf_hit && !ovf_before) overflows <= overflows + 32'd1;
             if (publish_discard) discarded <= discarded + 32'd1;
             if (frame_end) begin
-                verdict_causes <= {ovf_now, 1'b0, frame_causes};
+                verdict_causes <= {frame_causes[7:6], ovf_now, 1'b0, frame_causes[5:0]};
                 verdict_frame  <= frame_index;
                 if (sync_bad_now) begin
                     mm_line <= cur_mm_line;
                     mm_col  <= cur_mm_col;
                 end
             end else if (timeout) begin
-                verdict_causes <= 8'h40;
+                verdict_causes <= 10'h040;
                 verdict_frame  <= '0;
             end
         end

@@ -33,7 +33,7 @@ module card_regfile #(
     input  logic [31:0] st_overflows,
     input  logic [31:0] st_discarded,
     input  logic [31:0] st_skipped,
-    input  logic [ 7:0] st_verdict_causes,
+    input  logic [ 9:0] st_verdict_causes,
     input  logic [15:0] st_verdict_frame,
     input  logic [15:0] st_mm_line,
     input  logic [15:0] st_mm_col,
@@ -54,6 +54,7 @@ module card_regfile #(
     input  logic [AW:0] rd_wptr_r,
     // Configuration
     output logic        cfg_enable,
+    output logic        cfg_frame_id_check,
     output logic [ 7:0] cfg_dark_threshold,
     output logic [15:0] cfg_h_start,
     output logic [15:0] cfg_dark_cols_left,
@@ -90,7 +91,7 @@ module card_regfile #(
     endfunction
 
     // ---- read/write configuration registers -----------------------------------------
-    logic [31:0] ctrl_q, irq_enable_q, irq_status_q, underflows_q;
+    logic [31:0] ctrl_q, checks_q, irq_enable_q, irq_status_q, underflows_q;
     logic [31:0] dark_threshold_q, retry_limit_q, oe_low_q, start_timeout_q;
     logic [31:0] h_start_q, dark_cols_left_q, border_cols_left_q, active_cols_q;
     logic [31:0] border_cols_right_q, dark_cols_right_q, line_total_q;
@@ -102,6 +103,7 @@ module card_regfile #(
     always_ff @(posedge clk or negedge rst_n) begin
         if (!rst_n) begin
             ctrl_q               <= REG_CTRL_RESET;
+            checks_q             <= REG_CHECKS_RESET;
             irq_enable_q         <= REG_IRQ_ENABLE_RESET;
             irq_status_q         <= REG_IRQ_STATUS_RESET;
             underflows_q         <= REG_UNDERFLOWS_RESET;
@@ -163,6 +165,7 @@ module card_regfile #(
                     REG_OE_LOW_CYCLES: oe_low_q <= merge(oe_low_q, wr_data, wr_be) & 32'hFFFF;
                     REG_START_TIMEOUT:
                     start_timeout_q <= merge(start_timeout_q, wr_data, wr_be) & 32'hFFFF;
+                    REG_CHECKS: checks_q <= merge(checks_q, wr_data, wr_be) & 32'h1;
                     default: ;  // read-only or unused: ignored
                 endcase
             end
@@ -170,6 +173,7 @@ module card_regfile #(
     end
 
     assign cfg_enable             = ctrl_q[CTRL_ENABLE_LSB];
+    assign cfg_frame_id_check     = checks_q[CHECKS_FRAME_ID_LSB];
     assign cfg_dark_threshold     = dark_threshold_q[7:0];
     assign cfg_h_start            = h_start_q[15:0];
     assign cfg_dark_cols_left     = dark_cols_left_q[15:0];
@@ -248,7 +252,7 @@ module card_regfile #(
         status[STATUS_EMPTY_L_LSB] = empty_l;
         status[STATUS_EMPTY_R_LSB] = empty_r;
         verdict = '0;
-        verdict[VERDICT_OVERFLOW_MSB:VERDICT_L_WINDOW_LSB] = st_verdict_causes;
+        verdict[VERDICT_R_FRAME_ID_MSB:VERDICT_L_WINDOW_LSB] = st_verdict_causes;
         verdict[VERDICT_FRAME_MSB:VERDICT_FRAME_LSB] = st_verdict_frame;
         mismatch_pos = '0;
         mismatch_pos[MISMATCH_POS_LINE_MSB:MISMATCH_POS_LINE_LSB] = st_mm_line;
@@ -296,6 +300,7 @@ module card_regfile #(
             REG_RETRY_LIMIT: rd_data = retry_limit_q;
             REG_OE_LOW_CYCLES: rd_data = oe_low_q;
             REG_START_TIMEOUT: rd_data = start_timeout_q;
+            REG_CHECKS: rd_data = checks_q;
             default: rd_data = 32'd0;
         endcase
     end

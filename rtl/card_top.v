@@ -24,10 +24,12 @@ module card_top #(
     input  logic        l_href,
     input  logic        l_valid,
     input  logic [ 7:0] l_data,
+    input  logic        l_fodd,     // frame identity (docs/card.md, "Frame identity")
     input  logic        r_vsync,
     input  logic        r_href,
     input  logic        r_valid,
     input  logic [ 7:0] r_data,
+    input  logic        r_fodd,
     // ---- EMIFA side (J4 memory connector), ECLKOUT ----
     input  logic        eclk,
     input  logic        ce2_n,
@@ -66,23 +68,23 @@ module card_top #(
     );
 
     // ---- configuration: bus side registers -> pixel clock side --------------------------
-    logic e_enable;
+    logic e_enable, e_frame_id_check;
     logic [7:0] e_dark_threshold, e_retry_limit, e_discard_done_seq;
     logic [15:0] e_h_start, e_dark_cols_left, e_border_cols_left, e_active_cols;
     logic [15:0] e_border_cols_right, e_dark_cols_right, e_line_total, e_v_start;
     logic [15:0] e_dark_rows_top, e_border_rows_top, e_active_rows, e_border_rows_bottom;
     logic [15:0] e_dark_rows_bottom, e_frame_lines, e_oe_low_cycles, e_start_timeout;
 
-    logic p_enable;
+    logic p_enable, p_frame_id_check;
     logic [7:0] p_dark_threshold, p_retry_limit, p_discard_done_seq;
     logic [15:0] p_h_start, p_dark_cols_left, p_border_cols_left, p_active_cols;
     logic [15:0] p_border_cols_right, p_dark_cols_right, p_line_total, p_v_start;
     logic [15:0] p_dark_rows_top, p_border_rows_top, p_active_rows, p_border_rows_bottom;
     logic [15:0] p_dark_rows_bottom, p_frame_lines, p_oe_low_cycles, p_start_timeout;
 
-    localparam int CFG_W = 1 + 3 * 8 + 16 * 16;
+    localparam int CFG_W = 2 + 3 * 8 + 16 * 16;
     wire [CFG_W-1:0] cfg_e = {
-        e_enable, e_dark_threshold, e_retry_limit, e_discard_done_seq,
+        e_enable, e_frame_id_check, e_dark_threshold, e_retry_limit, e_discard_done_seq,
         e_h_start, e_dark_cols_left, e_border_cols_left, e_active_cols,
         e_border_cols_right, e_dark_cols_right, e_line_total, e_v_start,
         e_dark_rows_top, e_border_rows_top, e_active_rows, e_border_rows_bottom,
@@ -91,7 +93,7 @@ module card_top #(
     logic [CFG_W-1:0] cfg_p;
     logic cfg_update_unused;
     assign {
-        p_enable, p_dark_threshold, p_retry_limit, p_discard_done_seq,
+        p_enable, p_frame_id_check, p_dark_threshold, p_retry_limit, p_discard_done_seq,
         p_h_start, p_dark_cols_left, p_border_cols_left, p_active_cols,
         p_border_cols_right, p_dark_cols_right, p_line_total, p_v_start,
         p_dark_rows_top, p_border_rows_top, p_active_rows, p_border_rows_bottom,
@@ -165,7 +167,8 @@ module card_top #(
     logic [2:0] p_state;
     logic [31:0] p_frames_l, p_frames_r, p_pairs_ok, p_mismatches, p_retries, p_overflows;
     logic [31:0] p_discarded, p_skipped;
-    logic [7:0] p_verdict_causes, p_discard_seq;
+    logic [9:0] p_verdict_causes;
+    logic [7:0] p_discard_seq;
     logic [15:0] p_verdict_frame, p_mm_line, p_mm_col;
     logic [AW:0] p_discard_begin_l, p_discard_end_l, p_discard_begin_r, p_discard_end_r;
     logic [AW:0] p_ready_end_l, p_ready_end_r;
@@ -177,12 +180,15 @@ module card_top #(
         .l_href(l_href),
         .l_valid(l_valid),
         .l_data(l_data),
+        .l_fodd(l_fodd),
         .r_vsync(r_vsync),
         .r_href(r_href),
         .r_valid(r_valid),
         .r_data(r_data),
+        .r_fodd(r_fodd),
         .sensor_oe(sensor_oe),
         .cfg_enable(p_enable),
+        .cfg_frame_id_check(p_frame_id_check),
         .cfg_dark_threshold(p_dark_threshold),
         .cfg_h_start(p_h_start),
         .cfg_dark_cols_left(p_dark_cols_left),
@@ -234,7 +240,7 @@ module card_top #(
     );
 
     // ---- status: pixel clock side -> bus side ----------------------------------------------
-    localparam int ST_W = 3 + 1 + 2 + 8 * 32 + 8 + 3 * 16 + 8 + 8 * (AW + 1);
+    localparam int ST_W = 3 + 1 + 2 + 8 * 32 + 10 + 3 * 16 + 8 + 8 * (AW + 1);
     wire [ST_W-1:0] st_p = {
         p_state, sensor_oe, l_overflow, r_overflow,
         p_frames_l, p_frames_r, p_pairs_ok, p_mismatches,
@@ -250,7 +256,8 @@ module card_top #(
     logic s_oe, s_overflow_l, s_overflow_r;
     logic [31:0] s_frames_l, s_frames_r, s_pairs_ok, s_mismatches;
     logic [31:0] s_retries, s_overflows, s_discarded, s_skipped;
-    logic [7:0] s_verdict_causes, s_discard_seq;
+    logic [9:0] s_verdict_causes;
+    logic [7:0] s_discard_seq;
     logic [15:0] s_verdict_frame, s_mm_line, s_mm_col;
     logic [AW:0] s_peak_l, s_peak_r, s_ready_end_l, s_ready_end_r;
     logic [AW:0] s_discard_begin_l, s_discard_end_l, s_discard_begin_r, s_discard_end_r;
@@ -395,6 +402,7 @@ module card_top #(
         .rd_wptr_l(l_rd_wptr),
         .rd_wptr_r(r_rd_wptr),
         .cfg_enable(e_enable),
+        .cfg_frame_id_check(e_frame_id_check),
         .cfg_dark_threshold(e_dark_threshold),
         .cfg_h_start(e_h_start),
         .cfg_dark_cols_left(e_dark_cols_left),

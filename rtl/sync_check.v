@@ -12,7 +12,12 @@
 //           it has one (catches any skew, dropped or extra lines);
 //   dark:   a pixel at a dark position (dark columns on every readout line,
 //           dark rows) that reads >= dark_threshold;
-//   vsync:  a VSYNC rise anywhere but at line 0 column 0, or none there.
+//   vsync:  a VSYNC rise anywhere but at line 0 column 0, or none there;
+//   frame identity (when frame_id_check is set): the stream's FODD, sampled
+//           at its VSYNC rise at line 0 column 0, equal to its previous
+//           frame's (the sensor sent a frame twice: timing and dark pixels
+//           cannot show it), or, in the first frame after the origin, to
+//           the other stream's (both streams flagged: no history to blame).
 // The causes accumulate over the frame; frame_end marks the last pixel clock
 // of a common frame, where frame_causes is the verdict covering that frame.
 //
@@ -30,14 +35,17 @@ module sync_check (
     input  logic        l_href,
     input  logic        l_valid,
     input  logic [ 7:0] l_data,
+    input  logic        l_fodd,
     input  logic        r_vsync,
     input  logic        r_href,
     input  logic        r_valid,
     input  logic [ 7:0] r_data,
+    input  logic        r_fodd,
     // From the OE controller.
     input  logic        run,          // WAIT_VSYNC or RUN: counters and checks live
     input  logic        wait_origin,  // WAIT_VSYNC: the next VSYNC rise starts the common frame
     // Configuration (quasi-static while run is high).
+    input  logic        frame_id_check,
     input  logic [ 7:0] dark_threshold,
     input  logic [15:0] h_start,
     input  logic [15:0] dark_cols_left,
@@ -60,7 +68,8 @@ module sync_check (
     output logic        frame_end,     // last sample of a common frame
     output logic        timeout,       // no VSYNC within start_timeout lines
     output logic [15:0] frame_index,   // common frames since the origin
-    output logic [ 5:0] frame_causes,  // {r_vsync, l_vsync, r_dark, l_dark, r_window, l_window}
+    // {r_frame_id, l_frame_id, r_vsync, l_vsync, r_dark, l_dark, r_window, l_window}
+    output logic [ 7:0] frame_causes,
     output logic [15:0] mm_line,       // first mismatch of the frame so far
     output logic [15:0] mm_col,
     output logic        active_px,     // an active pixel position of the layout
@@ -71,8 +80,8 @@ module sync_check (
     output logic        r_vs_rise
 );
     // ---- input sampling ---------------------------------------------------------------
-    logic l_vsync_q, l_vsync_qq, l_href_q, l_valid_q;
-    logic r_vsync_q, r_vsync_qq, r_href_q, r_valid_q;
+    logic l_vsync_q, l_vsync_qq, l_href_q, l_valid_q, l_fodd_q;
+    logic r_vsync_q, r_vsync_qq, r_href_q, r_valid_q, r_fodd_q;
     logic [7:0] l_data_q, r_data_q;
 
     always_ff @(posedge pclk or negedge rst_n) begin
@@ -81,11 +90,15 @@ module sync_check (
             {r_vsync_q, r_vsync_qq, r_href_q, r_valid_q} <= '0;
             l_data_q <= '0;
             r_data_q <= '0;
+            l_fodd_q <= 1'b0;
+            r_fodd_q <= 1'b0;
         end else begin
             {l_vsync_q, l_vsync_qq, l_href_q, l_valid_q} <= {l_vsync, l_vsync_q, l_href, l_valid};
             {r_vsync_q, r_vsync_qq, r_href_q, r_valid_q} <= {r_vsync, r_vsync_q, r_href, r_valid};
             l_data_q <= l_data;
             r_data_q <= r_data;
+            l_fodd_q <= l_fodd;
+            r_fodd_q <= r_fodd;
         end
     end
 
@@ -175,10 +188,40 @@ module sync_check (
     // Only the low bits of (col - c2) are needed: the word phase.
     assign active_phase = col[1:0] - c2_q[1:0];
 
+    // ---- frame identity -------------------------------------------------------------------
+    // A stream's frame begins where the common frame does; its FODD then
+    // names the exposure it carries. In step, both toggle every frame.
+    // Per stream: the last frame's FODD, and whether one was seen since the
+    // origin.
+    logic l_id_prev, r_id_prev, l_id_seen, r_id_seen;
+    wire l_id_at = frame_start && l_vs_rise;
+    wire r_id_at = frame_start && r_vs_rise;
+    wire id_pair_differs = l_id_at && r_id_at && (l_fodd_q != r_fodd_q);
+    wire l_id_bad = frame_id_check && l_id_at &&
+                    (l_id_seen ? l_fodd_q == l_id_prev : id_pair_differs);
+    wire r_id_bad = frame_id_check && r_id_at &&
+                    (r_id_seen ? r_fodd_q == r_id_prev : id_pair_differs);
+
+    always_ff @(posedge pclk or negedge rst_n) begin
+        if (!rst_n) begin
+            {l_id_prev, r_id_prev, l_id_seen, r_id_seen} <= '0;
+        end else if (!run) begin
+            {l_id_seen, r_id_seen} <= '0;
+        end else if (frame_start) begin
+            // No rise here (a VSYNC cause): the next frame has no history.
+            l_id_seen <= l_vs_rise;
+            r_id_seen <= r_vs_rise;
+            if (l_vs_rise) l_id_prev <= l_fodd_q;
+            if (r_vs_rise) r_id_prev <= r_fodd_q;
+        end
+    end
+
     // ---- per-stream checks --------------------------------------------------------------
     wire l_px = l_href_q && l_valid_q;
     wire r_px = r_href_q && r_valid_q;
-    wire [5:0] err_now = {
+    wire [7:0] err_now = {
+        r_id_bad,
+        l_id_bad,
         in_frame && (r_vs_rise != frame_start),
         in_frame && (l_vs_rise != frame_start),
         exp_dark && r_px && (r_data_q >= dark_threshold),
@@ -195,6 +238,9 @@ module sync_check (
         cov_cause_r_dark : cover (err_now[3]);
         cov_cause_l_vsync : cover (err_now[4]);
         cov_cause_r_vsync : cover (err_now[5]);
+        cov_cause_l_frame_id : cover (err_now[6]);
+        cov_cause_r_frame_id : cover (err_now[7]);
+        cov_frame_id_pair_differs : cover (frame_id_check && id_pair_differs);
         cov_start_timeout : cover (timeout);
         cov_origin_left_first : cover (origin && l_vs_rise && !r_vs_rise);
         cov_origin_right_first : cover (origin && r_vs_rise && !l_vs_rise);
@@ -202,10 +248,10 @@ module sync_check (
     end
 `endif
 
-    logic [5:0] causes_q;
+    logic [7:0] causes_q;
     logic [15:0] mm_line_q, mm_col_q;
-    wire [5:0] causes_before = frame_start ? 6'd0 : causes_q;
-    wire first_error = causes_before == 6'd0 && err_now != 6'd0;
+    wire [7:0] causes_before = frame_start ? 8'd0 : causes_q;
+    wire first_error = causes_before == 8'd0 && err_now != 8'd0;
 
     assign frame_causes = causes_before | err_now;
     assign mm_line = first_error ? cur_line : mm_line_q;

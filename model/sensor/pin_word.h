@@ -12,6 +12,9 @@ struct pin_word {
     static constexpr uint16_t href_bit = 1u << 8;
     static constexpr uint16_t vsync_bit = 1u << 9;
     static constexpr uint16_t valid_bit = 1u << 10;
+    // Frame identity: held through each frame, it toggles from one frame to
+    // the next; a repeated frame carries the repeated one's (docs/sensor.md).
+    static constexpr uint16_t fodd_bit = 1u << 11;
 
     uint16_t bits = 0;
 
@@ -19,6 +22,7 @@ struct pin_word {
     bool href() const { return (bits & href_bit) != 0; }
     bool vsync() const { return (bits & vsync_bit) != 0; }
     bool valid() const { return (bits & valid_bit) != 0; }
+    bool fodd() const { return (bits & fodd_bit) != 0; }
     friend bool operator==(pin_word a, pin_word b) { return a.bits == b.bits; }
     friend bool operator!=(pin_word a, pin_word b) { return a.bits != b.bits; }
 };

@@ -74,8 +74,9 @@ void pixel_pipeline::read_row(int row, int from_col, int dark_level, uint16_t* o
         } else {
             v = pixel_value(x, y);
         }
-        out[i] = static_cast<uint16_t>(pin_word::valid_bit | pin_word::href_bit |
-                                       static_cast<uint16_t>(v));
+        // The frame's FODD level, already in the word, stays.
+        out[i] = static_cast<uint16_t>((out[i] & pin_word::fodd_bit) | pin_word::valid_bit |
+                                       pin_word::href_bit | static_cast<uint16_t>(v));
     }
 }
 

@@ -206,11 +206,13 @@ frame_truth sensor_core::new_frame_truth() {
         t.faults |= fault_bit(fault_kind::extra_frame);
         m_next_is_extra = false;
     } else {
+        m_fodd = (m_frames_since_oe++ & 1u) != 0;
         // The time slot, not a count of this sensor's frames: two sensors'
         // counts stay apart after an OE stop that came when one had begun a
         // frame and the other had not.
         t.scene_frame = scene_slot_of(t.start_tick);
     }
+    t.fodd = m_fodd;
     return t;
 }
 
@@ -289,8 +291,9 @@ void sensor_core::build_line(int from_col) {
     if (!m_frame_dropped)
         vsync_end =
             static_cast<int>(std::clamp<int64_t>(m_profile.vsync_pclks - line_offset, 0, line));
+    const uint16_t level = m_fodd ? static_cast<uint16_t>(valid | pin_word::fodd_bit) : valid;
     for (int c = from_col; c < line; ++c)
-        w[c] = c < vsync_end ? static_cast<uint16_t>(valid | pin_word::vsync_bit) : valid;
+        w[c] = c < vsync_end ? static_cast<uint16_t>(level | pin_word::vsync_bit) : level;
 
     if (m_line_href_col >= 0) {
         m_pixels.read_row(m_line - m_profile.first_row_line,
@@ -308,6 +311,7 @@ void sensor_core::on_oe_edge(bool oe) {
         if (m_effects.never_start() || m_phase != phase::idle) return;
         start_record rec;
         rec.oe_cycle = m_cycle;
+        m_frames_since_oe = 0;
         rec.latency_pclks = draw_startup_latency(&rec.extra_pclks);
         m_starts.push_back(rec);
         m_output_since_start = false;

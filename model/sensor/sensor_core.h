@@ -189,6 +189,8 @@ class sensor_core {
     bool m_frame_dropped = false;
     bool m_extra_after = false;
     bool m_next_is_extra = false;
+    uint64_t m_frames_since_oe = 0;  // new frames (not repeats) since OE rose
+    bool m_fodd = false;             // the current frame's identity pin
     bool m_line_dropped = false;
     uint64_t m_current_scene_frame = 0;
     int m_skew_pending = 0;    // start_skew clocks inserted before the next frame

@@ -33,6 +33,7 @@ sensor_sc::sensor_sc(sc_core::sc_module_name name, const sensor_profile& profile
       vsync("vsync"),
       href("href"),
       valid("valid"),
+      fodd("fodd"),
       data("data"),
       m_core(profile, camera, source, config) {
     SC_HAS_PROCESS(sensor_sc);
@@ -62,6 +63,7 @@ void sensor_sc::run() {
     vsync.write(false);
     href.write(false);
     valid.write(false);
+    fodd.write(false);
     data.write(0);
     for (;;) {
         wait_for_edge(m_core.next_rise_tick());
@@ -72,6 +74,7 @@ void sensor_sc::run() {
         vsync.write(w.vsync());
         href.write(w.href());
         valid.write(w.valid());
+        fodd.write(w.fodd());
         data.write(w.data());
     }
 }

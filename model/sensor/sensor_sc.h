@@ -45,6 +45,7 @@ class sensor_sc : public sc_core::sc_module {
     sc_core::sc_out<bool> vsync;
     sc_core::sc_out<bool> href;
     sc_core::sc_out<bool> valid;
+    sc_core::sc_out<bool> fodd;      // frame identity (pin_word::fodd_bit)
     sc_core::sc_out<uint32_t> data;  // data[7:0]; uint32_t as Verilator's --sc ports
 
     sensor_sc(sc_core::sc_module_name name, const sensor_profile& profile, scene::camera_id camera,

@@ -24,10 +24,13 @@ struct frame_truth {
     simtime::ticks first_active_tick = 0;
     simtime::ticks last_active_tick = 0;
 
-    int lines_with_href = 0;    // readout lines that carried HREF
-    bool complete = false;      // ran to its last line (OE did not stop it)
-    bool dropped = false;       // dropped_frame: no VSYNC, no HREF
-    bool repeated = false;      // extra_frame: repeats the previous scene frame
+    int lines_with_href = 0;  // readout lines that carried HREF
+    bool complete = false;    // ran to its last line (OE did not stop it)
+    bool dropped = false;     // dropped_frame: no VSYNC, no HREF
+    bool repeated = false;    // extra_frame: repeats the previous scene frame
+    // FODD during the frame: the low bit of the sensor's frame count since
+    // OE rose; a repeat carries the repeated frame's (docs/sensor.md).
+    bool fodd = false;
     int skew_before_pclks = 0;  // start_skew clocks inserted just before it
     uint32_t faults = 0;        // fault_bit() of every fault in effect during it
 };

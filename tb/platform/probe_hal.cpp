@@ -76,6 +76,8 @@ void probe_hal::write32(uint32_t address, uint32_t value) {
     m_inner.write32(address, value);
     if (address == dsp::card_regs::ce2_base + dsp::card_regs::ctrl)
         m_card_control.push_back({now(), value});
+    if (address == dsp::card_regs::ce2_base + dsp::card_regs::checks)
+        m_card_checks.push_back({now(), value});
     leave();
 }
 

@@ -107,6 +107,8 @@ class probe_hal {
     // Every write of the card's CTRL (ENABLE: OE on / off), the truth the
     // contract judges the firmware's re-arms by, whatever it reports.
     const std::vector<register_write>& card_control_writes() const { return m_card_control; }
+    // Every write of the card's CHECKS: which pair checks were on when.
+    const std::vector<register_write>& card_checks_writes() const { return m_card_checks; }
     const std::vector<fw_result>& results() const { return m_results; }
     uint64_t stage_cycles(int stage) const { return m_stage_cycles[stage]; }
     // SDRAM bytes charged per stage, whole run.
@@ -132,6 +134,7 @@ class probe_hal {
     std::vector<tick_interval> m_sleeps;
     std::vector<fw_event> m_fw_events;
     std::vector<register_write> m_card_control;
+    std::vector<register_write> m_card_checks;
     std::vector<fw_result> m_results;
     // Per stage the firmware may declare (the ABI's limit, not the reference's 7).
     uint64_t m_stage_cycles[STEREOSIM_FW_MAX_STAGES] = {};

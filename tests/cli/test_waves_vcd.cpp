@@ -269,9 +269,9 @@ TEST(waves_vcd, window_around_first_frame_ready) {
     const std::string gtkw = read_text(dir + "/waves/default.gtkw");
     ASSERT_FALSE(gtkw.empty());
     const std::vector<std::string> named = gtkw_signals(gtkw);
-    // Every traced pin, the fault marker (waves_writer.h) and five of the
+    // Every traced pin, the fault marker (waves_writer.h) and nine of the
     // card's RTL signals, in nine groups.
-    EXPECT_EQ(named.size(), static_cast<size_t>(platform::trace_pin_count) + 1 + 5);
+    EXPECT_EQ(named.size(), static_cast<size_t>(platform::trace_pin_count) + 1 + 9);
     for (const std::string& n : named) EXPECT_TRUE(v.code_of.count(n)) << n << " not in the VCD";
     for (const char* group : {"sensor L", "sensor R", "sync check", "FIFOs", "card RTL", "EMIF",
                               "interrupts", "firmware stage and state", "faults"})

@@ -26,7 +26,7 @@ constexpr uint16_t pclk_bit = 1u << 15;
 
 // Records the sensor pins on every change (one record per delta in which any changed).
 struct pin_monitor : sc_core::sc_module {
-    sc_core::sc_in<bool> pclk, vsync, href, valid;
+    sc_core::sc_in<bool> pclk, vsync, href, valid, fodd;
     sc_core::sc_in<uint32_t> data;
     std::vector<pin_event> events;
 
@@ -36,10 +36,11 @@ struct pin_monitor : sc_core::sc_module {
           vsync("vsync"),
           href("href"),
           valid("valid"),
+          fodd("fodd"),
           data("data") {
         SC_HAS_PROCESS(pin_monitor);
         SC_METHOD(sample);
-        sensitive << pclk << vsync << href << valid << data;
+        sensitive << pclk << vsync << href << valid << fodd << data;
         dont_initialize();
     }
 
@@ -48,6 +49,7 @@ struct pin_monitor : sc_core::sc_module {
         if (href.read()) w |= sensor::pin_word::href_bit;
         if (vsync.read()) w |= sensor::pin_word::vsync_bit;
         if (valid.read()) w |= sensor::pin_word::valid_bit;
+        if (fodd.read()) w |= sensor::pin_word::fodd_bit;
         if (pclk.read()) w |= pclk_bit;
         events.push_back({static_cast<int64_t>(sc_core::sc_time_stamp().value()), w});
     }

@@ -89,10 +89,12 @@ class card_rig : public emif_pin_observer {
             d.l_href = l.href;
             d.l_valid = l.valid;
             d.l_data = l.data;
+            d.l_fodd = l.fodd;
             d.r_vsync = r.vsync;
             d.r_href = r.href;
             d.r_valid = r.valid;
             d.r_data = r.data;
+            d.r_fodd = r.fodd;
         }
         if (e_edge) {
             engine.step(in);  // samples `in`, drives the next cycle's pins

@@ -39,7 +39,7 @@ fault drift_fault() {
 
 struct bench : sc_core::sc_module {
     sc_core::sc_signal<bool> mclk{"mclk"}, oe{"oe"}, pclk{"pclk"}, vsync{"vsync"}, href{"href"},
-        valid{"valid"};
+        valid{"valid"}, fodd{"fodd"};
     sc_core::sc_signal<uint32_t> data{"data"};
     pattern_source source;
     tick_clock_sc master;
@@ -62,11 +62,13 @@ struct bench : sc_core::sc_module {
         cam.vsync(vsync);
         cam.href(href);
         cam.valid(valid);
+        cam.fodd(fodd);
         cam.data(data);
         mon.pclk(pclk);
         mon.vsync(vsync);
         mon.href(href);
         mon.valid(valid);
+        mon.fodd(fodd);
         mon.data(data);
         cam.core().add_fault(drift_fault());
     }

@@ -22,6 +22,7 @@ constexpr uint64_t start(uint64_t k) {
     return latency + k * frame;
 }  // S_k with OE high from 0
 constexpr uint16_t valid_only = pin_word::valid_bit;
+constexpr uint16_t fodd = pin_word::fodd_bit;
 
 struct run_result {
     std::vector<cycle_record> rec;
@@ -168,7 +169,9 @@ TEST(SensorFaults, DroppedFrameHasNoVsyncNoHrefAndConsumesItsSceneFrame) {
     const auto out = run_sensor({fault::dropped_frame(fault_trigger::at_frame(1))}, cycles);
     EXPECT_EQ(count_violations(out.rec,
                                [&](uint64_t n) -> uint16_t {
-                                   if (n >= start(1) && n < start(2)) return valid_only;
+                                   // The frame is counted: FODD as in the reference.
+                                   if (n >= start(1) && n < start(2))
+                                       return valid_only | (ref.rec[n].pins.bits & fodd);
                                    return ref.rec[n].pins.bits;
                                }),
               0u);
@@ -188,8 +191,9 @@ TEST(SensorFaults, ExtraFrameRepeatsTheFrameAndDelaysTheRestByOnePeriod) {
                                    if (n < start(2)) return ref.rec[n].pins.bits;
                                    if (n < start(3)) return ref.rec[n - frame].pins.bits;  // repeat
                                    // One period late on a periodic timing, showing the
-                                   // scene frame of its own time slot: the reference.
-                                   return ref.rec[n].pins.bits;
+                                   // scene frame of its own time slot: the reference,
+                                   // but one new frame fewer since OE rose: FODD inverted.
+                                   return ref.rec[n].pins.bits ^ fodd;
                                }),
               0u);
     ASSERT_GE(out.truth.size(), 4u);

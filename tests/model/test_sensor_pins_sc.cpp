@@ -56,9 +56,9 @@ void add_right_faults(sensor_core& core) {
 struct bench : sc_core::sc_module {
     sc_core::sc_signal<bool> mclk{"mclk"}, oe{"oe"};
     sc_core::sc_signal<bool> pclk_l{"pclk_l"}, vsync_l{"vsync_l"}, href_l{"href_l"},
-        valid_l{"valid_l"};
+        valid_l{"valid_l"}, fodd_l{"fodd_l"};
     sc_core::sc_signal<bool> pclk_r{"pclk_r"}, vsync_r{"vsync_r"}, href_r{"href_r"},
-        valid_r{"valid_r"};
+        valid_r{"valid_r"}, fodd_r{"fodd_r"};
     sc_core::sc_signal<uint32_t> data_l{"data_l"}, data_r{"data_r"};
     pattern_source source_l, source_r;
     tick_clock_sc master;
@@ -78,20 +78,22 @@ struct bench : sc_core::sc_module {
           mon_r("mon_r") {
         master.clk(mclk);
         driver.oe(oe);
-        for (auto [s, pc, vs, hr, va, da, mon] :
-             {std::tuple{&left, &pclk_l, &vsync_l, &href_l, &valid_l, &data_l, &mon_l},
-              std::tuple{&right, &pclk_r, &vsync_r, &href_r, &valid_r, &data_r, &mon_r}}) {
+        for (auto [s, pc, vs, hr, va, fo, da, mon] :
+             {std::tuple{&left, &pclk_l, &vsync_l, &href_l, &valid_l, &fodd_l, &data_l, &mon_l},
+              std::tuple{&right, &pclk_r, &vsync_r, &href_r, &valid_r, &fodd_r, &data_r, &mon_r}}) {
             s->mclk(mclk);
             s->oe(oe);
             s->pclk(*pc);
             s->vsync(*vs);
             s->href(*hr);
             s->valid(*va);
+            s->fodd(*fo);
             s->data(*da);
             mon->pclk(*pc);
             mon->vsync(*vs);
             mon->href(*hr);
             mon->valid(*va);
+            mon->fodd(*fo);
             mon->data(*da);
         }
         add_left_faults(left.core());

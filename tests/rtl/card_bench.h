@@ -139,10 +139,12 @@ class card_bench {
             d.l_href = l.href;
             d.l_valid = l.valid;
             d.l_data = l.data;
+            d.l_fodd = l.fodd;
             d.r_vsync = r.vsync;
             d.r_href = r.href;
             d.r_valid = r.valid;
             d.r_data = r.data;
+            d.r_fodd = r.fodd;
         }
         if (e_edge) {
             ++m_eclk_edges;
@@ -341,13 +343,14 @@ class card_bench {
         uint32_t& serial = cam ? pr.serial_r : pr.serial_l;
         bool& known = cam ? m_serial_known_r : m_serial_known_l;
         if (line == 0 && word == 0) {
-            // Which frame is it? Search the serials after the previous pair's.
-            // Candidates: later frames of the same OE start, or early frames of later starts.
+            // Which frame is it? Search from the previous pair's serial on (a
+            // frame sent twice comes again). Candidates: later frames of the
+            // same OE start, or early frames of later starts.
             known = false;
             uint32_t from = 0;
             if (pairs.size() > 1) {
                 const pair_record& prev = pairs[pairs.size() - 2];
-                from = (cam ? prev.serial_r : prev.serial_l) + 1;
+                from = cam ? prev.serial_r : prev.serial_l;
             }
             const uint32_t start0 = from / frames_per_start;
             for (uint32_t st = start0; st < start0 + 16 && !known; ++st) {

@@ -72,6 +72,7 @@ inline sensor_layout small_layout() {
 
 struct sensor_pin_state {
     bool vsync = false, href = false, valid = false;
+    bool fodd = false;  // frame identity: toggles per new frame since the OE start
     uint8_t data = 0;
 };
 
@@ -141,6 +142,12 @@ class test_sensor {
         m_poke_value = value;
     }
 
+    // The frame is sent twice: a repeat (same pixels, same FODD) is inserted
+    // after it, in the next frame's place; the frames after it go on.
+    void repeat_frame(uint32_t frame, unsigned start = 0) { m_repeat_after = key(start, frame); }
+    // FODD inverted in every frame (a sensor one frame count out of step).
+    void invert_fodd() { m_fodd_inverted = true; }
+
     // One pixel clock. oe: the OE level this clock's rising edge sampled.
     sensor_pin_state step(bool oe) {
         const uint64_t cycle = m_cycle++;
@@ -165,6 +172,13 @@ class test_sensor {
         const sensor_pin_state pins = pins_at(m_pos);
         if (++m_pos == m_l.frame_pclks()) {
             m_pos = 0;
+            if (m_repeating) {
+                m_repeating = false;
+            } else if (key(m_starts - 1, m_frame) == m_repeat_after) {
+                m_repeating = true;  // the same frame again (m_frame unchanged)
+                m_frames.push_back({cycle + 1, frame_serial(m_starts - 1, m_frame), m_starts - 1});
+                return pins;
+            }
             ++m_frame;
             if (m_frame == m_slip_frame && m_starts - 1 == m_slip_start && m_slip_pclks > 0) {
                 m_phase = phase::gap;
@@ -190,6 +204,7 @@ class test_sensor {
         const int line = static_cast<int>(pos / m_l.line_total);
         const int col = static_cast<int>(pos % m_l.line_total);
         const uint64_t now_key = key(m_starts - 1, m_frame);
+        p.fodd = ((m_frame & 1u) != 0) != m_fodd_inverted;
         p.vsync = pos < m_l.vsync_pclks || (now_key == m_xvs_frame && pos >= m_xvs_begin &&
                                             pos < m_xvs_begin + m_l.line_total);
         const int row = line - m_l.v_start;
@@ -236,7 +251,10 @@ class test_sensor {
     unsigned m_starts = 0;
     int m_countdown = 0;
     int64_t m_pos = 0;
-    uint32_t m_frame = 0;  // frames since the current start
+    uint32_t m_frame = 0;  // frames since the current start (a repeat not counted)
+    uint64_t m_repeat_after = UINT64_MAX;
+    bool m_repeating = false;  // the current frame is the repeat
+    bool m_fodd_inverted = false;
     std::vector<frame_record> m_frames;
 };
 

@@ -142,10 +142,12 @@ class shadow_card {
         take(s.l_href, from.l_href);
         take(s.l_valid, from.l_valid);
         take(s.l_data, from.l_data);
+        take(s.l_fodd, from.l_fodd);
         take(s.r_vsync, from.r_vsync);
         take(s.r_href, from.r_href);
         take(s.r_valid, from.r_valid);
         take(s.r_data, from.r_data);
+        take(s.r_fodd, from.r_fodd);
         take(s.ce2_n, from.ce2_n);
         take(s.ce3_n, from.ce3_n);
         take(s.aoe_n, from.aoe_n);

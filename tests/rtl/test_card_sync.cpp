@@ -103,8 +103,8 @@ TEST(CardSync, AlignedStreamsPassAndEveryForwardedWordIsTheActivePixels) {
     EXPECT_EQ(b.read_reg(regs::status) & regs::status_state_mask, 3u) << "RUN";
     EXPECT_GE(pairs_ok, 7u);
     const uint32_t verdict = b.read_reg(regs::verdict);
-    EXPECT_EQ(verdict & 0xFFu, 0u) << "no cause in the last verdict; first mismatch at 0x"
-                                   << std::hex << b.read_reg(regs::mismatch_pos);
+    EXPECT_EQ(verdict & 0x3FFu, 0u) << "no cause in the last verdict; first mismatch at 0x"
+                                    << std::hex << b.read_reg(regs::mismatch_pos);
     EXPECT_EQ(verdict >> regs::verdict_frame_shift, pairs_ok - 1) << "last verdict = last frame";
 
     ASSERT_GE(b.pairs.size(), pairs_ok - 1);
@@ -144,7 +144,8 @@ struct fault_case {
 constexpr uint32_t l_win = regs::verdict_l_window_mask, r_win = regs::verdict_r_window_mask;
 constexpr uint32_t l_dark = regs::verdict_l_dark_mask, r_dark = regs::verdict_r_dark_mask;
 constexpr uint32_t l_vs = regs::verdict_l_vsync_mask, r_vs = regs::verdict_r_vsync_mask;
-constexpr uint32_t all_l = l_win | l_dark | l_vs, all_r = r_win | r_dark | r_vs;
+constexpr uint32_t l_id = regs::verdict_l_frame_id_mask, r_id = regs::verdict_r_frame_id_mask;
+constexpr uint32_t all_l = l_win | l_dark | l_vs | l_id, all_r = r_win | r_dark | r_vs | r_id;
 
 const fault_case fault_cases[] = {
     {"right starts 1 pclk late", [](bench& b) { b.right.set_start_extra({1}); }, 0, r_win | r_vs,
@@ -169,6 +170,13 @@ const fault_case fault_cases[] = {
      [](bench& b) { b.left.poke_pixel(1, 8, 1, 200); }, 1, l_dark, all_r | l_win | l_vs, true},
     {"light leak: right bottom dark row pixel reads 32 in frame 2",
      [](bench& b) { b.right.poke_pixel(2, 20, 20, 32); }, 2, r_dark, all_l | r_win | r_vs, true},
+    // A frame sent twice keeps every pin's timing and dark pixel: only its
+    // FODD, unchanged from the frame before, shows it. Seen at the frame's
+    // VSYNC rise, so none of its words is forwarded.
+    {"right sends frame 2 twice", [](bench& b) { b.right.repeat_frame(2); }, 3, r_id,
+     all_l | r_win | r_dark | r_vs, false},
+    {"left sends frame 0 twice", [](bench& b) { b.left.repeat_frame(0); }, 1, l_id,
+     all_r | l_win | l_dark | l_vs, false},
 };
 
 class CardSyncFault : public ::testing::TestWithParam<fault_case> {};
@@ -199,9 +207,9 @@ TEST_P(CardSyncFault, DetectedByTheVerdictOfTheFrameWhereItBeginsThenOeRestarts)
     EXPECT_EQ(b.read_reg(regs::mismatches), 1u);
     EXPECT_EQ(b.read_reg(regs::pairs_ok), fc.frame) << "the frames before it passed";
     std::printf(
-        "%s: verdict of frame %u causes 0x%02x, first mismatch line %u col %u, "
+        "%s: verdict of frame %u causes 0x%03x, first mismatch line %u col %u, "
         "SYNC_ERROR %.1f ns after the frame end\n",
-        fc.name, verdict >> 16, verdict & 0xFF, pos >> 16, pos & 0xFFFF,
+        fc.name, verdict >> 16, verdict & 0x3FF, pos >> 16, pos & 0xFFFF,
         (irq - end) * rtl_test::ns_per_tick);
 
     // OE restart: low for exactly OE_LOW_CYCLES pixel clocks, then the
@@ -228,6 +236,56 @@ INSTANTIATE_TEST_SUITE_P(Faults, CardSyncFault, ::testing::ValuesIn(fault_cases)
                                  if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                              return n;
                          });
+
+// CHECKS.FRAME_ID = 0 is the paper's card: the repeat passes the dark-pixel
+// check and its pair, two frames a period apart, reaches the DSP.
+TEST(CardSync, WithTheFrameIdCheckOffARepeatedFrameIsForwarded) {
+    bench b(small_options());
+    setup(b);
+    b.write_reg(regs::checks, 0);
+    EXPECT_EQ(b.read_reg(regs::checks), 0u);
+    b.right.repeat_frame(2);
+    b.reader_enabled = true;
+    b.enable(true);
+    b.run_frames(6.5);
+    EXPECT_EQ(b.read_reg(regs::mismatches), 0u);
+    EXPECT_EQ(b.read_reg(regs::retries), 0u);
+    ASSERT_GE(b.pairs.size(), 5u);
+    // Pair 3 is left frame 3 with right frame 2 again; then right is one behind.
+    EXPECT_EQ(b.pairs[3].serial_l, 3u);
+    EXPECT_EQ(b.pairs[3].serial_r, 2u);
+    EXPECT_EQ(b.pairs[4].serial_r + 1, b.pairs[4].serial_l);
+    expect_clean_protocol(b);
+}
+
+// A sensor whose frame count is one off the other's (FODD inverted) fails
+// the first frame after every OE start, both streams flagged (no history
+// says which one is off), until the retry limit; the check off lets it pass.
+TEST(CardSync, FrameIdentitiesThatDifferAtTheStartFailEveryStartUntilTheRetryLimit) {
+    for (const bool check : {true, false}) {
+        bench b(small_options());
+        setup(b);
+        b.write_reg(regs::retry_limit, 2);
+        if (!check) b.write_reg(regs::checks, 0);
+        b.right.invert_fodd();
+        b.reader_enabled = true;
+        b.enable(true);
+        b.run_frames(8);
+        if (check) {
+            EXPECT_EQ(b.read_reg(regs::mismatches), 3u);
+            EXPECT_EQ(b.read_reg(regs::retries), 2u);
+            EXPECT_EQ(b.read_reg(regs::pairs_ok), 0u);
+            EXPECT_NE(b.read_reg(regs::status) & regs::status_hard_error_mask, 0u);
+            const uint32_t verdict = b.read_reg(regs::verdict);
+            EXPECT_EQ(verdict & 0x3FFu, l_id | r_id) << std::hex << "verdict 0x" << verdict;
+            EXPECT_EQ(verdict >> regs::verdict_frame_shift, 0u);
+        } else {
+            EXPECT_EQ(b.read_reg(regs::mismatches), 0u);
+            EXPECT_GE(b.read_reg(regs::pairs_ok), 7u);
+        }
+        expect_clean_protocol(b);
+    }
+}
 
 TEST(CardSync, DarkPixelJustBelowTheThresholdPasses) {
     bench b(small_options());

@@ -27,13 +27,14 @@ const named_value card_registers[] = {
 };
 
 // VERDICT / sync-check cause bits (docs/card-registers.md).
-const char* const cause_names[8] = {"L_WINDOW", "R_WINDOW", "L_DARK",        "R_DARK",
-                                    "L_VSYNC",  "R_VSYNC",  "START_TIMEOUT", "OVERFLOW"};
+const char* const cause_names[10] = {"L_WINDOW",   "R_WINDOW",  "L_DARK",        "R_DARK",
+                                     "L_VSYNC",    "R_VSYNC",   "START_TIMEOUT", "OVERFLOW",
+                                     "L_FRAME_ID", "R_FRAME_ID"};
 
 std::string causes_text(unsigned v) {
     if (v == 0) return "ok";
     std::string s;
-    for (int b = 0; b < 8; ++b) {
+    for (int b = 0; b < 10; ++b) {
         if (!((v >> b) & 1u)) continue;
         if (!s.empty()) s += "|";
         s += cause_names[b];
@@ -69,8 +70,8 @@ std::vector<translate_filter> translate_filters(const stereosim_fw_descriptor& f
                            "0 IDLE\n1 OE_LOW\n2 WAIT_VSYNC\n3 RUN\n4 HARD_ERROR\n"});
     }
     {
-        std::string t = "# sync check causes / VERDICT bits 7..0 (docs/card-registers.md)\n";
-        for (unsigned v = 0; v < 256; ++v) t += std::to_string(v) + " " + causes_text(v) + "\n";
+        std::string t = "# sync check causes / VERDICT bits 9..0 (docs/card-registers.md)\n";
+        for (unsigned v = 0; v < 1024; ++v) t += std::to_string(v) + " " + causes_text(v) + "\n";
         filters.push_back({"verdict.txt", t});
     }
     {
@@ -145,12 +146,16 @@ const char* const group_order[] = {"sensor L", "sensor R", "sync check", "FIFOs"
                                    "faults"};
 
 // A first view into the card's RTL hierarchy (the file holds all of it, in
-// GTKWave's tree): sync_check's position counters, the OE controller, the
-// left FIFO's pointers on both sides (rtl/sync_check.v, oe_control.v,
-// async_fifo.v).
+// GTKWave's tree): sync_check's position counters and each stream's last
+// frame identity, the OE controller, the left FIFO's pointers on both sides
+// (rtl/sync_check.v, oe_control.v, async_fifo.v).
 const platform::trace_signal card_rtl_view[] = {
     {"card.card_top.u_capture.u_check", "col_q", 16, trace_format::decimal},
     {"card.card_top.u_capture.u_check", "line_q", 16, trace_format::decimal},
+    {"card.card_top.u_capture.u_check", "l_id_prev", 1, trace_format::bits},
+    {"card.card_top.u_capture.u_check", "r_id_prev", 1, trace_format::bits},
+    {"card.card_top.u_capture.u_check", "l_id_seen", 1, trace_format::bits},
+    {"card.card_top.u_capture.u_check", "r_id_seen", 1, trace_format::bits},
     {"card.card_top.u_capture.u_oe", "state_q", 3, trace_format::oe_state},
     {"card.card_top.u_fifo_l", "wr_ptr", 18, trace_format::decimal},
     {"card.card_top.u_fifo_l", "rd_ptr", 18, trace_format::decimal},

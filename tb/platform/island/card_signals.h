@@ -41,7 +41,9 @@ template <class card_model>
 void read_card_internals(const card_model& card, card_signals* s) {
     const auto& root = *card.rootp;
     s->oe_state = root.card_top__DOT__u_capture__DOT__u_oe__DOT__state_q;
-    s->sync_causes = root.card_top__DOT__u_capture__DOT__u_check__DOT__causes_q;
+    // In VERDICT's bit order: the frame-identity causes are its bits 9..8.
+    const uint32_t causes = root.card_top__DOT__u_capture__DOT__u_check__DOT__causes_q;
+    s->sync_causes = (causes & 0x3Fu) | ((causes >> 6) & 3u) << 8;
     s->verdict = root.card_top__DOT__p_verdict_causes;
     s->fifo_overflow[0] = root.card_top__DOT__l_overflow != 0;
     s->fifo_overflow[1] = root.card_top__DOT__r_overflow != 0;

@@ -82,7 +82,7 @@ class pin_trace {
 // 0..STEREOSIM_FW_MAX_STAGES - 1).
 inline constexpr uint64_t stage_idle = 15;
 // card.emif_slave.register while CE2 is high: no card register (the map
-// ends at word 38, rtl/card_regs.csv); its filter says "(no access)".
+// ends at word 39, rtl/card_regs.csv); its filter says "(no access)".
 inline constexpr uint64_t register_no_access = 63;
 
 // The signals of a run, in declaration order: one table for every
@@ -95,12 +95,14 @@ enum class trace_pin : uint8_t {
     l_valid,
     l_data,
     l_oe,
+    l_fodd,
     r_pclk,
     r_vsync,
     r_href,
     r_valid,
     r_data,
     r_oe,
+    r_fodd,
     // card: master pixel clock, interrupt pins, the EMIF slave's outputs
     card_pclk,
     ext_int4,

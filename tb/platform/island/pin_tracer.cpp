@@ -41,6 +41,7 @@ void pin_tracer::begin(const emif::emif_pins& dsp) {
     // The values before the first edge (tick -1: before any window).
     for (int c = 0; c < 2; ++c) {
         for (int k = 0; k < 5; ++k) set(-1, static_cast<trace_pin>(sensor_base(c) + k), 0);
+        set(-1, static_cast<trace_pin>(sensor_base(c) + 6), 0);  // FODD
     }
     set(-1, trace_pin::card_pclk, 0);
     set(-1, trace_pin::eclkout, 0);
@@ -123,6 +124,7 @@ void pin_tracer::sensor_edge(int c, ticks rise, uint16_t bits, ticks fall) {
     defer(fall, static_cast<trace_pin>(base + 2), word.href() ? 1 : 0);
     defer(fall, static_cast<trace_pin>(base + 3), word.valid() ? 1 : 0);
     defer(fall, static_cast<trace_pin>(base + 4), word.data());
+    defer(fall, static_cast<trace_pin>(base + 6), word.fodd() ? 1 : 0);
 }
 
 void pin_tracer::sensor_pins(int c, ticks t, bool pclk, uint16_t bits) {
@@ -133,6 +135,7 @@ void pin_tracer::sensor_pins(int c, ticks t, bool pclk, uint16_t bits) {
     set(t, static_cast<trace_pin>(base + 2), word.href() ? 1 : 0);
     set(t, static_cast<trace_pin>(base + 3), word.valid() ? 1 : 0);
     set(t, static_cast<trace_pin>(base + 4), word.data());
+    set(t, static_cast<trace_pin>(base + 6), word.fodd() ? 1 : 0);
 }
 
 void pin_tracer::emif(ticks t, const emif::emif_pins& p) {

@@ -4,8 +4,8 @@
 // compares the outputs with the verilated card's for the same stimulus).
 //
 // Stimulus (rtl/icarus/card_stimulus.h writes it), text, one line each:
-//   line 1: the inputs before reset (17 hex fields, the order below)
-//   then one line per clock event: <time fs> <edges hex: 1 pclk, 2 eclk> <17 inputs>
+//   line 1: the inputs before reset (19 hex fields, the order below)
+//   then one line per clock event: <time fs> <edges hex: 1 pclk, 2 eclk> <19 inputs>
 // The time is simtime::to_fs(tick) plus a fixed offset: every edge keeps its
 // exact tick (1/18 ns) rounded once to the femtosecond.
 //
@@ -22,7 +22,7 @@
 `timescale 1fs / 1fs
 module card_replay_tb;
     reg         rst_n, pclk, eclk;
-    reg         l_vsync, l_href, l_valid, r_vsync, r_href, r_valid;
+    reg         l_vsync, l_href, l_valid, l_fodd, r_vsync, r_href, r_valid, r_fodd;
     reg  [ 7:0] l_data, r_data;
     reg         ce2_n, ce3_n, aoe_n, are_n, awe_n;
     reg  [19:0] ea;
@@ -33,14 +33,15 @@ module card_replay_tb;
 
     card_top dut (
         .rst_n(rst_n), .pclk(pclk), .sensor_oe(sensor_oe),
-        .l_vsync(l_vsync), .l_href(l_href), .l_valid(l_valid), .l_data(l_data),
-        .r_vsync(r_vsync), .r_href(r_href), .r_valid(r_valid), .r_data(r_data),
+        .l_vsync(l_vsync), .l_href(l_href), .l_valid(l_valid), .l_data(l_data), .l_fodd(l_fodd),
+        .r_vsync(r_vsync), .r_href(r_href), .r_valid(r_valid), .r_data(r_data), .r_fodd(r_fodd),
         .eclk(eclk), .ce2_n(ce2_n), .ce3_n(ce3_n), .aoe_n(aoe_n), .are_n(are_n), .awe_n(awe_n),
         .ea(ea), .be_n(be_n), .ed_in(ed_in), .ed_out(ed_out), .ed_oe(ed_oe), .ardy(ardy),
         .ext_int4(ext_int4), .ext_int5(ext_int5), .ext_int6(ext_int6));
 
     // One event's inputs, read ahead of their application.
-    reg         n_rst_n, n_l_vsync, n_l_href, n_l_valid, n_r_vsync, n_r_href, n_r_valid;
+    reg         n_rst_n, n_l_vsync, n_l_href, n_l_valid, n_l_fodd, n_r_vsync, n_r_href, n_r_valid;
+    reg         n_r_fodd;
     reg  [ 7:0] n_l_data, n_r_data;
     reg         n_ce2_n, n_ce3_n, n_aoe_n, n_are_n, n_awe_n;
     reg  [19:0] n_ea;
@@ -55,7 +56,9 @@ module card_replay_tb;
         begin
             rst_n = n_rst_n;
             l_vsync = n_l_vsync; l_href = n_l_href; l_valid = n_l_valid; l_data = n_l_data;
+            l_fodd = n_l_fodd;
             r_vsync = n_r_vsync; r_href = n_r_href; r_valid = n_r_valid; r_data = n_r_data;
+            r_fodd = n_r_fodd;
             ce2_n = n_ce2_n; ce3_n = n_ce3_n; aoe_n = n_aoe_n; are_n = n_are_n; awe_n = n_awe_n;
             ea = n_ea; be_n = n_be_n; ed_in = n_ed_in;
         end
@@ -72,9 +75,9 @@ module card_replay_tb;
             $display("card_replay_tb: cannot open the stimulus or the output file");
             $finish;
         end
-        n = $fscanf(fi, "%h %h %h %h %h %h %h %h %h %h %h %h %h %h %h %h %h\n",
-                    n_rst_n, n_l_vsync, n_l_href, n_l_valid, n_l_data,
-                    n_r_vsync, n_r_href, n_r_valid, n_r_data,
+        n = $fscanf(fi, "%h %h %h %h %h %h %h %h %h %h %h %h %h %h %h %h %h %h %h\n",
+                    n_rst_n, n_l_vsync, n_l_href, n_l_valid, n_l_data, n_l_fodd,
+                    n_r_vsync, n_r_href, n_r_valid, n_r_data, n_r_fodd,
                     n_ce2_n, n_ce3_n, n_aoe_n, n_are_n, n_awe_n, n_ea, n_be_n, n_ed_in);
         pclk = 0;
         eclk = 0;
@@ -84,11 +87,11 @@ module card_replay_tb;
         #10 rst_n = 1;
         events = 0;
         forever begin
-            n = $fscanf(fi, "%d %h %h %h %h %h %h %h %h %h %h %h %h %h %h %h %h %h %h\n",
-                        at_fs, edges, n_rst_n, n_l_vsync, n_l_href, n_l_valid, n_l_data,
-                        n_r_vsync, n_r_href, n_r_valid, n_r_data,
+            n = $fscanf(fi, "%d %h %h %h %h %h %h %h %h %h %h %h %h %h %h %h %h %h %h %h %h\n",
+                        at_fs, edges, n_rst_n, n_l_vsync, n_l_href, n_l_valid, n_l_data, n_l_fodd,
+                        n_r_vsync, n_r_href, n_r_valid, n_r_data, n_r_fodd,
                         n_ce2_n, n_ce3_n, n_aoe_n, n_are_n, n_awe_n, n_ea, n_be_n, n_ed_in);
-            if (n != 19) begin
+            if (n != 21) begin
                 $fclose(fi);
                 $fclose(fo);
                 $display("card_replay_tb: %0d events replayed, %0t fs", events, $time);

@@ -25,8 +25,8 @@ namespace icarus_ref {
 // The card's inputs other than the clocks (card_top.v's port order).
 struct card_inputs {
     uint8_t rst_n = 1;
-    uint8_t l_vsync = 0, l_href = 0, l_valid = 0, l_data = 0;
-    uint8_t r_vsync = 0, r_href = 0, r_valid = 0, r_data = 0;
+    uint8_t l_vsync = 0, l_href = 0, l_valid = 0, l_data = 0, l_fodd = 0;
+    uint8_t r_vsync = 0, r_href = 0, r_valid = 0, r_data = 0, r_fodd = 0;
     uint8_t ce2_n = 1, ce3_n = 1, aoe_n = 1, are_n = 1, awe_n = 1;
     uint32_t ea = 0;  // EA[21:2]
     uint8_t be_n = 0xF;
@@ -58,10 +58,12 @@ card_inputs read_inputs(const Model& d) {
     i.l_href = d.l_href;
     i.l_valid = d.l_valid;
     i.l_data = d.l_data;
+    i.l_fodd = d.l_fodd;
     i.r_vsync = d.r_vsync;
     i.r_href = d.r_href;
     i.r_valid = d.r_valid;
     i.r_data = d.r_data;
+    i.r_fodd = d.r_fodd;
     i.ce2_n = d.ce2_n;
     i.ce3_n = d.ce3_n;
     i.aoe_n = d.aoe_n;
@@ -80,10 +82,12 @@ void apply_inputs(Model& d, const card_inputs& i) {
     d.l_href = i.l_href;
     d.l_valid = i.l_valid;
     d.l_data = i.l_data;
+    d.l_fodd = i.l_fodd;
     d.r_vsync = i.r_vsync;
     d.r_href = i.r_href;
     d.r_valid = i.r_valid;
     d.r_data = i.r_data;
+    d.r_fodd = i.r_fodd;
     d.ce2_n = i.ce2_n;
     d.ce3_n = i.ce3_n;
     d.aoe_n = i.aoe_n;
@@ -116,9 +120,10 @@ inline std::string format_outputs(const card_outputs& o) {
 }
 
 inline void print_inputs(std::FILE* f, const card_inputs& i) {
-    std::fprintf(f, "%x %x %x %x %02x %x %x %x %02x %x %x %x %x %x %05x %x %08x\n", i.rst_n,
-                 i.l_vsync, i.l_href, i.l_valid, i.l_data, i.r_vsync, i.r_href, i.r_valid, i.r_data,
-                 i.ce2_n, i.ce3_n, i.aoe_n, i.are_n, i.awe_n, i.ea, i.be_n, i.ed_in);
+    std::fprintf(f, "%x %x %x %x %02x %x %x %x %x %02x %x %x %x %x %x %x %05x %x %08x\n", i.rst_n,
+                 i.l_vsync, i.l_href, i.l_valid, i.l_data, i.l_fodd, i.r_vsync, i.r_href, i.r_valid,
+                 i.r_data, i.r_fodd, i.ce2_n, i.ce3_n, i.aoe_n, i.are_n, i.awe_n, i.ea, i.be_n,
+                 i.ed_in);
 }
 
 inline bool write_stimulus(const std::string& path, const card_inputs& before_reset,

@@ -531,11 +531,13 @@ void fast_island<card_model>::apply_sensor_word(int c, const pending_word& w) {
         d.l_href = word.href();
         d.l_valid = word.valid();
         d.l_data = data;
+        d.l_fodd = word.fodd();
     } else {
         d.r_vsync = word.vsync();
         d.r_href = word.href();
         d.r_valid = word.valid();
         d.r_data = data;
+        d.r_fodd = word.fodd();
     }
 }
 

@@ -36,7 +36,7 @@ using platform::trace_pin;
 
 // The sensor's pins as one word (sensor::pin_word).
 struct sensor_wires {
-    sig_bool pclk, vsync, href, valid;
+    sig_bool pclk, vsync, href, valid, fodd;
     sig_u32 data;
     sig_u32 card_data;  // after the board wire (wire_fault), when one is modelled
     explicit sensor_wires(const std::string& p)
@@ -44,13 +44,15 @@ struct sensor_wires {
           vsync((p + "_vsync").c_str()),
           href((p + "_href").c_str()),
           valid((p + "_valid").c_str()),
+          fodd((p + "_fodd").c_str()),
           data((p + "_data").c_str()),
           card_data((p + "_card_data").c_str()) {}
     uint16_t word() const {
         return static_cast<uint16_t>((data.read() & sensor::pin_word::data_mask) |
                                      (href.read() ? sensor::pin_word::href_bit : 0) |
                                      (vsync.read() ? sensor::pin_word::vsync_bit : 0) |
-                                     (valid.read() ? sensor::pin_word::valid_bit : 0));
+                                     (valid.read() ? sensor::pin_word::valid_bit : 0) |
+                                     (fodd.read() ? sensor::pin_word::fodd_bit : 0));
     }
 };
 
@@ -169,6 +171,7 @@ class pins_island : public platform::island {
             s.vsync.bind(w.vsync);
             s.href.bind(w.href);
             s.valid.bind(w.valid);
+            s.fodd.bind(w.fodd);
             s.data.bind(w.data);
         }
     }
@@ -205,10 +208,12 @@ class pins_island : public platform::island {
         d.l_href.bind(m_wires[0].href);
         d.l_valid.bind(m_wires[0].valid);
         d.l_data.bind(wire[0] ? m_wires[0].card_data : m_wires[0].data);
+        d.l_fodd.bind(m_wires[0].fodd);
         d.r_vsync.bind(m_wires[1].vsync);
         d.r_href.bind(m_wires[1].href);
         d.r_valid.bind(m_wires[1].valid);
         d.r_data.bind(wire[1] ? m_wires[1].card_data : m_wires[1].data);
+        d.r_fodd.bind(m_wires[1].fodd);
         d.eclk.bind(m_eclk);
         d.ce2_n.bind(m_ce[2]);
         d.ce3_n.bind(m_ce[3]);
