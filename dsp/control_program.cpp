@@ -164,6 +164,7 @@ void control_program::configure_card() {
     card_write(card_regs::retry_limit, c.retry_limit);
     card_write(card_regs::oe_low_cycles, c.oe_low_cycles);
     card_write(card_regs::start_timeout, c.start_timeout);
+    card_write(card_regs::checks, c.checks);
     const uint32_t enable = card_regs::irq_enable_frame_ready_mask |
                             card_regs::irq_enable_sync_error_mask |
                             card_regs::irq_enable_overflow_mask;

@@ -104,6 +104,9 @@ struct card_setup {
     uint32_t retry_limit = card_regs::retry_limit_reset;
     uint32_t oe_low_cycles = card_regs::oe_low_cycles_reset;
     uint32_t start_timeout = card_regs::start_timeout_reset;
+    // CHECKS: FRAME_ID on compares the sensors' frame identity (0: the
+    // paper's card, dark pixels only).
+    uint32_t checks = card_regs::checks_reset;
 };
 
 // The card's async timing on CE2 / CE3 in ECLK cycles, read and write alike

@@ -66,6 +66,10 @@ struct reference_keys {
             integer("card_start_timeout", 1, 65535, card_regs::start_timeout_reset,
                     "START_TIMEOUT programmed: lines the card waits for the first VSYNC after OE "
                     "rises");
+        keys[key_card_frame_id_check] =
+            flag("card_frame_id_check", true,
+                 "CHECKS.FRAME_ID programmed: the card compares the sensors' frame identity "
+                 "(0: the paper's card, which forwards a repeated frame)");
         keys[key_capture_cycles] =
             integer("capture_cycles", 0, 1000000, static_cast<double>(program.capture_cycles),
                     "CPU cycles per pair charged to stage capture (interrupts, header, re-arm)");
@@ -177,6 +181,7 @@ control_program_config reference_config(const stereosim_board& board, const doub
     c.pipeline.frame_memory = static_cast<cost::memory>(values[key_frame_memory]);
     c.card = card_of(board);
     c.card.start_timeout = static_cast<uint32_t>(values[key_card_start_timeout]);
+    c.card.checks = values[key_card_frame_id_check] != 0 ? card_regs::checks_frame_id_mask : 0u;
     c.dsk = static_cast<dsk_version>(board.dsk_version);
     c.cpu_mhz = static_cast<uint32_t>(board.cpu_hz / 1000000);
     c.card_timing = card_bus_timing{board.card_setup, board.card_strobe, board.card_hold};

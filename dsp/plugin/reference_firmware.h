@@ -19,6 +19,7 @@ enum reference_key : uint32_t {
     key_frame_memory,
     key_watchdog_ms,
     key_card_start_timeout,
+    key_card_frame_id_check,
     key_capture_cycles,
     key_hard_error_rearms,
     key_rearm_on_overflow,

@@ -116,6 +116,16 @@ TEST(cli_bad_input, out_of_range_values) {
     expect_bad("run --frames 4 --bogus", "--bogus");  // CLI11: not an option
 }
 
+// The fault contract's rule 1 has no exception with the card's frame-identity
+// check on; a run that turns it off must say it judges the paper's card.
+TEST(cli_bad_input, frame_id_check_off_under_the_strict_contract) {
+    expect_bad(
+        "run --frames 4 --fault extra-frame:sensor=R@frame=2 "
+        "--set firmware.card_frame_id_check=false",
+        "firmware.card_frame_id_check=0 turns the card's frame-identity check off, but "
+        "--fault asks the contract for rule 1 without exception: add --paper-card");
+}
+
 TEST(cli_bad_input, file_options_without_out) {
     const run_output r = run_binary("run --frames 1 --timeline-csv");
     EXPECT_EQ(r.status, 2) << r.err;

@@ -403,6 +403,41 @@ TEST(FaultContractRules, TheVerdictBlamesTheFaultedSensor) {
     EXPECT_FALSE(faults::check(d, drift, params(), good_run()).ok);
 }
 
+// Rule 1 without exception: with the card's frame-identity check on, a frame
+// sent twice must be detected (R_FRAME_ID names R) and its pair never used;
+// judged as the paper's card, the stale pair is the named hole, not a pass.
+TEST(FaultContractRules, AnExtraFrameIsDetectedUnlessThePaperCardIsJudged) {
+    const faults::fault_spec extra = spec_of("extra-frame:sensor=R@frame=2");
+    faults::fault_observation detected = good_skew();
+    detected.causes = 0x200;  // R_FRAME_ID
+    const faults::verdict strict = faults::check(detected, extra, params(), good_run());
+    EXPECT_TRUE(strict.ok) << (strict.violations.empty() ? "" : strict.violations[0]);
+    detected.causes = 0x100;  // L_FRAME_ID blames the wrong sensor
+    EXPECT_TRUE(has_violation(faults::check(detected, extra, params(), good_run()),
+                              "do not name the faulted sensor R"));
+
+    // Not detected, the repeat's pair used: the old exception is gone.
+    faults::fault_observation used;
+    used.in_effect = true;
+    used.onset_ms = 49;
+    used.unsynced_pairs_used = used.stale_pairs_used = 1;
+    used.frame_id_check = false;  // the firmware had cleared CHECKS.FRAME_ID
+    faults::run_observation run = good_run();
+    run.unsynced_pairs_used = 1;
+    const faults::verdict v = faults::check(used, extra, params(), run);
+    EXPECT_EQ(v.actual, outcome::stale_pair);
+    EXPECT_TRUE(has_violation(v, "rule 1: 1 pair(s) out of step used"));
+    EXPECT_TRUE(has_violation(v, "CHECKS.FRAME_ID = 0 at the onset"));
+
+    faults::contract_params paper = params();
+    paper.paper_card = true;
+    const faults::verdict hole = faults::check(used, extra, paper, run);
+    EXPECT_EQ(hole.actual, outcome::stale_pair);
+    EXPECT_FALSE(hole.ok);
+    EXPECT_TRUE(has_violation(hole, "rule 1: the paper's hole: 1 pair(s)"));
+    EXPECT_FALSE(has_violation(hole, "out of step used")) << "the hole, named once";
+}
+
 // Ten intermittent faults, seed 13 of the full campaign: R's one-pixel skew
 // of 319.5 ms is checked at 344.027 ms, the very tick L's frame 14 was
 // dropped, so L's drop is detected by a verdict that names R (0x22). That

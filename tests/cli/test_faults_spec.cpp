@@ -224,7 +224,11 @@ TEST(FaultContract, ThresholdsFollowTheCardAndTheProfile) {
     EXPECT_EQ(nominal("emif-wait:cycles=1", p), outcome::harmless);
     EXPECT_EQ(nominal("emif-wait:cycles=40,ce=2", p), outcome::harmless);
     EXPECT_EQ(nominal("skew:sensor=R,lines=3", p), outcome::resync);
-    EXPECT_EQ(nominal("extra-frame:sensor=L", p), outcome::stale_pair);
+    // The card's frame-identity check sees a repeat; the paper's card cannot.
+    EXPECT_EQ(nominal("extra-frame:sensor=L", p), outcome::resync);
+    faults::contract_params paper = p;
+    paper.paper_card = true;
+    EXPECT_EQ(nominal("extra-frame:sensor=L", paper), outcome::harmless);
     EXPECT_EQ(nominal("dead:sensor=R", p), outcome::hard_error);
     // oe-stuck: a hard error when the truth says a restart is due (the onset's
     // start was out of step), whatever the card chose to do.

@@ -46,7 +46,7 @@ std::string this_program() {
 // One child: `binary run ...`, output to the run's folder.
 // The `stereosim run` options of a campaign run (after "run").
 std::vector<std::string> run_args(const campaign_run& r, const std::string& dir,
-                                  const std::string& firmware) {
+                                  const campaign_options& o) {
     std::vector<std::string> args = {"--quiet",
                                      "--frames",
                                      std::to_string(r.frames),
@@ -64,17 +64,18 @@ std::vector<std::string> run_args(const campaign_run& r, const std::string& dir,
         args.push_back("--set");
         args.push_back(setting);
     }
-    if (!firmware.empty()) {
+    if (!o.firmware.empty()) {
         args.push_back("--firmware");
-        args.push_back(firmware);
+        args.push_back(o.firmware);
     }
+    if (o.paper_card) args.push_back("--paper-card");
     return args;
 }
 
 pid_t spawn_run(const campaign_options& o, const campaign_run& r, const std::string& dir,
                 std::string* error) {
     std::vector<std::string> args = {o.binary, "run"};
-    for (std::string& a : run_args(r, dir, o.firmware)) args.push_back(std::move(a));
+    for (std::string& a : run_args(r, dir, o)) args.push_back(std::move(a));
     return cli::spawn_logged(args, dir + "/log.txt", error);
 }
 
@@ -264,7 +265,7 @@ pid_t start_group(const campaign_options& o, const std::vector<campaign_run>& pl
     const simtime::ticks period = platform::platform_config{}.period;
     std::vector<snapshot_member> members;
     for (size_t i : u.runs)
-        members.push_back({run_args(plan[i], run_dir(i), o.firmware), run_dir(i),
+        members.push_back({run_args(plan[i], run_dir(i), o), run_dir(i),
                            snapshot_trigger_of(specs_of(plan[i]), period)});
     std::fflush(nullptr);
     const pid_t pid = cli::fork_untied();
@@ -478,9 +479,10 @@ bool rows_to_keep(const campaign_options& o, std::map<int, json>* kept, std::str
     if (previous.value("campaign", std::string()) != o.name ||
         previous.value("seeds", -1) != o.seeds || previous.value("shard", std::string()) != shard ||
         previous.value("match", std::string()) != o.match ||
+        previous.value("paper_card", false) != o.paper_card ||
         cli::firmware_of_document(previous) != cli::firmware_identity_of(o.firmware, error)) {
-        *error = "--resume: " + path + " is not this campaign (campaign, seeds, shard, match " +
-                 "or firmware differ)";
+        *error = "--resume: " + path + " is not this campaign (campaign, seeds, shard, match, " +
+                 "--paper-card or firmware differ)";
         return false;
     }
     std::map<int, campaign_run> planned;
@@ -532,6 +534,7 @@ std::vector<campaign_row> run_campaign(const campaign_options& given, std::FILE*
     json doc = campaign_document(o.name, std::to_string(o.shard) + "/" + std::to_string(o.shards),
                                  o.seeds, o.jobs, o.snapshots, wall, std::move(all));
     doc["match"] = o.match;
+    doc["paper_card"] = o.paper_card;
     std::string unloadable;  // the command checked the plugin before the runs
     doc["firmware"] = cli::firmware_identity_of(o.firmware, &unloadable);
     const int signo = interrupt.caught();

@@ -44,11 +44,12 @@ struct campaign_options {
     int seeds = 0;
     int jobs = 2;
     int shard = 1, shards = 1;
-    std::string out_dir;     // default: campaign-<name>
-    std::string binary;      // the stereosim to spawn (default: this program)
-    std::string firmware;    // every run's --firmware (absolute path); empty: the built-in one
-    bool keep_runs = false;  // keep each run's folder (report.json, frames.csv)
-    std::string match;       // only runs whose spec contains this ("clean": clean runs)
+    std::string out_dir;      // default: campaign-<name>
+    std::string binary;       // the stereosim to spawn (default: this program)
+    std::string firmware;     // every run's --firmware (absolute path); empty: the built-in one
+    bool paper_card = false;  // every run's --paper-card: the card without its frame-identity check
+    bool keep_runs = false;   // keep each run's folder (report.json, frames.csv)
+    std::string match;        // only runs whose spec contains this ("clean": clean runs)
     // Runs of one seed, length and card setting whose faults all start later
     // share their fault-free prefix (snapshots.h): run_group runs such a
     // group in the leader process (run_snapshot_group with this program's

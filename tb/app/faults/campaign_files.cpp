@@ -264,6 +264,7 @@ bool merge_campaign_shards(const std::vector<json>& shards, json* merged, std::s
     bool complete = true;
     for (const json& s : shards) complete = complete && s.value("complete", true);
     (*merged)["match"] = first.value("match", std::string());
+    (*merged)["paper_card"] = first.value("paper_card", false);
     (*merged)["firmware"] = cli::firmware_of_document(first);
     (*merged)["complete"] = complete;
     return true;

@@ -142,12 +142,25 @@ expectation timing_rule(const fault_observation& f) {
     return e;
 }
 
-expectation extra_frame_rule() {
+expectation extra_frame_rule(const fault_observation& f, const contract_params& p) {
     expectation e;
-    e.allowed = {outcome::stale_pair, outcome::harmless};
-    e.why =
-        "the repeat has exactly the reference's timing: no dark-pixel check can see it; "
-        "at most one pair (the repeat's) is used one scene frame stale";
+    if (p.paper_card) {
+        // Nothing on the pins tells the repeat apart: its pair is the hole.
+        e.allowed = {outcome::harmless};
+        e.why =
+            "the paper's card (frame-identity check off): the repeat has exactly the "
+            "reference's timing and dark pixels, so its pair is used one scene frame stale: "
+            "the paper's hole, never a pass";
+        return e;
+    }
+    e = timing_rule(f);
+    if (!f.onset_start_out_of_step && !f.onset_frame_cut)
+        e.why =
+            "the card's frame-identity check sees the repeat's FODD unchanged at its VSYNC "
+            "rise: the verdict of that common frame flags the sensor, the pair is discarded, "
+            "OE restarts, the next in-step start recovers";
+    if (!f.frame_id_check)
+        e.why += "; the DSP had turned the check off (CHECKS.FRAME_ID = 0 at the onset)";
     return e;
 }
 
@@ -276,7 +289,7 @@ expectation expected_for(const fault_observation& f, const fault_spec& s, const 
         case fault_type::glitch:
             return timing_rule(f);
         case fault_type::extra_frame:
-            return extra_frame_rule();
+            return extra_frame_rule(f, p);
         case fault_type::drift:
             return drift_rule(s, p);
         case fault_type::dark_leak:
@@ -361,8 +374,10 @@ void invariants(const run_observation& run, verdict* v, bool allow_stale) {
 // The VERDICT cause bits that blame one sensor (docs/card-registers.md).
 uint32_t sensor_causes(int camera) {
     using namespace dsp::card_regs;
-    return camera == 0 ? verdict_l_window_mask | verdict_l_dark_mask | verdict_l_vsync_mask
-                       : verdict_r_window_mask | verdict_r_dark_mask | verdict_r_vsync_mask;
+    return camera == 0 ? verdict_l_window_mask | verdict_l_dark_mask | verdict_l_vsync_mask |
+                             verdict_l_frame_id_mask
+                       : verdict_r_window_mask | verdict_r_dark_mask | verdict_r_vsync_mask |
+                             verdict_r_frame_id_mask;
 }
 
 }  // namespace
@@ -464,6 +479,9 @@ std::string outcome_violation(const fault_observation& f, const contract_params&
     if (v.actual == outcome::not_in_effect)
         return "rule 9: the fault never took effect during the run (a trigger after its end at " +
                std::to_string(run.end_ms) + " ms?): it proves nothing";
+    if (v.actual == outcome::stale_pair && p.paper_card)
+        return "rule 1: the paper's hole: " + std::to_string(f.stale_pairs_used) +
+               " pair(s) holding the repeated frame used one scene frame stale (" + e.why + ")";
     return std::string("per kind: outcome ") + outcome_name(v.actual) + ", contract " +
            v.expected_text + " (" + e.why + ")";
 }
@@ -527,7 +545,8 @@ verdict check(const fault_observation& f, const fault_spec& s, const contract_pa
         v.ok = false;
         v.violations.push_back(why);
     };
-    const bool stale = s.type == fault_type::extra_frame;
+    // Only the paper's card keeps rule 1's exception: its stale pair, judged below.
+    const bool stale = s.type == fault_type::extra_frame && p.paper_card;
     invariants(run, &v, stale);
     // Another fault of the run that must end in a give-up explains this
     // one's hard_error (a bus fault under a persistent sensor fault).

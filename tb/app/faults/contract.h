@@ -32,7 +32,8 @@ enum class outcome : uint8_t {
     harmless,       // not detected, no pair out of step: pairs keep being used
     resync,         // detected by the sync check, the pair discarded, OE restarted, recovered
     hard_error,     // never recovers: the firmware reports hard_error within the bound
-    stale_pair,     // extra-frame: timing identical, undetectable; the repeat's pair may be used
+    stale_pair,     // extra-frame on the paper's card (no frame-identity check): the repeat's pair
+                    // used
     overflow,       // bus fault: FIFO overflow (EXT_INT6), pairs discarded, no sync effect
     overrun,        // CPU fault: pairs dropped by the overrun policy, no sync effect
     pending,        // detected; the run ended before recovery was due: never a pass
@@ -73,6 +74,9 @@ struct contract_params {
     double eclk_per_word = 14;       // the card's programmed read (CECTL, docs/card.md)
     double eclk_ns = 10;
     double period_ms = 24.5;
+    // Judged as the paper's card (--paper-card): no frame-identity check, so
+    // extra-frame's stale pair is its named hole (docs/fault-contract.md).
+    bool paper_card = false;
 };
 contract_params params_for(const platform::platform_config& config);
 // The same for a run: the recovery policy the firmware under test declared

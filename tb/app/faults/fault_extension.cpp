@@ -9,6 +9,7 @@
 #include "tb/app/cli/firmware_keys.h"
 #include "tb/app/faults/fault_report.h"
 #include "tb/app/faults/fault_spec.h"
+#include "tb/platform/platform_config.h"
 
 namespace faults {
 
@@ -24,7 +25,9 @@ std::string cause_names(uint32_t causes) {
                                                       {verdict_l_vsync_mask, "L_VSYNC"},
                                                       {verdict_r_vsync_mask, "R_VSYNC"},
                                                       {verdict_start_timeout_mask, "START_TIMEOUT"},
-                                                      {verdict_overflow_mask, "OVERFLOW"}};
+                                                      {verdict_overflow_mask, "OVERFLOW"},
+                                                      {verdict_l_frame_id_mask, "L_FRAME_ID"},
+                                                      {verdict_r_frame_id_mask, "R_FRAME_ID"}};
     std::string out;
     for (const auto& [mask, name] : names)
         if (causes & mask) out += (out.empty() ? "" : "|") + std::string(name);
@@ -44,6 +47,10 @@ class fault_extension final : public cli::run_extension {
             run.add_option("--hard-error-rearms", m_rearms,
                            "the firmware's re-arms after a card hard error before it gives up "
                            "(firmware.hard_error_rearms; default: the firmware's own)");
+        run.add_flag("--paper-card", m_paper_card,
+                     "judge the paper's card: the firmware turns the card's frame-identity check "
+                     "off (firmware.card_frame_id_check=0) and extra-frame's stale pair is the "
+                     "named hole of rule 1 (docs/fault-contract.md)");
     }
 
     bool configure(const cli::run_setup& setup, platform::platform_config& config,
@@ -60,14 +67,24 @@ class fault_extension final : public cli::run_extension {
             return false;
         }
         config.card_retry_limit = static_cast<uint32_t>(m_retry_limit);
-        if (m_rearms_option->count() > 0) {
-            // The firmware's key, checked against its descriptor like --set.
-            cli::run_setup with = setup;
+        // The firmware's keys these options set, checked against its descriptor like --set.
+        cli::run_setup with = setup;
+        if (m_rearms_option->count() > 0)
             with.firmware_settings.emplace_back("firmware.hard_error_rearms", m_rearms);
-            if (!cli::resolve_firmware_settings(with, &config.firmware_settings, error)) {
-                *error = "--hard-error-rearms: " + *error;
-                return false;
-            }
+        if (m_paper_card) with.firmware_settings.emplace_back("firmware.card_frame_id_check", 0.0);
+        if (with.firmware_settings.size() != setup.firmware_settings.size() &&
+            !cli::resolve_firmware_settings(with, &config.firmware_settings, error)) {
+            *error = (m_paper_card ? "--paper-card: " : "--hard-error-rearms: ") + *error;
+            return false;
+        }
+        if (!m_paper_card && !m_specs.empty() &&
+            platform::firmware_key(config, "card_frame_id_check", 1.0) == 0.0) {
+            // Rule 1 has no exception with the check on; off, only the paper's card is judged.
+            *error =
+                "firmware.card_frame_id_check=0 turns the card's frame-identity check off, but "
+                "--fault asks the contract for rule 1 without exception: add --paper-card to "
+                "judge the paper's card";
+            return false;
         }
         return true;
     }
@@ -76,7 +93,7 @@ class fault_extension final : public cli::run_extension {
 
     void add_to_report(nlohmann::json& report, const cli::run_result& run) override {
         if (!m_top) return;
-        m_result = evaluate(*m_top, run.score, m_specs);
+        m_result = evaluate(*m_top, run.score, m_specs, m_paper_card);
         faults::add_to_report(report, m_result);
     }
 
@@ -122,6 +139,7 @@ class fault_extension final : public cli::run_extension {
     int m_retry_limit = static_cast<int>(dsp::card_regs::retry_limit_reset);
     int m_rearms = 0;
     CLI::Option* m_rearms_option = nullptr;
+    bool m_paper_card = false;
     std::vector<fault_spec> m_specs;
     platform::platform_top* m_top = nullptr;
     fault_run_result m_result;

@@ -39,6 +39,7 @@ json params_json(const contract_params& p) {
             {"eclk_per_word", p.eclk_per_word},
             {"eclk_ns", p.eclk_ns},
             {"period_ms", p.period_ms},
+            {"paper_card", p.paper_card},
             {"hard_error_bound_periods", hard_error_bound_periods(p)}};
 }
 
@@ -56,6 +57,7 @@ contract_params params_of(const json& j) {
     p.eclk_per_word = num(j, "eclk_per_word", p.eclk_per_word);
     p.eclk_ns = num(j, "eclk_ns", p.eclk_ns);
     p.period_ms = num(j, "period_ms", p.period_ms);
+    p.paper_card = j.value("paper_card", false);
     return p;
 }
 
@@ -137,6 +139,7 @@ json fault_json(const std::string& spec_text, const fault_observation& f, const 
         {"report_ms", null_if(f.reported, f.report_ms)},
         {"onset_start_out_of_step", f.onset_start_out_of_step},
         {"onset_frame_cut", f.onset_frame_cut},
+        {"frame_id_check", f.frame_id_check},
         {"onset_phases", f.onset_phases},
         {"resumed_ms", null_if(f.resumed_ms >= 0, f.resumed_ms)},
         {"pair_ms_min", null_if(f.pair_ms_min >= 0, f.pair_ms_min)},
@@ -279,6 +282,7 @@ fault_observation observation_of(const json& f, const fault_spec& spec) {
     o.report_ms = num(f, "report_ms");
     o.onset_start_out_of_step = f.value("onset_start_out_of_step", false);
     o.onset_frame_cut = f.value("onset_frame_cut", false);
+    o.frame_id_check = f.value("frame_id_check", true);
     if (f.contains("onset_phases") && f["onset_phases"].is_array())
         for (const json& p : f["onset_phases"])
             if (p.is_string()) o.onset_phases.push_back(p.get<std::string>());

@@ -31,8 +31,9 @@ struct fault_run_result {
     bool contract_ok() const;
 };
 
+// paper_card: judged as the paper's card (contract_params::paper_card).
 fault_run_result evaluate(platform::platform_top& top, const platform::scoreboard_report& score,
-                          const std::vector<fault_spec>& specs);
+                          const std::vector<fault_spec>& specs, bool paper_card = false);
 
 // report["faults"] and report["fault_run"].
 void add_to_report(nlohmann::json& report, const fault_run_result& r);

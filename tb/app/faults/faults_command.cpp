@@ -39,6 +39,10 @@ faults_command::faults_command(CLI::App& app, extensions_factory make_extensions
         ->add_option("--firmware", m_firmware,
                      "the firmware under test in every run, a plugin .so (docs/firmware-abi.md)")
         ->type_name("PATH");
+    m_app->add_flag(
+        "--paper-card", m_paper_card,
+        "every run judges the paper's card: its frame-identity check off, "
+        "extra-frame's stale pair the named hole of rule 1 (stereosim run --paper-card)");
     m_app->add_flag("--stop-on-violation", m_stop_on_violation,
                     "end the campaign at the first run that breaks the contract");
     m_app->add_flag("--no-snapshots", m_no_snapshots,
@@ -67,6 +71,7 @@ int faults_command::emit_slurm(const campaign_options& o) {
     if (o.keep_runs) command.push_back("--keep-runs");
     if (!o.snapshots) command.push_back("--no-snapshots");
     if (o.stop_on_violation) command.push_back("--stop-on-violation");
+    if (o.paper_card) command.push_back("--paper-card");
     const std::string sbatch =
         cli::write_slurm_array(m_slurm, "stereosim-faults", command, o.out_dir, &error);
     if (sbatch.empty()) return bad_input(error);
@@ -114,6 +119,7 @@ int faults_command::execute() {
     }
     o.snapshots = !m_no_snapshots;
     o.stop_on_violation = m_stop_on_violation;
+    o.paper_card = m_paper_card;
     if (m_make_extensions) {
         o.run_group = [this](const std::vector<snapshot_member>& members, const std::string& binary,
                              const std::string& leader_log, const job_tokens& tokens) {

@@ -41,6 +41,7 @@ class faults_command {
     std::string m_resume;  // --resume DIR
     std::string m_binary;
     std::string m_firmware;
+    bool m_paper_card = false;
     bool m_stop_on_violation = false;
     std::string m_match;
     cli::slurm_options m_slurm;

@@ -19,6 +19,8 @@ struct fault_observation {
     bool in_effect = false;    // it acted during the run
     double onset_ms = -1;      // when it took effect
     int64_t onset_frame = -1;  // sensor faults: the sensor's frame (truth index); else sync period
+    // The card's CHECKS.FRAME_ID at the onset, as the DSP had programmed it.
+    bool frame_id_check = true;
     // Detection: the first SYNC_ERROR (sensor faults), OVERFLOW (emif-wait)
     // or pair_dropped report (cpu-slow) at or after the onset.
     bool detected = false;

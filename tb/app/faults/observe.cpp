@@ -10,6 +10,7 @@
 #include <cmath>
 #include <set>
 
+#include "dsp/card_regs.h"
 #include "model/sensor/truth.h"
 
 namespace faults {
@@ -17,6 +18,8 @@ namespace faults {
 namespace {
 
 constexpr simtime::ticks never = INT64_MAX;
+// VERDICT bits 9..0: every cause, without FRAME.
+constexpr uint32_t verdict_causes_mask = 0x3FFu;
 
 double to_ms(simtime::ticks t) {
     return static_cast<double>(t) / (static_cast<double>(simtime::ticks_per_ns) * 1e6);
@@ -107,6 +110,16 @@ bool find_onset(const platform::platform_top& top, const fault_spec& s, simtime:
         }
     }
     return false;
+}
+
+// Whether the card's frame-identity check was on at `t`: CHECKS.FRAME_ID
+// as the DSP's last write before it left it (the reset value before any).
+bool frame_id_check_at(platform::platform_top& top, simtime::ticks t) {
+    uint32_t checks = dsp::card_regs::checks_reset;
+    if (top.firmware_started())
+        for (const platform::register_write& w : top.probe().card_checks_writes())
+            if (w.tick <= t) checks = w.value;
+    return (checks & dsp::card_regs::checks_frame_id_mask) != 0;
 }
 
 // The OE start (index into score.starts) a tick belongs to, or -1.
@@ -409,6 +422,7 @@ fault_observation observe_fault(const run_sources& in, const fault_spec& s, size
     }
     f.onset_ms = to_ms(*onset);
     f.onset_frame = frame;
+    f.frame_id_check = frame_id_check_at(in.top, *onset);
     in.top.mark_fault(*onset, static_cast<uint8_t>(index), static_cast<uint32_t>(s.type),
                       static_cast<uint32_t>(std::max<int64_t>(frame, 0)));
     const simtime::ticks detect = detect_fault(in, s, *onset, &f);
@@ -419,7 +433,7 @@ fault_observation observe_fault(const run_sources& in, const fault_spec& s, size
         f.frames_to_detect = static_cast<int>((detect - *onset) / in.period);
         for (const platform::fw_event& e : in.events)
             if (e.event.kind == STEREOSIM_EV_SYNC_ERROR && e.tick >= detect) {
-                f.causes = e.event.value & 0xFFu;
+                f.causes = e.event.value & verdict_causes_mask;
                 break;
             }
         find_report(s, in.events, detect, &f);
@@ -574,10 +588,11 @@ run_observation observe(platform::platform_top& top, const platform::scoreboard_
 
 // Declared in tb/app/faults/fault_report.h; here so that only this file needs SystemC.
 fault_run_result evaluate(platform::platform_top& top, const platform::scoreboard_report& score,
-                          const std::vector<fault_spec>& specs) {
+                          const std::vector<fault_spec>& specs, bool paper_card) {
     fault_run_result r;
     r.specs = specs;
     r.params = params_for(top.config(), top.firmware_policy(), top.engine().cectl(3));
+    r.params.paper_card = paper_card;
     r.run = observe(top, score, specs);
     note_expected_give_ups(specs, r.params, &r.run);
     if (specs.empty()) r.verdicts.push_back(check_clean(r.run));
