@@ -137,6 +137,38 @@ TEST(FaultCli, ABrokenContractIsInTheExitStatus) {
     EXPECT_FALSE(read_json(out / "report.json")["fault_run"]["contract_ok"].get<bool>());
 }
 
+// The case: a frame the right sensor sends twice. The card's
+// frame-identity check flags it (R_FRAME_ID, bit 9; never a left cause) and
+// no unsynced pair is used; judged as the paper's card (check off) the
+// repeat's pair is used one period stale: the named hole, exit 4.
+TEST(FaultCli, ARepeatedFrameIsCaughtUnlessThePaperCardIsJudged) {
+    const std::string fault = " --quiet --frames 10 --fault extra-frame:sensor=R@frame=2 --out ";
+    const fs::path out = scratch("extra-frame");
+    const command_result r = run("run" + fault + out.string());
+    ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.output;
+    const json f = read_json(out / "report.json")["faults"][0];
+    EXPECT_EQ(f["outcome"], "resync");
+    EXPECT_EQ(f["detected_by"], "sync_error");
+    EXPECT_LE(f["frames_to_detect"].get<int>(), 1);
+    EXPECT_EQ(f["verdict_causes"].get<int>() & 0x3FF, 0x200) << f.dump();
+    EXPECT_EQ(f["unsynced_pairs_used"], 0);
+    EXPECT_TRUE(f["contract_ok"].get<bool>()) << f.dump();
+
+    const fs::path paper_out = scratch("extra-frame-paper");
+    const command_result paper = run("run --paper-card" + fault + paper_out.string());
+    EXPECT_EQ(paper.exit_code, 4) << paper.output;
+    EXPECT_NE(without_sanitizer_notes(paper.output).find("rule 1: the paper's hole"),
+              std::string::npos)
+        << paper.output;
+    const json report = read_json(paper_out / "report.json");
+    const json p = report["faults"][0];
+    EXPECT_EQ(p["outcome"], "stale_pair");
+    EXPECT_FALSE(p["detected"].get<bool>());
+    EXPECT_EQ(p["unsynced_pairs_used"], 1);
+    EXPECT_FALSE(p["frame_id_check"].get<bool>()) << "the firmware turned the check off";
+    EXPECT_TRUE(report["fault_run"]["contract_params"]["paper_card"].get<bool>());
+}
+
 // A sensor that dies by time acts at the next OE rise, which it ignores: that
 // start can never be in step, so the give-up is what the truth requires, and
 // a bus fault's hard error in the same run is explained by it. Here the rise

@@ -71,7 +71,8 @@ class fault_extension final : public cli::run_extension {
         cli::run_setup with = setup;
         if (m_rearms_option->count() > 0)
             with.firmware_settings.emplace_back("firmware.hard_error_rearms", m_rearms);
-        if (m_paper_card) with.firmware_settings.emplace_back("firmware.card_frame_id_check", 0.0);
+        if (m_paper_card)
+            with.firmware_settings.emplace_back("firmware.card_frame_id_check", false);
         if (with.firmware_settings.size() != setup.firmware_settings.size() &&
             !cli::resolve_firmware_settings(with, &config.firmware_settings, error)) {
             *error = (m_paper_card ? "--paper-card: " : "--hard-error-rearms: ") + *error;
