@@ -172,6 +172,7 @@ TEST(CardConfig, EveryConfigRegisterResetsAndReadsBackItsFieldBits) {
          regs::oe_low_cycles_value_mask},
         {"START_TIMEOUT", regs::start_timeout, regs::start_timeout_reset,
          regs::start_timeout_value_mask},
+        {"CHECKS", regs::checks, regs::checks_reset, regs::checks_frame_id_mask},
     };
     bench b(small_options(rtl_test::small_layout()));
     for (const rw_register& r : registers) {
