@@ -81,6 +81,13 @@ void probe_hal::write32(uint32_t address, uint32_t value) {
     leave();
 }
 
+uint32_t probe_hal::card_checks_at(simtime::ticks t) const {
+    uint32_t checks = dsp::card_regs::checks_reset;
+    for (const register_write& w : m_card_checks)
+        if (w.tick <= t) checks = w.value;
+    return checks;
+}
+
 uint8_t* probe_hal::memory(uint32_t address, uint32_t bytes) {
     if (m_memory_hook) m_memory_hook(address, bytes);
     return m_inner.memory(address, bytes);

@@ -107,8 +107,9 @@ class probe_hal {
     // Every write of the card's CTRL (ENABLE: OE on / off), the truth the
     // contract judges the firmware's re-arms by, whatever it reports.
     const std::vector<register_write>& card_control_writes() const { return m_card_control; }
-    // Every write of the card's CHECKS: which pair checks were on when.
-    const std::vector<register_write>& card_checks_writes() const { return m_card_checks; }
+    // The card's CHECKS at `t`: the DSP's last write at or before it, else
+    // the register's reset value.
+    uint32_t card_checks_at(simtime::ticks t) const;
     const std::vector<fw_result>& results() const { return m_results; }
     uint64_t stage_cycles(int stage) const { return m_stage_cycles[stage]; }
     // SDRAM bytes charged per stage, whole run.

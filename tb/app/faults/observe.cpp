@@ -112,16 +112,6 @@ bool find_onset(const platform::platform_top& top, const fault_spec& s, simtime:
     return false;
 }
 
-// Whether the card's frame-identity check was on at `t`: CHECKS.FRAME_ID
-// as the DSP's last write before it left it (the reset value before any).
-bool frame_id_check_at(platform::platform_top& top, simtime::ticks t) {
-    uint32_t checks = dsp::card_regs::checks_reset;
-    if (top.firmware_started())
-        for (const platform::register_write& w : top.probe().card_checks_writes())
-            if (w.tick <= t) checks = w.value;
-    return (checks & dsp::card_regs::checks_frame_id_mask) != 0;
-}
-
 // The OE start (index into score.starts) a tick belongs to, or -1.
 int start_of(const platform::scoreboard_report& score, simtime::ticks t) {
     int found = -1;
@@ -422,7 +412,8 @@ fault_observation observe_fault(const run_sources& in, const fault_spec& s, size
     }
     f.onset_ms = to_ms(*onset);
     f.onset_frame = frame;
-    f.frame_id_check = frame_id_check_at(in.top, *onset);
+    f.frame_id_check = !in.top.firmware_started() || (in.top.probe().card_checks_at(*onset) &
+                                                      dsp::card_regs::checks_frame_id_mask);
     in.top.mark_fault(*onset, static_cast<uint8_t>(index), static_cast<uint32_t>(s.type),
                       static_cast<uint32_t>(std::max<int64_t>(frame, 0)));
     const simtime::ticks detect = detect_fault(in, s, *onset, &f);
