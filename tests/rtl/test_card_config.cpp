@@ -1,7 +1,8 @@
 // The card's configuration registers over their range, not only at the
 // values the other tests and the platform use (DARK_THRESHOLD 32, even
 // H_START): every bit of DARK_THRESHOLD decides a dark pixel exactly at the
-// threshold, and odd window offsets check as cleanly as even ones. Golden
+// threshold, and odd window offsets and line totals check as cleanly as
+// even ones. Golden
 // values: the register map's definitions (docs/card-registers.md), checked
 // against the test sensors' own layout. Written for the RTL mutants
 // (docs/mutants.md): a comparator input with one bit flipped only when
@@ -71,20 +72,24 @@ TEST(CardConfig, EveryDarkThresholdFlagsAPixelAtItAndNotBelowIt) {
     }
 }
 
-// Aligned streams with the window placed at odd columns and lines: no
-// mismatch, and every word the DSP model reads is the active pixels.
+// Aligned streams with the window placed at odd columns and lines, and lines
+// of an odd number of pixel clocks (49 and 51 around the small layout's 50):
+// no mismatch, and every word the DSP model reads is the active pixels.
 TEST(CardConfig, OddWindowOffsetsPassAndForwardTheActivePixels) {
     struct offsets {
-        int h_start, v_start, dark_left, dark_top;
+        int h_start, v_start, dark_left, dark_top, line_total;
     };
-    for (const offsets o : {offsets{1, 1, 4, 2}, offsets{3, 3, 3, 1}, offsets{5, 2, 1, 3}}) {
+    for (const offsets o :
+         {offsets{1, 1, 4, 2, 50}, offsets{3, 3, 3, 1, 49}, offsets{5, 2, 1, 3, 51}}) {
         rtl_test::sensor_layout layout = rtl_test::small_layout();
         layout.h_start = o.h_start;
         layout.v_start = o.v_start;
         layout.dark_left = o.dark_left;
         layout.dark_top = o.dark_top;
-        const std::string name =
-            "H_START " + std::to_string(o.h_start) + ", V_START " + std::to_string(o.v_start);
+        layout.line_total = o.line_total;
+        const std::string name = "H_START " + std::to_string(o.h_start) + ", V_START " +
+                                 std::to_string(o.v_start) + ", LINE_TOTAL " +
+                                 std::to_string(o.line_total);
         ASSERT_LE(layout.h_start + layout.readout_cols(), layout.line_total) << name;
         ASSERT_LE(layout.v_start + layout.readout_rows(), layout.frame_lines) << name;
         {  // one card model alive at a time: with two, a model's
