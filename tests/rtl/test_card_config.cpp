@@ -12,6 +12,7 @@
 
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "Vcard_small.h"
 #include "tests/rtl/card_bench.h"
@@ -35,11 +36,18 @@ struct dark_run {
     uint32_t mismatch_pos = 0;
 };
 
-// Readout pixel (row, col) of the left sensor's frame 1 reads `value`.
+struct register_write {
+    uint32_t offset, value;
+};
+
+// Readout pixel (row, col) of the left sensor's frame 1 reads `value`;
+// `writes` follow the layout's registers.
 dark_run run_with_left_pixel(const rtl_test::sensor_layout& layout, uint32_t threshold, int row,
-                             int col, uint8_t value) {
+                             int col, uint8_t value,
+                             const std::vector<register_write>& writes = {}) {
     bench b(small_options(layout));
     b.configure_layout(b.opt.layout);
+    for (const register_write& w : writes) b.write_reg(w.offset, w.value);
     b.write_reg(regs::dark_threshold, threshold);
     b.left.poke_pixel(1, row, col, value);
     b.enable(true);
@@ -197,3 +205,43 @@ TEST(CardConfig, EveryConfigRegisterResetsAndReadsBackItsFieldBits) {
 }
 
 }  // namespace
+
+// The window registers are 16-bit counts (docs/card-registers.md): any
+// high bit of one moves the window the card expects past the small layout's
+// 50 x 25 pclk frame (bits 6-15 of a column count, 5-15 of a line count),
+// so both streams' HREF disagree with it: a window mismatch on each (a
+// dark region grown over the active pixels flags them dark too).
+TEST(CardConfig, EveryBitOfTheWindowRegistersMovesTheWindow) {
+    const rtl_test::sensor_layout layout = rtl_test::small_layout();
+    struct window_register {
+        const char* name;
+        uint32_t offset;
+        int base;
+        bool column;
+    };
+    const window_register window[] = {
+        {"H_START", regs::h_start, layout.h_start, true},
+        {"DARK_COLS_LEFT", regs::dark_cols_left, layout.dark_left, true},
+        {"BORDER_COLS_LEFT", regs::border_cols_left, layout.border_left, true},
+        {"ACTIVE_COLS", regs::active_cols, layout.active_cols, true},
+        {"BORDER_COLS_RIGHT", regs::border_cols_right, layout.border_right, true},
+        {"DARK_COLS_RIGHT", regs::dark_cols_right, layout.dark_right, true},
+        {"V_START", regs::v_start, layout.v_start, false},
+        {"DARK_ROWS_TOP", regs::dark_rows_top, layout.dark_top, false},
+        {"BORDER_ROWS_TOP", regs::border_rows_top, layout.border_top, false},
+        {"ACTIVE_ROWS", regs::active_rows, layout.active_rows, false},
+        {"BORDER_ROWS_BOTTOM", regs::border_rows_bottom, layout.border_bottom, false},
+        {"DARK_ROWS_BOTTOM", regs::dark_rows_bottom, layout.dark_bottom, false},
+    };
+    const uint32_t both_windows = regs::verdict_l_window_mask | regs::verdict_r_window_mask;
+    for (const window_register& w : window) {
+        for (int bit = w.column ? 6 : 5; bit < 16; ++bit) {
+            const uint32_t value = static_cast<uint32_t>(w.base) + (1u << bit);
+            const dark_run moved = run_with_left_pixel(layout, 32, 0, 0, rtl_test::test_black_level,
+                                                       {register_write{w.offset, value}});
+            const std::string name = std::string(w.name) + " = " + std::to_string(value);
+            EXPECT_GE(moved.mismatches, 1u) << name;
+            EXPECT_EQ(moved.verdict_causes & both_windows, both_windows) << name;
+        }
+    }
+}
