@@ -27,6 +27,7 @@ constexpr uint32_t pixels_per_word = 0x00000004u;
 // ID (RO): Card identification
 constexpr uint32_t id = 0x00u;
 constexpr uint32_t id_reset = 0x57E50002u;
+constexpr uint32_t id_fields_mask = 0xFFFFFFFFu;  // every field's bits
 constexpr uint32_t id_magic_shift = 16;  // Constant 0x57E5
 constexpr uint32_t id_magic_mask = 0xFFFF0000u;
 constexpr uint32_t id_version_shift = 0;  // RTL version of this register map
@@ -35,12 +36,14 @@ constexpr uint32_t id_version_mask = 0x0000FFFFu;
 // CTRL (RW): Control
 constexpr uint32_t ctrl = 0x04u;
 constexpr uint32_t ctrl_reset = 0x00000000u;
+constexpr uint32_t ctrl_fields_mask = 0x00000001u;  // every field's bits
 constexpr uint32_t ctrl_enable_shift = 0;  // 1 = run: assert OE and check and forward frames. 0 = stop: OE low and state IDLE (clears a hard sync error)
 constexpr uint32_t ctrl_enable_mask = 0x00000001u;
 
 // STATUS (RO): Live status
 constexpr uint32_t status = 0x08u;
 constexpr uint32_t status_reset = 0x00000000u;
+constexpr uint32_t status_fields_mask = 0x0000333Fu;  // every field's bits
 constexpr uint32_t status_state_shift = 0;  // OE controller state: 0 IDLE 1 OE_LOW (restart gap) 2 WAIT_VSYNC 3 RUN 4 HARD_ERROR
 constexpr uint32_t status_state_mask = 0x00000007u;
 constexpr uint32_t status_oe_shift = 3;  // Level of the OE pin driven to both sensors
@@ -61,6 +64,7 @@ constexpr uint32_t status_empty_r_mask = 0x00002000u;
 // IRQ_STATUS (W1C): Interrupt causes seen since last cleared (sticky)
 constexpr uint32_t irq_status = 0x0Cu;
 constexpr uint32_t irq_status_reset = 0x00000000u;
+constexpr uint32_t irq_status_fields_mask = 0x00000007u;  // every field's bits
 constexpr uint32_t irq_status_frame_ready_shift = 0;  // A checked frame pair is complete in both FIFOs (EXT_INT4)
 constexpr uint32_t irq_status_frame_ready_mask = 0x00000001u;
 constexpr uint32_t irq_status_sync_error_shift = 1;  // A frame failed the dark-pixel sync check or start timed out (EXT_INT5)
@@ -71,6 +75,7 @@ constexpr uint32_t irq_status_overflow_mask = 0x00000004u;
 // IRQ_ENABLE (RW): Interrupt pin enables (same bits as IRQ_STATUS)
 constexpr uint32_t irq_enable = 0x10u;
 constexpr uint32_t irq_enable_reset = 0x00000007u;
+constexpr uint32_t irq_enable_fields_mask = 0x00000007u;  // every field's bits
 constexpr uint32_t irq_enable_frame_ready_shift = 0;  // Pulse EXT_INT4 when a frame pair is ready
 constexpr uint32_t irq_enable_frame_ready_mask = 0x00000001u;
 constexpr uint32_t irq_enable_sync_error_shift = 1;  // Pulse EXT_INT5 on a sync error
@@ -81,6 +86,7 @@ constexpr uint32_t irq_enable_overflow_mask = 0x00000004u;
 // VERDICT (RO): Verdict of the last completed common frame (0 causes = pair good)
 constexpr uint32_t verdict = 0x14u;
 constexpr uint32_t verdict_reset = 0x00000000u;
+constexpr uint32_t verdict_fields_mask = 0xFFFF03FFu;  // every field's bits
 constexpr uint32_t verdict_l_window_shift = 0;  // Left stream: a pixel (HREF and VALID) where the layout has none or none where it has one
 constexpr uint32_t verdict_l_window_mask = 0x00000001u;
 constexpr uint32_t verdict_r_window_shift = 1;  // Right stream: pixel window mismatch
@@ -107,6 +113,7 @@ constexpr uint32_t verdict_frame_mask = 0xFFFF0000u;
 // MISMATCH_POS (RO): Common-frame position of the first mismatch of the last rejected frame
 constexpr uint32_t mismatch_pos = 0x18u;
 constexpr uint32_t mismatch_pos_reset = 0x00000000u;
+constexpr uint32_t mismatch_pos_fields_mask = 0xFFFFFFFFu;  // every field's bits
 constexpr uint32_t mismatch_pos_col_shift = 0;  // Column (pixel clock within the line)
 constexpr uint32_t mismatch_pos_col_mask = 0x0000FFFFu;
 constexpr uint32_t mismatch_pos_line_shift = 16;  // Line within the common frame
@@ -170,114 +177,133 @@ constexpr uint32_t fifo_depth = 0x50u;
 // DARK_THRESHOLD (RW): Dark-pixel threshold
 constexpr uint32_t dark_threshold = 0x54u;
 constexpr uint32_t dark_threshold_reset = 0x00000020u;
+constexpr uint32_t dark_threshold_fields_mask = 0x000000FFu;  // every field's bits
 constexpr uint32_t dark_threshold_value_shift = 0;  // A pixel at a dark position must read below this value
 constexpr uint32_t dark_threshold_value_mask = 0x000000FFu;
 
 // H_START (RW): Pixel clocks from a line start to its first readout pixel (HREF rise): href_start of the sensor profile
 constexpr uint32_t h_start = 0x58u;
 constexpr uint32_t h_start_reset = 0x00000000u;
+constexpr uint32_t h_start_fields_mask = 0x0000FFFFu;  // every field's bits
 constexpr uint32_t h_start_value_shift = 0;  // Pixel clocks
 constexpr uint32_t h_start_value_mask = 0x0000FFFFu;
 
 // DARK_COLS_LEFT (RW): Dark columns at the start of every readout line
 constexpr uint32_t dark_cols_left = 0x5Cu;
 constexpr uint32_t dark_cols_left_reset = 0x00000010u;
+constexpr uint32_t dark_cols_left_fields_mask = 0x0000FFFFu;  // every field's bits
 constexpr uint32_t dark_cols_left_value_shift = 0;  // Columns
 constexpr uint32_t dark_cols_left_value_mask = 0x0000FFFFu;
 
 // BORDER_COLS_LEFT (RW): Light-sensitive columns between the left dark columns and the active window (checked present and not forwarded)
 constexpr uint32_t border_cols_left = 0x60u;
 constexpr uint32_t border_cols_left_reset = 0x00000000u;
+constexpr uint32_t border_cols_left_fields_mask = 0x0000FFFFu;  // every field's bits
 constexpr uint32_t border_cols_left_value_shift = 0;  // Columns
 constexpr uint32_t border_cols_left_value_mask = 0x0000FFFFu;
 
 // ACTIVE_COLS (RW): Active columns per line (a multiple of 4)
 constexpr uint32_t active_cols = 0x64u;
 constexpr uint32_t active_cols_reset = 0x00000280u;
+constexpr uint32_t active_cols_fields_mask = 0x0000FFFFu;  // every field's bits
 constexpr uint32_t active_cols_value_shift = 0;  // Columns
 constexpr uint32_t active_cols_value_mask = 0x0000FFFFu;
 
 // BORDER_COLS_RIGHT (RW): Light-sensitive columns after the active window
 constexpr uint32_t border_cols_right = 0x68u;
 constexpr uint32_t border_cols_right_reset = 0x00000000u;
+constexpr uint32_t border_cols_right_fields_mask = 0x0000FFFFu;  // every field's bits
 constexpr uint32_t border_cols_right_value_shift = 0;  // Columns
 constexpr uint32_t border_cols_right_value_mask = 0x0000FFFFu;
 
 // DARK_COLS_RIGHT (RW): Dark columns at the end of every readout line
 constexpr uint32_t dark_cols_right = 0x6Cu;
 constexpr uint32_t dark_cols_right_reset = 0x00000000u;
+constexpr uint32_t dark_cols_right_fields_mask = 0x0000FFFFu;  // every field's bits
 constexpr uint32_t dark_cols_right_value_shift = 0;  // Columns
 constexpr uint32_t dark_cols_right_value_mask = 0x0000FFFFu;
 
 // LINE_TOTAL (RW): Pixel clocks per line including blanking
 constexpr uint32_t line_total = 0x70u;
 constexpr uint32_t line_total_reset = 0x00000320u;
+constexpr uint32_t line_total_fields_mask = 0x0000FFFFu;  // every field's bits
 constexpr uint32_t line_total_value_shift = 0;  // Pixel clocks
 constexpr uint32_t line_total_value_mask = 0x0000FFFFu;
 
 // V_START (RW): Lines from the VSYNC rise (line 0) to the first readout row: first_row_line of the sensor profile
 constexpr uint32_t v_start = 0x74u;
 constexpr uint32_t v_start_reset = 0x0000001Bu;
+constexpr uint32_t v_start_fields_mask = 0x0000FFFFu;  // every field's bits
 constexpr uint32_t v_start_value_shift = 0;  // Lines
 constexpr uint32_t v_start_value_mask = 0x0000FFFFu;
 
 // DARK_ROWS_TOP (RW): Dark rows at the start of the readout
 constexpr uint32_t dark_rows_top = 0x78u;
 constexpr uint32_t dark_rows_top_reset = 0x00000008u;
+constexpr uint32_t dark_rows_top_fields_mask = 0x0000FFFFu;  // every field's bits
 constexpr uint32_t dark_rows_top_value_shift = 0;  // Rows
 constexpr uint32_t dark_rows_top_value_mask = 0x0000FFFFu;
 
 // BORDER_ROWS_TOP (RW): Light-sensitive rows between the top dark rows and the active window
 constexpr uint32_t border_rows_top = 0x7Cu;
 constexpr uint32_t border_rows_top_reset = 0x00000000u;
+constexpr uint32_t border_rows_top_fields_mask = 0x0000FFFFu;  // every field's bits
 constexpr uint32_t border_rows_top_value_shift = 0;  // Rows
 constexpr uint32_t border_rows_top_value_mask = 0x0000FFFFu;
 
 // ACTIVE_ROWS (RW): Active rows per frame
 constexpr uint32_t active_rows = 0x80u;
 constexpr uint32_t active_rows_reset = 0x000001E0u;
+constexpr uint32_t active_rows_fields_mask = 0x0000FFFFu;  // every field's bits
 constexpr uint32_t active_rows_value_shift = 0;  // Rows
 constexpr uint32_t active_rows_value_mask = 0x0000FFFFu;
 
 // BORDER_ROWS_BOTTOM (RW): Light-sensitive rows after the active window
 constexpr uint32_t border_rows_bottom = 0x84u;
 constexpr uint32_t border_rows_bottom_reset = 0x00000000u;
+constexpr uint32_t border_rows_bottom_fields_mask = 0x0000FFFFu;  // every field's bits
 constexpr uint32_t border_rows_bottom_value_shift = 0;  // Rows
 constexpr uint32_t border_rows_bottom_value_mask = 0x0000FFFFu;
 
 // DARK_ROWS_BOTTOM (RW): Dark rows at the end of the readout
 constexpr uint32_t dark_rows_bottom = 0x88u;
 constexpr uint32_t dark_rows_bottom_reset = 0x00000000u;
+constexpr uint32_t dark_rows_bottom_fields_mask = 0x0000FFFFu;  // every field's bits
 constexpr uint32_t dark_rows_bottom_value_shift = 0;  // Rows
 constexpr uint32_t dark_rows_bottom_value_mask = 0x0000FFFFu;
 
 // FRAME_LINES (RW): Lines per frame including vertical blanking
 constexpr uint32_t frame_lines = 0x8Cu;
 constexpr uint32_t frame_lines_reset = 0x0000020Du;
+constexpr uint32_t frame_lines_fields_mask = 0x0000FFFFu;  // every field's bits
 constexpr uint32_t frame_lines_value_shift = 0;  // Lines
 constexpr uint32_t frame_lines_value_mask = 0x0000FFFFu;
 
 // RETRY_LIMIT (RW): OE restarts allowed after consecutive failed checks before HARD_ERROR
 constexpr uint32_t retry_limit = 0x90u;
 constexpr uint32_t retry_limit_reset = 0x00000008u;
+constexpr uint32_t retry_limit_fields_mask = 0x000000FFu;  // every field's bits
 constexpr uint32_t retry_limit_value_shift = 0;  // Restarts
 constexpr uint32_t retry_limit_value_mask = 0x000000FFu;
 
 // OE_LOW_CYCLES (RW): Pixel clocks OE is held low on a restart (0 acts as 1)
 constexpr uint32_t oe_low_cycles = 0x94u;
 constexpr uint32_t oe_low_cycles_reset = 0x00000320u;
+constexpr uint32_t oe_low_cycles_fields_mask = 0x0000FFFFu;  // every field's bits
 constexpr uint32_t oe_low_cycles_value_shift = 0;  // Pixel clocks
 constexpr uint32_t oe_low_cycles_value_mask = 0x0000FFFFu;
 
 // START_TIMEOUT (RW): Lines to wait for the first VSYNC after OE rises (default 2 frames)
 constexpr uint32_t start_timeout = 0x98u;
 constexpr uint32_t start_timeout_reset = 0x0000041Au;
+constexpr uint32_t start_timeout_fields_mask = 0x0000FFFFu;  // every field's bits
 constexpr uint32_t start_timeout_value_shift = 0;  // Lines
 constexpr uint32_t start_timeout_value_mask = 0x0000FFFFu;
 
 // CHECKS (RW): Optional pair checks beside the dark-pixel check
 constexpr uint32_t checks = 0x9Cu;
 constexpr uint32_t checks_reset = 0x00000001u;
+constexpr uint32_t checks_fields_mask = 0x00000001u;  // every field's bits
 constexpr uint32_t checks_frame_id_shift = 0;  // 1 = compare the sensors' frame identity (FODD) per frame: a repeated or out-of-step frame fails the pair (VERDICT L_FRAME_ID and R_FRAME_ID). 0 = the paper's card: the dark-pixel check only
 constexpr uint32_t checks_frame_id_mask = 0x00000001u;
 

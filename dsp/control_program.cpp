@@ -31,8 +31,9 @@ constexpr uint32_t channel_bit_high(int channel) {
     return channel >= 32 ? 1u << (channel - 32) : 0u;
 }
 
-// VERDICT bits 9..0, every cause (docs/card-registers.md): a pair with any is not used.
-constexpr uint32_t verdict_causes_mask = 0x000003FFu;
+// Every VERDICT field but FRAME is a cause (docs/card-registers.md): a pair with any is not used.
+constexpr uint32_t verdict_causes_mask =
+    card_regs::verdict_fields_mask & ~card_regs::verdict_frame_mask;
 constexpr uint32_t timer1 = timer::base1;
 
 }  // namespace

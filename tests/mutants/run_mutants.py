@@ -224,7 +224,8 @@ def snapshot_working_tree(repo=REPO):
 def mutated_contents(mutant, snapshot):
     """{repository path: new bytes} of the files the mutation changes. A
     firmware patch is applied with `patch -p1` to copies of its files in a
-    scratch directory; an error there is an error of the catalogue."""
+    scratch directory, without fuzz (a patch whose context drifted could
+    mutate the wrong line); an error there is an error of the catalogue."""
     if not mutant.is_patch():
         if not mutant.source.is_file():
             raise RuntimeError(f"mutated file {mutant.source} missing")
@@ -236,8 +237,8 @@ def mutated_contents(mutant, snapshot):
                 raise RuntimeError(f"patch targets {target}, not in the working tree")
             (Path(scratch) / target).parent.mkdir(parents=True, exist_ok=True)
             (Path(scratch) / target).write_bytes(snapshot[target][0])
-        done = subprocess.run(["patch", "-p1", "--batch", "--forward", "--no-backup-if-mismatch",
-                               "-i", str(mutant.source)],
+        done = subprocess.run(["patch", "-p1", "--batch", "--forward", "--fuzz=0",
+                               "--no-backup-if-mismatch", "-i", str(mutant.source)],
                               cwd=scratch, capture_output=True, text=True)
         if done.returncode != 0:
             raise RuntimeError("patch does not apply: " +

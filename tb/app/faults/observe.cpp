@@ -18,8 +18,9 @@ namespace faults {
 namespace {
 
 constexpr simtime::ticks never = INT64_MAX;
-// VERDICT bits 9..0: every cause, without FRAME.
-constexpr uint32_t verdict_causes_mask = 0x3FFu;
+// Every VERDICT field but FRAME is a cause.
+constexpr uint32_t verdict_causes_mask =
+    dsp::card_regs::verdict_fields_mask & ~dsp::card_regs::verdict_frame_mask;
 
 double to_ms(simtime::ticks t) {
     return static_cast<double>(t) / (static_cast<double>(simtime::ticks_per_ns) * 1e6);
