@@ -1,10 +1,10 @@
 // The card's configuration registers over their range, not only at the
 // values the other tests and the platform use (DARK_THRESHOLD 32, even
 // H_START): every bit of DARK_THRESHOLD decides a dark pixel exactly at the
-// threshold, and odd window offsets and line totals check as cleanly as
-// even ones. Golden
-// values: the register map's definitions (docs/card-registers.md), checked
-// against the test sensors' own layout. Written for the RTL mutants
+// threshold, odd window offsets and line totals check as cleanly as even
+// ones, and every bit of a window register moves the window. Golden values:
+// the register map's definitions (docs/card-registers.md), checked against
+// the test sensors' own layout. Written for the RTL mutants
 // (docs/mutants.md): a comparator input with one bit flipped only when
 // another bit of the register is set survives every test that keeps the
 // register at one value.
@@ -204,8 +204,6 @@ TEST(CardConfig, EveryConfigRegisterResetsAndReadsBackItsFieldBits) {
     EXPECT_EQ(b.context().errorCount(), 0);
 }
 
-}  // namespace
-
 // The window registers are 16-bit counts (docs/card-registers.md): any
 // high bit of one moves the window the card expects past the small layout's
 // 50 x 25 pclk frame (bits 6-15 of a column count, 5-15 of a line count),
@@ -245,3 +243,5 @@ TEST(CardConfig, EveryBitOfTheWindowRegistersMovesTheWindow) {
         }
     }
 }
+
+}  // namespace
