@@ -1,6 +1,6 @@
 // The card's event counters past their low half: an unbroken run of good
-// pairs longer than 2^16 (the small layout's 1,250-pclk frames, so 82 M
-// pixel clocks), read by the DSP model as it would. Every count register is
+// pairs longer than 2^16 (on 128-pclk frames, 8.4 M pixel clocks, 9 s),
+// every pair read by the DSP model as it would. Every count register is
 // 32 bits wide (docs/card-registers.md); a counter that drops or mixes a bit
 // above the ones the short tests reach (at most a few hundred events) shows
 // here from bit 16 down. The golden values are the test sensors' own frame
