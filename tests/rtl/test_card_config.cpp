@@ -200,6 +200,17 @@ TEST(CardConfig, EveryConfigRegisterResetsAndReadsBackItsFieldBits) {
                     << idle_eclk << " idle ECLK";
             }
         }
+        // A write with one byte lane enabled (BE_n active low) changes that
+        // byte alone: the other three keep what they held.
+        for (uint32_t lane = 0; lane < 4; ++lane) {
+            const uint32_t lane_bits = 0xFFu << (8 * lane);
+            b.write_reg(r.offset, 0xFFFFFFFFu);
+            b.write_reg(r.offset, 0x5A5A5A5Au, static_cast<uint8_t>(0xFu & ~(1u << lane)));
+            EXPECT_EQ(b.read_reg(r.offset),
+                      ((0xFFFFFFFFu & ~lane_bits) | (0x5A5A5A5Au & lane_bits)) & r.mask)
+                << r.name << ": byte lane " << lane << " alone written over all ones";
+        }
+        b.write_reg(r.offset, 0u);
     }
     EXPECT_EQ(b.context().errorCount(), 0);
 }
