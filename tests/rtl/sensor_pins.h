@@ -70,6 +70,28 @@ inline sensor_layout small_layout() {
     return l;
 }
 
+// The smallest frame with every region the check needs: 8 x 2 active pixels
+// in a 16 x 8 pclk frame (128 pclk), so 2^16 frames are 8.4 M pixel clocks.
+inline sensor_layout tiny_layout() {
+    sensor_layout l;
+    l.line_total = 16;
+    l.h_start = 1;
+    l.dark_left = 2;
+    l.border_left = 0;
+    l.active_cols = 8;
+    l.border_right = 0;
+    l.dark_right = 1;
+    l.frame_lines = 8;
+    l.v_start = 1;
+    l.dark_top = 1;
+    l.border_top = 0;
+    l.active_rows = 2;
+    l.border_bottom = 0;
+    l.dark_bottom = 1;
+    l.vsync_pclks = 16;
+    return l;
+}
+
 struct sensor_pin_state {
     bool vsync = false, href = false, valid = false;
     bool fodd = false;  // frame identity: toggles per new frame since the OE start

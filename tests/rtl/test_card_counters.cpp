@@ -17,31 +17,9 @@ namespace {
 using bench = rtl_test::card_bench<Vcard_small>;
 namespace regs = dsp::card_regs;
 
-// The smallest frame with every region the check needs: 8 x 2 active pixels
-// in a 16 x 8 pclk frame (128 pclk), so 2^16 frames are 8.4 M pixel clocks.
-rtl_test::sensor_layout tiny_layout() {
-    rtl_test::sensor_layout l;
-    l.line_total = 16;
-    l.h_start = 1;
-    l.dark_left = 2;
-    l.border_left = 0;
-    l.active_cols = 8;
-    l.border_right = 0;
-    l.dark_right = 1;
-    l.frame_lines = 8;
-    l.v_start = 1;
-    l.dark_top = 1;
-    l.border_top = 0;
-    l.active_rows = 2;
-    l.border_bottom = 0;
-    l.dark_bottom = 1;
-    l.vsync_pclks = 16;
-    return l;
-}
-
 TEST(CardCounters, MoreThanSixtyFiveThousandPairsAreCountedExactly) {
     rtl_test::bench_options o;
-    o.layout = tiny_layout();
+    o.layout = rtl_test::tiny_layout();
     o.design = "card_small";
     bench b(o);
     b.configure_layout(b.opt.layout);
