@@ -251,7 +251,9 @@ class Processes(unittest.TestCase):
             self.assertIsNotNone(first)
             self.assertIsNone(rm.lock_work_dir(Path(tmp)))
             first.close()
-            self.assertIsNotNone(rm.lock_work_dir(Path(tmp)))
+            second = rm.lock_work_dir(Path(tmp))
+            self.assertIsNotNone(second)
+            second.close()
 
     def test_sigterm_kills_the_steps_under_way(self):
         with tempfile.TemporaryDirectory() as tmp:
