@@ -187,9 +187,8 @@ struct frame_output {
     bool edge_at_range_end = false;
     int32_t disparity_q8 = 0;  // the disparity the point was triangulated from
     bool has_point = false;
-    point3_um point;              // right camera frame, micrometres
-    uint16_t gain_q8_left = 256;  // brightness compensation gains
-    uint16_t gain_q8_right = 256;
+    point3_um point;         // right camera frame, micrometres
+    uint16_t gain_q8 = 256;  // brightness compensation, both images (the right one's mean)
     uint64_t stage_cycles[stage_count] = {};  // modelled cycles charged per stage
 };
 

@@ -1121,8 +1121,7 @@ TEST(ControlProgramPipeline, ResultsEqualTheControllerOnTheSamePairs) {
         EXPECT_EQ(got.point.x, expected.point.x);
         EXPECT_EQ(got.point.y, expected.point.y);
         EXPECT_EQ(got.point.z, expected.point.z);
-        EXPECT_EQ(got.gain_q8_left, expected.gain_q8_left);
-        EXPECT_EQ(got.gain_q8_right, expected.gain_q8_right);
+        EXPECT_EQ(got.gain_q8, expected.gain_q8);
         for (int s = 0; s < dsp::stage_count; ++s)
             EXPECT_EQ(got.stage_cycles[s], expected.stage_cycles[s]);
         points += got.has_point;

@@ -2,8 +2,9 @@
 // DETECT -> TRACK -> LOST -> DETECT -> TRACK as the ball leaves the view and
 // comes back; no detection on a static scene; a global lighting change with
 // no motion is a false detection without brightness compensation and none
-// with it. The truth (when the ball is in view, when the light changes)
-// comes from the scene's closed-form model, not from the firmware.
+// with it; both images of a pair take one gain. The truth (when the ball is
+// in view, when the light changes) comes from the scene's closed-form model,
+// not from the firmware.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -167,7 +168,7 @@ lighting_run run_lighting(double gain, int ramp_frames, bool compensation) {
     config.brightness.enabled = compensation;
     lighting_run out;
     for (const host::host_record& r : run(scenario, config)) {
-        out.gains.push_back(r.firmware.gain_q8_right);
+        out.gains.push_back(r.firmware.gain_q8);
         if (!r.firmware.motion_found) continue;
         if (out.first_motion_frame < 0) out.first_motion_frame = r.index;
         ++out.motion_frames;
@@ -217,4 +218,34 @@ TEST(ControllerStates, InstantaneousLightingStepIsIgnoredByThreeFrameDifferencin
     EXPECT_EQ(on.motion_frames, 0);
     EXPECT_EQ(off.gains[10], 256);  // compensation off: unity gain
     EXPECT_NEAR(on.gains[10], 2 * on.gains[9], 4);
+}
+
+// Stereo compares the two images at one photometric scale: the left image
+// takes the right one's brightness gain, whatever the left view sees besides.
+// A flat raw level v demosaics to gray v (R = G = B); the expected levels
+// are dsp/preprocess.h's formulas worked by hand: right mean 100 ->
+// gain round(256 * 110 / 100) = 282; 100 -> (100 * 282 + 128) >> 8 = 110,
+// 220 -> 242. With a gain of the left image's own mean (140: 201) its flat
+// part would be 79, not 110.
+TEST(ControllerPreprocess, TheLeftImageTakesTheRightImagesGain) {
+    const scene::stereo_rig rig;
+    const int w = rig.width, h = rig.height;
+    std::vector<uint8_t> right(static_cast<size_t>(w) * h, 100);
+    std::vector<uint8_t> left = right;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w / 3; ++x) left[static_cast<size_t>(y) * w + x] = 220;
+
+    host::counting_hal hal;
+    dsp::controller firmware;
+    firmware.init(host::controller_config_for(rig), hal);
+    const dsp::frame_output out = firmware.process_pair(dsp::gray_cplane{left.data(), w, h, w},
+                                                        dsp::gray_cplane{right.data(), w, h, w});
+    EXPECT_EQ(out.gain_q8, 282);
+    const dsp::gray_cplane gray_left = firmware.gray_left();
+    const dsp::gray_cplane gray_right = firmware.gray_right();
+    for (int y : {2, h / 2, h - 3}) {
+        EXPECT_EQ(int{gray_right.at(w / 2, y)}, 110) << "row " << y;
+        EXPECT_EQ(int{gray_left.at(w / 2, y)}, 110) << "row " << y;
+        EXPECT_EQ(int{gray_left.at(w / 6, y)}, 242) << "row " << y;
+    }
 }
