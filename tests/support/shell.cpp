@@ -4,12 +4,40 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <gtest/gtest.h>
+
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
 
 namespace testsupport {
+
+namespace {
+
+// The folders temp_dir made, removed when the test program ends with every
+// test passed (a failure's folders stay to be looked at); each ctest run
+// left about a hundred in /tmp.
+class temp_dirs {
+  public:
+    void add(const std::string& dir) { m_dirs.push_back(dir); }
+    ~temp_dirs() {
+        if (!::testing::UnitTest::GetInstance()->Passed()) return;
+        std::error_code ignored;
+        for (const std::string& dir : m_dirs) std::filesystem::remove_all(dir, ignored);
+    }
+
+  private:
+    std::vector<std::string> m_dirs;
+};
+
+temp_dirs& made_dirs() {
+    static temp_dirs dirs;
+    return dirs;
+}
+
+}  // namespace
 
 command_result run_command(const std::string& command) {
     command_result r;
@@ -28,7 +56,9 @@ std::string temp_dir(const std::string& prefix) {
     std::vector<char> name(pattern.begin(), pattern.end());
     name.push_back('\0');
     const char* dir = mkdtemp(name.data());
-    return dir ? dir : "";
+    if (!dir) return "";
+    made_dirs().add(dir);
+    return dir;
 }
 
 std::string read_text(const std::string& path) {

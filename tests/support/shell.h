@@ -13,7 +13,8 @@ struct command_result {
 };
 
 command_result run_command(const std::string& command);
-// A new folder /tmp/<prefix>-XXXXXX ("" if it cannot be made).
+// A new folder /tmp/<prefix>-XXXXXX ("" if it cannot be made), removed at
+// the test program's end if every test passed.
 std::string temp_dir(const std::string& prefix);
 std::string read_text(const std::string& path);  // "" if unreadable
 bool file_exists(const std::string& path);
