@@ -229,7 +229,11 @@ INSTANTIATE_TEST_SUITE_P(
 // off, depth 133 % while the box is on the background) and found again in
 // its sixth. The 110 px throw over kodim23 (not held out: written while
 // measuring the first) fails too: 1.04-1.07 % in depth in 3 of 24 pairs;
-// without spin 1.01-1.41 % in 3.
+// without spin 1.01-1.41 % in 3. Passing slowly (1 px per frame) over it,
+// 1.38 % in depth and the box's centre 4.4 px above to 8.8 px below the
+// ball's, as the thin differences of a slow object give its height badly;
+// a slow pass leaves the box bounds on the procedural background too (60 px
+// ball: mean 4.2, max 7.8 px).
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_OpenHeldOut, BoxOnMotion,
     ::testing::Values(
@@ -237,7 +241,9 @@ INSTANTIATE_TEST_SUITE_P(
                     30},
         motion_case{"heldout2_pass60px_30pxpf_photo4", 60, 2.2, pass, 6.0, 9.0, 'x', photo4, 14},
         motion_case{"open_throw110px_6rps_z_photo2", 110, 2.6, thrown, 1.0, 6.0, 'z', photo2, 30},
-        motion_case{"open_throw110px_photo2", 110, 2.6, thrown, 1.0, 0.0, 'x', photo2, 30}),
+        motion_case{"open_throw110px_photo2", 110, 2.6, thrown, 1.0, 0.0, 'x', photo2, 30},
+        motion_case{"open_pass110px_1pxpf_photo2", 110, 2.6, pass, 0.2, 0.0, 'x', photo2, 30},
+        motion_case{"open_pass60px_1pxpf", 60, 2.6, pass, 0.2, 0.0, 'x', procedural, 30}),
     [](const ::testing::TestParamInfo<motion_case>& info) { return info.param.name; });
 
 }  // namespace
