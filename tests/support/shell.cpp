@@ -18,7 +18,8 @@ namespace {
 
 // The folders temp_dir made, removed when the test program ends with every
 // test passed (a failure's folders stay to be looked at); each ctest run
-// left about a hundred in /tmp.
+// left about a hundred in /tmp. A test's forked child must leave with
+// _exit (as they do): exit() would run this in the child.
 class temp_dirs {
   public:
     void add(const std::string& dir) { m_dirs.push_back(dir); }
