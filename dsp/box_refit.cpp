@@ -35,6 +35,11 @@ span follow_axis(span previous, span both, int size) {
     return span{(centre2 - size) >> 1, size};  // floor, also below 0
 }
 
+span keyed_axis(span both, int shift) {
+    const int moved = shift < 0 ? -shift : shift;
+    return span{shift > 0 ? both.start + shift : both.start, both.size - moved};
+}
+
 int step_size(int size, int target, int min_size, int max_size, int limit) {
     const int step = max_int(1, max_int(size, target) / 8);
     const int moved = max_int(size - step, min_int(size + step, target));

@@ -50,6 +50,11 @@ span follow_axis(span previous, span both, int size);
 // cut by the image border needed ~20 frames to grow to the object.
 span pull_axis(span found, span last, span mask, int min_size, int max_size, int limit);
 
+// object(t) on one axis from `both`, the extent of Dif(key, t), which spans
+// object(key) and object(t) (dsp/key_frame.h), and the object's displacement
+// `shift` since the key: `both` less |shift| on the side away from the motion.
+span keyed_axis(span both, int shift);
+
 // A size moved towards `target` by at most max(1, larger of the two / 8),
 // within [min_size, max_size] and at most `limit`.
 int step_size(int size, int target, int min_size, int max_size, int limit);

@@ -1,0 +1,93 @@
+// A slow object's outline measured against an older frame, the key.
+//
+// Two frames one pair apart differ, around an object moving v px per frame,
+// by about v times the contrast times |cos| of the angle between the motion
+// and the outline's normal: where the outline runs along the motion (the
+// top and bottom of a ball passing sideways) the difference stays under the
+// threshold unless v is several pixels. At 1 px per frame the difference's
+// extent across the motion was 45-51 px for a 60 px ball and 92-108 px for a
+// 110 px one, varying from pair to pair, and a box fitted to it jumped by
+// up to 9 px (docs/firmware.md, "Slow objects"). Against a frame the object
+// left 4 px ago the same extents were within 1 px of the ball's.
+//
+// So, while the object moves slowly, one frame is kept as the key: the
+// region around the object, copied when the key is taken. Each pair the
+// key's pattern (the object box's centre, at most the tracker's max_size,
+// as in dsp/tracker.h) is searched in the new frame within max_step px of
+// where it was last: the displacement since the key, with no rounding
+// carried from pair to pair. It is the object's because the pattern still
+// matches (a spinning or turning object's does not, and its texture's
+// changes outline it every pair anyway). Once the object has moved
+// min_shift px, Dif(key, t) spans object(key) and object(t) with the whole
+// outline; object(t) is that extent less the displacement, on the side the
+// object moved to (dsp/box_refit.h, keyed_axis).
+//
+// Memory: the key region in SDRAM (at most W H bytes); the key's pattern is
+// copied for each search into a scratch the caller gives (L2).
+// Costs: dsp::cost kernels, charged by the controller (stage track).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "dsp/image.h"
+#include "dsp/motion_blocks.h"
+#include "dsp/sad_search.h"
+
+namespace dsp {
+
+class key_frame {
+  public:
+    static constexpr int min_shift = 4;   // px moved since the key before its difference is used
+    static constexpr int max_shift = 16;  // px moved since the key: a new key is taken
+    static constexpr int max_step = 2;    // px per pair, at most, for an object to count as slow
+    static constexpr int margin = 8;      // px of the region beyond max_shift around the object
+
+    key_frame() = default;
+    ~key_frame();
+    key_frame(const key_frame&) = delete;
+    key_frame& operator=(const key_frame&) = delete;
+
+    static size_t sdram_bytes(int max_width, int max_height);
+    void init(int max_width, int max_height);
+
+    bool valid() const { return m_valid; }
+    void drop() { m_valid = false; }
+
+    // The key: `frame`'s region around `object` (grown by max_shift + margin,
+    // clipped to the frame); `pattern` is the object's pattern box in it.
+    void take(gray_cplane frame, box object, box pattern);
+
+    // The displacement since the key (dx, dy): its pattern, copied into
+    // `scratch` (at least pattern width x height bytes), searched in `frame`
+    // within max_step + 1 px of the last displacement. False (the key is
+    // then of no use) when the best match lies on that window's edge (the
+    // object moved more than max_step) or is more different than
+    // lost_mean_sad per pixel. `positions`: the positions searched.
+    bool displacement(gray_cplane frame, uint8_t* scratch, uint32_t lost_mean_sad, int* positions);
+
+    // The extent of Dif(key, frame) at `threshold` over the key region: the
+    // block group one object with the key's object box moved by the
+    // displacement; not found when it reaches the region's edge (the
+    // object may go on past it). `row`: one row of the region's width.
+    block_group moved_extent(gray_cplane frame, uint8_t threshold, motion_blocks& blocks,
+                             uint8_t* row) const;
+
+    int dx() const { return m_dx; }
+    int dy() const { return m_dy; }
+    box object() const { return m_object; }  // the object box when the key was taken
+    box region() const { return m_region; }  // the frame's pixels held
+
+  private:
+    gray_cplane region_plane() const;
+
+    uint8_t* m_pixels = nullptr;  // the region, its width as stride
+    size_t m_capacity = 0;
+    bool m_valid = false;
+    box m_region;
+    box m_object;
+    box m_pattern;
+    int m_dx = 0, m_dy = 0;
+};
+
+}  // namespace dsp
