@@ -4,6 +4,7 @@
 
 #include "dsp/box_refit.h"
 #include "dsp/kernel_costs.h"
+#include "dsp/key_frame.h"
 #include "dsp/sobel.h"
 
 namespace dsp {
@@ -176,6 +177,7 @@ struct controller::impl {
 
     motion_detector detector;
     sad_tracker tracker;
+    key_frame key;  // a slow object's older frame (dsp/key_frame.h), SDRAM
 
     // Disparities (Q8) of the depth range's ends, without the search margin.
     int64_t far_disparity_q8 = 0, near_disparity_q8 = 0;
@@ -208,7 +210,14 @@ struct controller::impl {
     // Each returns whether an object box is known after it.
     bool detect(frame_output& out);
     bool track(frame_output& out);
-    bool track_object(uint64_t* cycles, sdram_traffic* traffic);
+    // What track_object saw of the object's speed, for the key.
+    struct track_motion {
+        bool sad_slow = false;   // the SAD pattern moved at most key_frame::max_step px
+        bool agrees = true;      // no silhouette, or one within an eighth of the SAD box
+        bool confirmed = false;  // a silhouette within an eighth of the SAD box
+    };
+    bool track_object(uint64_t* cycles, sdram_traffic* traffic, track_motion* seen);
+    void follow_slow_object(track_motion seen, uint64_t* cycles, sdram_traffic* traffic);
     // What the two frame differences say around the last box (dsp/box_refit.h).
     struct motion_extents {
         bool found = false;  // both differences hold enough pixels and share a box
@@ -252,6 +261,7 @@ memory_plan plan_memory(const controller_config& config) {
         plan.edge_bands = bands;
     }
     plan.raw_pair_sdram = 2 * frame;
+    plan.key_sdram = key_frame::sdram_bytes(config.max_width, config.max_height);
     return plan;
 }
 
@@ -281,6 +291,7 @@ void controller::init(const controller_config& config, hal& hardware) {
 
     s.detector.init(config.max_width, config.max_height, config.max_motion_labels, false);
     s.tracker.init(config.track);
+    s.key.init(config.max_width, config.max_height);
 
     if (config.disparity_from_rig) {
         const int64_t near_q8 = disparity_q8_at_depth(config.rig, config.min_depth_mm);
@@ -458,6 +469,7 @@ bool controller::impl::detect(frame_output& out) {
         return false;
     }
 
+    key.drop();
     tracker.start(history(1), found.object_box);
     const gray_cplane pattern = tracker.pattern();
     const int pattern_w = pattern.width, pattern_h = pattern.height;
@@ -495,9 +507,15 @@ bool controller::impl::track(frame_output& out) {
     stage_scope scope(*hardware, stage::track, out);
     uint64_t cycles = 0;
     sdram_traffic traffic;
-    const bool tracking = track_object(&cycles, &traffic);
+    track_motion seen;
+    const bool tracking = track_object(&cycles, &traffic, &seen);
     // The refit has used Dif(t-2,t-1); now Dif(t-1,t) for the next pair.
     update_motion_mask(&cycles, &traffic);
+    if (tracking) {
+        follow_slow_object(seen, &cycles, &traffic);
+    } else {
+        key.drop();
+    }
     scope.charge(cycles, traffic);
     return tracking;
 }
@@ -511,7 +529,7 @@ bool controller::impl::track(frame_output& out) {
 // refitted towards object(t-1) (pull_box). A silhouette that moved as the
 // object does keeps the track when the pattern no longer matches (a texture
 // that turned); SAD's own lost rule decides only without one.
-bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic) {
+bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, track_motion* seen) {
     const box last = tracker.position();
     const box pattern = tracker.pattern_box();
     const motion_extents motion = measure_motion(last, nullptr, cycles, traffic);
@@ -527,6 +545,17 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic) {
             cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
 
     const box found = tracker.position();
+    const int step = key_frame::max_step;
+    seen->sad_slow = status == track_status::tracking && found.x - last.x <= step &&
+                     last.x - found.x <= step && found.y - last.y <= step &&
+                     last.y - found.y <= step;
+    if (follows) {
+        const int off_x = followed.center_x2() - found.center_x2();
+        const int off_y = followed.center_y2() - found.center_y2();
+        seen->agrees = 2 * max_int(step, found.width / 8) >= max_int(off_x, -off_x) &&
+                       2 * max_int(step, found.height / 8) >= max_int(off_y, -off_y);
+        seen->confirmed = seen->agrees;
+    }
     box resized = found;
     if (follows) {
         resized = followed;
@@ -540,6 +569,79 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic) {
             cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
     }
     return true;
+}
+
+// A slow object's box from the key (dsp/key_frame.h): while the key's
+// pattern is found within max_step px of where it was last, the box is the
+// key's moved by the displacement since; once that is min_shift px, its
+// size and place are object(t)'s from Dif(key, t) (keyed_axis), when that
+// extent is one the object's size and the displacement can explain. A new
+// key is taken when there is none and the SAD moved at most max_step px
+// and the silhouette, if any, agrees with it (a box left on the background
+// by a fast object has a still pattern too, and the silhouette elsewhere),
+// and after max_shift px. The key's pattern lost (a turning, spinning or
+// faster object) or the silhouette elsewhere: the box of track_object stands.
+// Runs after update_motion_mask: f(t-1)'s buffer is scratch by then.
+void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
+                                          sdram_traffic* traffic) {
+    uint8_t* scratch = right_gray[1 - newest];
+    const box key_pattern = tracker.pattern_box();
+    if (key.valid()) {
+        int positions = 0;
+        const bool still =
+            key.displacement(history(0), scratch, config.track.lost_mean_sad, &positions);
+        const box kp = key.object();
+        const int pattern_w = min_int(kp.width, config.track.max_size);
+        const int pattern_h = min_int(kp.height, config.track.max_size);
+        *cycles += cycles_of(cost::pattern_copy_profile(pattern_w, pattern_h)) +
+                   cycles_of(cost::sad_search_profile(pattern_w, pattern_h, positions));
+        traffic->bytes_read += static_cast<uint64_t>(pattern_w) * pattern_h;
+        if (!still || !seen.agrees) key.drop();
+    }
+    if (!key.valid()) {
+        if (!seen.sad_slow || !seen.confirmed) return;
+        key.take(history(0), tracker.position(), key_pattern);
+        const box r = key.region();
+        *cycles += cycles_of(cost::pattern_copy_profile(r.width, r.height));
+        traffic->bytes_written += static_cast<uint64_t>(r.width) * r.height;
+        return;
+    }
+    box b = key.object();
+    b.x += key.dx();
+    b.y += key.dy();
+    const int moved = max_int(max_int(key.dx(), -key.dx()), max_int(key.dy(), -key.dy()));
+    if (moved >= key_frame::min_shift) {
+        const block_group u =
+            key.moved_extent(history(0), config.detect.threshold, later_blocks, refit_rows);
+        const box r = key.region();
+        *cycles +=
+            cycles_of(cost::difference_packed_profile(r.width, r.height, cost::memory::sdram)) +
+            cycles_of(cost::motion_blocks_profile(r.width, r.height));
+        *traffic += cost::difference_packed_traffic(r.width, r.height, cost::memory::sdram);
+        const box o =
+            from_spans(keyed_axis(x_span(u.bbox), key.dx()), keyed_axis(y_span(u.bbox), key.dy()));
+        const box k = key.object();
+        // Within half and twice the key's size: else the difference held
+        // more than the object (another mover, a light change) or too little.
+        if (u.found && 2 * o.width >= k.width && o.width <= 2 * k.width &&
+            2 * o.height >= k.height && o.height <= 2 * k.height &&
+            o.width >= config.track.min_size && o.height >= config.track.min_size)
+            b = o;
+    }
+    b.x = max_int(0, min_int(b.x, width - b.width));
+    b.y = max_int(0, min_int(b.y, height - b.height));
+    const box t = tracker.position();
+    if (b.x != t.x || b.y != t.y || b.width != t.width || b.height != t.height) {
+        tracker.start(history(0), b);
+        *cycles += cycles_of(
+            cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
+    }
+    if (moved >= key_frame::max_shift) {
+        key.take(history(0), tracker.position(), tracker.pattern_box());
+        const box r = key.region();
+        *cycles += cycles_of(cost::pattern_copy_profile(r.width, r.height));
+        traffic->bytes_written += static_cast<uint64_t>(r.width) * r.height;
+    }
 }
 
 // object(t-1)'s box is the box where both differences around it agree:

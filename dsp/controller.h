@@ -34,7 +34,11 @@
 //     the differences give no object (it nearly stopped, a light change),
 //     the SAD box is kept, its size and centre pulled towards object(t-1)
 //     by at most max(1, larger of box and mask / 8) px per frame (stage
-//     track). Lost (SAD's rule, without a silhouette) -> LOST.
+//     track). Lost (SAD's rule, without a silhouette) -> LOST. A slow
+//     object's box (the SAD moved at most 2 px and a silhouette confirmed
+//     it) is then taken from a key frame (dsp/key_frame.h): the key's
+//     pattern's displacement since, and once it is 4 px, Dif(key, t)'s
+//     extent, which one pair's thin differences miss across the motion.
 //   LOST: nothing but preprocess; after lost_frames_to_detect pairs in LOST
 //     the state becomes DETECT (so the three-frame history no longer holds
 //     the frames the track was lost in).
@@ -78,7 +82,10 @@
 // program's few words; 16 if 32 KB of the L2 is configured as cache for
 // the raw reads (plan_memory computes it; tests/dsp/test_memory_plan.cpp
 // checks it). SDRAM per pair: the raw pair, 2 W H = 614,400 bytes read =
-// 4,800 L2 lines of 128 bytes, nothing else frame-scale.
+// 4,800 L2 lines of 128 bytes, nothing else frame-scale. A slow object's
+// key region (dsp/key_frame.h) is in SDRAM too (at most W H bytes): written
+// when a key is taken, read (the region and the key's pattern) each pair
+// while it is used.
 #pragma once
 
 #include <cstdint>
@@ -155,6 +162,7 @@ struct memory_plan {
     size_t edge_bands = 0;           // own Sobel bands (0 when they overlay f(t-1))
     size_t edge_bands_overlaid = 0;  // band bytes placed inside f(t-1)'s buffer
     size_t raw_pair_sdram = 0;       // one raw Bayer pair, in SDRAM: 2 W H
+    size_t key_sdram = 0;            // a slow object's key region (dsp/key_frame.h), SDRAM
 
     size_t l2_bytes() const {
         return right_gray + left_gray + motion_mask + line_scratch + detector + tracker + refit +

@@ -47,7 +47,7 @@ constexpr double max_box_error_px = 6.0;
 constexpr double max_depth_error_pct = 1.0;
 constexpr double frame_period_ms = 24.5;  // docs/design-brief.md
 
-enum class path_kind { pass, thrown };
+enum class path_kind { pass, thrown, circle };
 enum class backdrop { procedural, cones, kodim23, kodim19, teddy };
 
 struct motion_case {
@@ -55,7 +55,7 @@ struct motion_case {
     double diameter_px;  // at the path's depth (pass) or at its start (throw)
     double depth_m;
     path_kind path;
-    double speed;     // the path's time scale (ball_paths.h): pass 5 px per frame x speed
+    double speed;     // the path's time scale (ball_paths.h): pass 5, circle 8 px per frame x speed
     double spin_rps;  // revolutions per second
     char spin_axis;   // x, y or z
     backdrop background;
@@ -104,8 +104,9 @@ scene::scenario scenario_of(const motion_case& c) {
     ball.spin_axis = c.spin_axis == 'x'   ? scene::vec3{1.0, 0.0, 0.0}
                      : c.spin_axis == 'y' ? scene::vec3{0.0, 1.0, 0.0}
                                           : scene::vec3{0.0, 0.0, 1.0};
-    ball.path = c.path == path_kind::pass
-                    ? scene::pass_path(c.depth_m, c.speed, start)
+    ball.path = c.path == path_kind::pass ? scene::pass_path(c.depth_m, c.speed, start)
+                : c.path == path_kind::circle
+                    ? scene::circling_path(c.depth_m, c.speed, start)
                     : scene::thrown_ball_path(c.depth_m, ball.radius_m, c.speed, start);
     s.scene.balls.push_back(ball);
     s.frame_count = c.frames;
@@ -189,6 +190,7 @@ TEST_P(BoxOnMotion, StaysOnTheObject) {
 
 constexpr path_kind pass = path_kind::pass;
 constexpr path_kind thrown = path_kind::thrown;
+constexpr path_kind circle = path_kind::circle;
 constexpr backdrop procedural = backdrop::procedural;
 constexpr backdrop photo = backdrop::cones;
 constexpr backdrop photo2 = backdrop::kodim23;
@@ -225,6 +227,27 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"heldout2_pass200px_20pxpf_photo3", 200, 1.5, pass, 4.0, 4.0, 'y', photo3, 14}),
     case_name);
 
+// Slow objects, 2 px per frame and less: the thin differences of one pair
+// miss the outline along the motion, and the box's size and place across
+// it come from a key frame (dsp/key_frame.h). The first case was an open
+// case (mean 4.20, max 7.81 px before the key frame).
+INSTANTIATE_TEST_SUITE_P(
+    Slow, BoxOnMotion,
+    ::testing::Values(
+        motion_case{"pass60px_1pxpf", 60, 2.6, pass, 0.2, 0.0, 'x', procedural, 30},
+        // Held out: written before the key frame's rules were run on them,
+        // run once after (circling at its leftmost point: mostly vertical).
+        // Five of those ten failed and are open below; the rule that a key
+        // is taken only on a box the silhouette confirms came after that.
+        motion_case{"heldout3_pass200px_1pxpf", 200, 1.5, pass, 0.2, 0.0, 'x', procedural, 30},
+        motion_case{"heldout3_pass110px_2pxpf", 110, 2.6, pass, 0.4, 0.0, 'x', procedural, 30},
+        motion_case{"heldout3_circle80px_1pxpf_photo2", 80, 2.6, circle, 0.125, 0.0, 'x', photo2,
+                    30},
+        motion_case{"heldout3_circle50px_2pxpf", 50, 2.6, circle, 0.25, 0.0, 'x', procedural, 30},
+        motion_case{"heldout3_pass60px_1pxpf_3rps_z", 60, 2.6, pass, 0.2, 3.0, 'z', procedural,
+                    30}),
+    case_name);
+
 // The other two held-out cases of that round fail, and the issue of the box
 // on fast and spinning objects stays open on them (docs/firmware.md, "Open";
 // run with --gtest_also_run_disabled_tests): the 110 px ball's depth is
@@ -235,9 +258,14 @@ INSTANTIATE_TEST_SUITE_P(
 // measuring the first) fails too: 1.04-1.07 % in depth in 3 of 24 pairs;
 // without spin 1.01-1.41 % in 3. Passing slowly (1 px per frame) over it,
 // 1.38 % in depth and the box's centre 4.4 px above to 8.8 px below the
-// ball's, as the thin differences of a slow object give its height badly;
-// a slow pass leaves the box bounds on the procedural background too (60 px
-// ball: mean 4.2, max 7.8 px).
+// ball's, as the thin differences of a slow object give its height badly
+// (with the key frame: box mean 0.56, max 2.10 px, depth up to 1.60 %).
+// Five of the slow held-out cases fail (the key frame's first rules; after
+// the silhouette's confirmation, not held out any more): a 30 px ball, max
+// 9.62 px in one pair; 110 px balls over cones, teddy and kodim19, whose
+// detection is 30-44 px off and which the key cannot correct (box means
+// 3.80, 11.72, 12.68 px; 5.05, 11.85, 13.32 before the key frame); an 80 px
+// ball at 0.5 px per frame over kodim19, detected only in pair 26.
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
     ::testing::Values(
@@ -247,7 +275,11 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"open_throw110px_6rps_z_photo2", 110, 2.6, thrown, 1.0, 6.0, 'z', photo2, 30},
         motion_case{"open_throw110px_photo2", 110, 2.6, thrown, 1.0, 0.0, 'x', photo2, 30},
         motion_case{"open_pass110px_1pxpf_photo2", 110, 2.6, pass, 0.2, 0.0, 'x', photo2, 30},
-        motion_case{"open_pass60px_1pxpf", 60, 2.6, pass, 0.2, 0.0, 'x', procedural, 30}),
+        motion_case{"heldout3_pass30px_1pxpf", 30, 2.6, pass, 0.2, 0.0, 'x', procedural, 30},
+        motion_case{"heldout3_pass110px_1pxpf_photo", 110, 2.6, pass, 0.2, 0.0, 'x', photo, 30},
+        motion_case{"heldout3_pass110px_1pxpf_photo4", 110, 2.6, pass, 0.2, 0.0, 'x', photo4, 30},
+        motion_case{"heldout3_pass110px_1pxpf_photo3", 110, 2.6, pass, 0.2, 0.0, 'x', photo3, 30},
+        motion_case{"heldout3_pass80px_halfpxpf_photo3", 80, 2.6, pass, 0.1, 0.0, 'x', photo3, 30}),
     case_name);
 
 }  // namespace
