@@ -213,7 +213,6 @@ struct controller::impl {
     // What track_object saw of the object's speed, for the key.
     struct track_motion {
         bool sad_slow = false;   // the SAD pattern moved at most key_frame::max_step px
-        bool agrees = true;      // no silhouette, or one within an eighth of the SAD box
         bool confirmed = false;  // a silhouette within an eighth of the SAD box
     };
     bool track_object(uint64_t* cycles, sdram_traffic* traffic, track_motion* seen);
@@ -552,9 +551,8 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
     if (follows) {
         const int off_x = followed.center_x2() - found.center_x2();
         const int off_y = followed.center_y2() - found.center_y2();
-        seen->agrees = 2 * max_int(step, found.width / 8) >= max_int(off_x, -off_x) &&
-                       2 * max_int(step, found.height / 8) >= max_int(off_y, -off_y);
-        seen->confirmed = seen->agrees;
+        seen->confirmed = 2 * max_int(step, found.width / 8) >= max_int(off_x, -off_x) &&
+                          2 * max_int(step, found.height / 8) >= max_int(off_y, -off_y);
     }
     box resized = found;
     if (follows) {
@@ -576,11 +574,13 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
 // key's moved by the displacement since; once that is min_shift px, its
 // size and place are object(t)'s from Dif(key, t) (keyed_axis), when that
 // extent is one the object's size and the displacement can explain. A new
-// key is taken when there is none and the SAD moved at most max_step px
-// and the silhouette, if any, agrees with it (a box left on the background
-// by a fast object has a still pattern too, and the silhouette elsewhere),
-// and after max_shift px. The key's pattern lost (a turning, spinning or
-// faster object) or the silhouette elsewhere: the box of track_object stands.
+// key is taken when there is none, the SAD moved at most max_step px and a
+// silhouette confirms the box (a box left on the background by a fast
+// object has a still pattern too, and its silhouette lies elsewhere), and
+// after max_shift px. Once keyed, one pair's silhouette does not overrule
+// the key: across a slow motion it is the measurement the key improves on
+// (a 30 px ball's jumped 10 px in one pair). The key's pattern lost (a
+// turning, spinning or faster object): the box of track_object stands.
 // Runs after update_motion_mask: f(t-1)'s buffer is scratch by then.
 void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
                                           sdram_traffic* traffic) {
@@ -596,7 +596,7 @@ void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
         *cycles += cycles_of(cost::pattern_copy_profile(pattern_w, pattern_h)) +
                    cycles_of(cost::sad_search_profile(pattern_w, pattern_h, positions));
         traffic->bytes_read += static_cast<uint64_t>(pattern_w) * pattern_h;
-        if (!still || !seen.agrees) key.drop();
+        if (!still) key.drop();
     }
     if (!key.valid()) {
         if (!seen.sad_slow || !seen.confirmed) return;

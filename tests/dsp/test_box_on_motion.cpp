@@ -235,17 +235,27 @@ INSTANTIATE_TEST_SUITE_P(
     Slow, BoxOnMotion,
     ::testing::Values(
         motion_case{"pass60px_1pxpf", 60, 2.6, pass, 0.2, 0.0, 'x', procedural, 30},
+        // Held out in round 3 and failed there (9.62 px in one pair, the
+        // silhouette overruling the key); passes since the key is kept.
+        motion_case{"pass30px_1pxpf", 30, 2.6, pass, 0.2, 0.0, 'x', procedural, 30},
         // Held out: written before the key frame's rules were run on them,
         // run once after (circling at its leftmost point: mostly vertical).
-        // Five of those ten failed and are open below; the rule that a key
-        // is taken only on a box the silhouette confirms came after that.
+        // Five of those ten failed, four are open below; the rules that a
+        // key is taken only on a box a silhouette confirms and is not
+        // overruled by one pair's silhouette came after that.
         motion_case{"heldout3_pass200px_1pxpf", 200, 1.5, pass, 0.2, 0.0, 'x', procedural, 30},
         motion_case{"heldout3_pass110px_2pxpf", 110, 2.6, pass, 0.4, 0.0, 'x', procedural, 30},
         motion_case{"heldout3_circle80px_1pxpf_photo2", 80, 2.6, circle, 0.125, 0.0, 'x', photo2,
                     30},
         motion_case{"heldout3_circle50px_2pxpf", 50, 2.6, circle, 0.25, 0.0, 'x', procedural, 30},
-        motion_case{"heldout3_pass60px_1pxpf_3rps_z", 60, 2.6, pass, 0.2, 3.0, 'z', procedural,
-                    30}),
+        motion_case{"heldout3_pass60px_1pxpf_3rps_z", 60, 2.6, pass, 0.2, 3.0, 'z', procedural, 30},
+        // Held out from the rules as they stand: written before, run once
+        // after. Four of six pass; two are open below.
+        motion_case{"heldout4_pass45px_1pxpf_photo2", 45, 2.6, pass, 0.2, 0.0, 'x', photo2, 30},
+        motion_case{"heldout4_circle120px_1pxpf", 120, 2.6, circle, 0.125, 0.0, 'x', procedural,
+                    30},
+        motion_case{"heldout4_pass90px_1pxpf_2rps_y", 90, 2.6, pass, 0.2, 2.0, 'y', procedural, 30},
+        motion_case{"heldout4_pass20px_2pxpf_photo2", 20, 2.6, pass, 0.4, 0.0, 'x', photo2, 30}),
     case_name);
 
 // The other two held-out cases of that round fail, and the issue of the box
@@ -260,12 +270,15 @@ INSTANTIATE_TEST_SUITE_P(
 // 1.38 % in depth and the box's centre 4.4 px above to 8.8 px below the
 // ball's, as the thin differences of a slow object give its height badly
 // (with the key frame: box mean 0.56, max 2.10 px, depth up to 1.60 %).
-// Five of the slow held-out cases fail (the key frame's first rules; after
-// the silhouette's confirmation, not held out any more): a 30 px ball, max
-// 9.62 px in one pair; 110 px balls over cones, teddy and kodim19, whose
-// detection is 30-44 px off and which the key cannot correct (box means
-// 3.80, 11.72, 12.68 px; 5.05, 11.85, 13.32 before the key frame); an 80 px
-// ball at 0.5 px per frame over kodim19, detected only in pair 26.
+// Slow balls over cluttered photographs fail where their detection holds a
+// part of the ball only (one pair's thin differences: a crescent, or the
+// two crescents not joined): 110 px balls over cones, teddy and kodim19
+// (held out in round 3: box means 3.80, 34.48, 7.52 px now; 5.05, 11.85,
+// 13.32 before the key frame), an 80 px ball at 0.5 px per frame over
+// kodim19 detected only in pair 26; from round 4, a 150 px ball at 1.5 px
+// per frame over cones (detected 109 of 150 px wide; box mean 10.84) and a
+// 70 px ball circling at 1.5 px per frame over teddy (detected as a 55 x 16
+// crescent; mean 6.81, max 24.21 px).
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
     ::testing::Values(
@@ -275,11 +288,13 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"open_throw110px_6rps_z_photo2", 110, 2.6, thrown, 1.0, 6.0, 'z', photo2, 30},
         motion_case{"open_throw110px_photo2", 110, 2.6, thrown, 1.0, 0.0, 'x', photo2, 30},
         motion_case{"open_pass110px_1pxpf_photo2", 110, 2.6, pass, 0.2, 0.0, 'x', photo2, 30},
-        motion_case{"heldout3_pass30px_1pxpf", 30, 2.6, pass, 0.2, 0.0, 'x', procedural, 30},
         motion_case{"heldout3_pass110px_1pxpf_photo", 110, 2.6, pass, 0.2, 0.0, 'x', photo, 30},
         motion_case{"heldout3_pass110px_1pxpf_photo4", 110, 2.6, pass, 0.2, 0.0, 'x', photo4, 30},
         motion_case{"heldout3_pass110px_1pxpf_photo3", 110, 2.6, pass, 0.2, 0.0, 'x', photo3, 30},
-        motion_case{"heldout3_pass80px_halfpxpf_photo3", 80, 2.6, pass, 0.1, 0.0, 'x', photo3, 30}),
+        motion_case{"heldout3_pass80px_halfpxpf_photo3", 80, 2.6, pass, 0.1, 0.0, 'x', photo3, 30},
+        motion_case{"heldout4_pass150px_1_5pxpf_photo", 150, 2.6, pass, 0.3, 0.0, 'x', photo, 30},
+        motion_case{"heldout4_circle70px_1_5pxpf_photo4", 70, 2.6, circle, 0.1875, 0.0, 'x', photo4,
+                    30}),
     case_name);
 
 }  // namespace
