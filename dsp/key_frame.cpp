@@ -1,25 +1,17 @@
 #include "dsp/key_frame.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace dsp {
-namespace {
-
-int max_int(int a, int b) {
-    return a > b ? a : b;
-}
-int min_int(int a, int b) {
-    return a < b ? a : b;
-}
-
-}  // namespace
 
 key_frame::~key_frame() {
     delete[] m_pixels;
 }
 
 size_t key_frame::sdram_bytes(int max_width, int max_height) {
-    return static_cast<size_t>(max_int(max_width, 0)) * static_cast<size_t>(max_int(max_height, 0));
+    return static_cast<size_t>(std::max(max_width, 0)) *
+           static_cast<size_t>(std::max(max_height, 0));
 }
 
 void key_frame::init(int max_width, int max_height) {
@@ -35,10 +27,10 @@ gray_cplane key_frame::region_plane() const {
 
 void key_frame::take(gray_cplane frame, box object, box pattern) {
     const int grow = max_shift + margin;
-    const int x0 = max_int(0, object.x - grow), y0 = max_int(0, object.y - grow);
-    const int x1 = min_int(frame.width, object.right() + grow);
-    const int y1 = min_int(frame.height, object.bottom() + grow);
-    m_region = box{x0, y0, max_int(0, x1 - x0), max_int(0, y1 - y0)};
+    const int x0 = std::max(0, object.x - grow), y0 = std::max(0, object.y - grow);
+    const int x1 = std::min(frame.width, object.right() + grow);
+    const int y1 = std::min(frame.height, object.bottom() + grow);
+    m_region = box{x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
     m_valid =
         m_pixels != nullptr && !m_region.empty() &&
         static_cast<size_t>(m_region.width) * static_cast<size_t>(m_region.height) <= m_capacity &&
