@@ -7,8 +7,9 @@
 // threshold unless v is several pixels. At 1 px per frame the difference's
 // extent across the motion was 45-51 px for a 60 px ball and 92-108 px for a
 // 110 px one, varying from pair to pair, and a box fitted to it jumped by
-// up to 9 px (docs/firmware.md, "Slow objects"). Against a frame the object
-// left 4 px ago the same extents were within 1 px of the ball's.
+// up to 9 px (docs/firmware.md, "Slow objects: a key frame"). Against a
+// frame the object left 4 px ago the same extents were 58-61 px and
+// 110-111 px.
 //
 // So, while the object moves slowly, one frame is kept as the key: the
 // region around the object, copied when the key is taken. Each pair the

@@ -12,7 +12,8 @@
 // the processing of every pair within the 24.5 ms frame period at 600 MHz.
 // The cases span balls 10 px to half the image wide, motions up to 30 px
 // per frame (a pass at 6 times its speed) and the throw's bounce, spins of
-// 1 to 10 revolutions per second about each axis.
+// 1 to 10 revolutions per second about each axis; slow passes and circles
+// of 1 to 2 px per frame (suite Slow: the key frame, dsp/key_frame.h).
 //
 // The firmware before the silhouette refit (the box moved by the SAD
 // pattern and pulled towards object(t-1)) failed 11 of the first 12 cases
