@@ -15,11 +15,12 @@
 
 namespace scenario_test {
 
-inline nlohmann::json run(const std::string& scenario) {
+// `options`: more of the command line, e.g. "--set scenario.speed=0.2".
+inline nlohmann::json run(const std::string& scenario, const std::string& options = "") {
     const std::string dir = testsupport::temp_dir(scenario);
     const auto r =
         testsupport::run_command(std::string(STEREOSIM_BINARY) + " run --quiet --frames 30 " +
-                                 "--scenario " + scenario + " --out " + dir);
+                                 "--scenario " + scenario + " " + options + " --out " + dir);
     EXPECT_EQ(r.exit_code, 0) << r.output;
     std::ifstream in(dir + "/report.json");
     return nlohmann::json::parse(in, nullptr, false);

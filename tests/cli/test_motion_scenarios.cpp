@@ -51,4 +51,18 @@ TEST(MotionScenarios, FastThrow) {
     EXPECT_EQ(report["config"]["scenario"]["speed"], 2.0);
 }
 
+// Open (docs/firmware.md, "Open"; run with --gtest_also_run_disabled_tests):
+// slow passes, 1 px per frame, co-simulated. The 320 px ball is detected as
+// one 38 x 138 px crescent of it and the box stays 98 px off its centre;
+// the 10 px ball is never detected.
+TEST(MotionScenarios, DISABLED_SlowLargeBall) {
+    const json report = scenario_test::run("large", "--set scenario.speed=0.2");
+    expect_tracked_in_budget(report, "large at 1 px per frame");
+}
+
+TEST(MotionScenarios, DISABLED_SlowSmallBall) {
+    const json report = scenario_test::run("small", "--set scenario.speed=0.2");
+    expect_tracked_in_budget(report, "small at 1 px per frame");
+}
+
 }  // namespace
