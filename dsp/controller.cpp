@@ -78,6 +78,10 @@ box size_rule_region(box last, int reach, int width, int height) {
     return box{x0, y0, max_int(0, x1 - x0), max_int(0, y1 - y0)};
 }
 
+bool same_box(box a, box b) {
+    return a.x == b.x && a.y == b.y && a.width == b.width && a.height == b.height;
+}
+
 box from_spans(span x, span y) {
     return box{x.start, y.start, x.size, y.size};
 }
@@ -217,6 +221,7 @@ struct controller::impl {
     };
     bool track_object(uint64_t* cycles, sdram_traffic* traffic, track_motion* seen);
     void follow_slow_object(track_motion seen, uint64_t* cycles, sdram_traffic* traffic);
+    void take_key(uint64_t* cycles, sdram_traffic* traffic);
     // What the two frame differences say around the last box (dsp/box_refit.h).
     struct motion_extents {
         bool found = false;  // both differences hold enough pixels and share a box
@@ -560,8 +565,7 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
     } else if (motion.found) {
         resized = pull_box(motion, last, found);
     }
-    if (status != track_status::tracking || resized.x != found.x || resized.y != found.y ||
-        resized.width != found.width || resized.height != found.height) {
+    if (status != track_status::tracking || !same_box(resized, found)) {
         tracker.start(history(0), resized);
         *cycles += cycles_of(
             cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
@@ -582,28 +586,29 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
 // (a 30 px ball's jumped 10 px in one pair). The key's pattern lost (a
 // turning, spinning or faster object): the box of track_object stands.
 // Runs after update_motion_mask: f(t-1)'s buffer is scratch by then.
+// (take_key: the key at the tracker's box, its region's copy charged.)
+void controller::impl::take_key(uint64_t* cycles, sdram_traffic* traffic) {
+    key.take(history(0), tracker.position(), tracker.pattern_box());
+    const box r = key.region();
+    *cycles += cycles_of(cost::pattern_copy_profile(r.width, r.height));
+    traffic->bytes_written += static_cast<uint64_t>(r.width) * r.height;
+}
+
 void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
                                           sdram_traffic* traffic) {
     uint8_t* scratch = right_gray[1 - newest];
-    const box key_pattern = tracker.pattern_box();
     if (key.valid()) {
         int positions = 0;
         const bool still =
             key.displacement(history(0), scratch, config.track.lost_mean_sad, &positions);
-        const box kp = key.object();
-        const int pattern_w = min_int(kp.width, config.track.max_size);
-        const int pattern_h = min_int(kp.height, config.track.max_size);
-        *cycles += cycles_of(cost::pattern_copy_profile(pattern_w, pattern_h)) +
-                   cycles_of(cost::sad_search_profile(pattern_w, pattern_h, positions));
-        traffic->bytes_read += static_cast<uint64_t>(pattern_w) * pattern_h;
+        const box kp = key.pattern();
+        *cycles += cycles_of(cost::pattern_copy_profile(kp.width, kp.height)) +
+                   cycles_of(cost::sad_search_profile(kp.width, kp.height, positions));
+        traffic->bytes_read += static_cast<uint64_t>(kp.width) * kp.height;
         if (!still) key.drop();
     }
     if (!key.valid()) {
-        if (!seen.sad_slow || !seen.confirmed) return;
-        key.take(history(0), tracker.position(), key_pattern);
-        const box r = key.region();
-        *cycles += cycles_of(cost::pattern_copy_profile(r.width, r.height));
-        traffic->bytes_written += static_cast<uint64_t>(r.width) * r.height;
+        if (seen.sad_slow && seen.confirmed) take_key(cycles, traffic);
         return;
     }
     box b = key.object();
@@ -630,18 +635,12 @@ void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
     }
     b.x = max_int(0, min_int(b.x, width - b.width));
     b.y = max_int(0, min_int(b.y, height - b.height));
-    const box t = tracker.position();
-    if (b.x != t.x || b.y != t.y || b.width != t.width || b.height != t.height) {
+    if (!same_box(b, tracker.position())) {
         tracker.start(history(0), b);
         *cycles += cycles_of(
             cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
     }
-    if (moved >= key_frame::max_shift) {
-        key.take(history(0), tracker.position(), tracker.pattern_box());
-        const box r = key.region();
-        *cycles += cycles_of(cost::pattern_copy_profile(r.width, r.height));
-        traffic->bytes_written += static_cast<uint64_t>(r.width) * r.height;
-    }
+    if (moved >= key_frame::max_shift) take_key(cycles, traffic);
 }
 
 // object(t-1)'s box is the box where both differences around it agree:

@@ -76,8 +76,9 @@ class key_frame {
 
     int dx() const { return m_dx; }
     int dy() const { return m_dy; }
-    box object() const { return m_object; }  // the object box when the key was taken
-    box region() const { return m_region; }  // the frame's pixels held
+    box object() const { return m_object; }    // the object box when the key was taken
+    box region() const { return m_region; }    // the frame's pixels held
+    box pattern() const { return m_pattern; }  // where the key's pattern was taken
 
   private:
     gray_cplane region_plane() const;

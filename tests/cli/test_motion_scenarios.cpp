@@ -57,11 +57,13 @@ TEST(MotionScenarios, FastThrow) {
 // the 10 px ball is never detected.
 TEST(MotionScenarios, DISABLED_SlowLargeBall) {
     const json report = scenario_test::run("large", "--set scenario.speed=0.2");
+    EXPECT_EQ(report["config"]["scenario"]["speed"], 0.2);  // the option reached the run
     expect_tracked_in_budget(report, "large at 1 px per frame");
 }
 
 TEST(MotionScenarios, DISABLED_SlowSmallBall) {
     const json report = scenario_test::run("small", "--set scenario.speed=0.2");
+    EXPECT_EQ(report["config"]["scenario"]["speed"], 0.2);  // the option reached the run
     expect_tracked_in_budget(report, "small at 1 px per frame");
 }
 
