@@ -334,4 +334,23 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"heldout6_pass50px_1pxpf_photo4", 50, 2.6, pass, 0.2, 0.0, 'x', photo4, 30}),
     case_name);
 
+// Held out, round 7: slow balls over the cluttered photographs whose
+// detections held a part of the ball (cones, teddy, kodim19), new sizes,
+// paths and spins, written after the slow candidate's rules were final and
+// before they were run on them.
+INSTANTIATE_TEST_SUITE_P(DISABLED_HeldOut7, BoxOnMotion,
+                         ::testing::Values(motion_case{"heldout7_pass90px_1pxpf_photo", 90, 2.6,
+                                                       pass, 0.2, 0.0, 'x', photo, 30},
+                                           motion_case{"heldout7_pass130px_1_5pxpf_photo4", 130,
+                                                       2.6, pass, 0.3, 0.0, 'x', photo4, 30},
+                                           motion_case{"heldout7_pass70px_1pxpf_photo3", 70, 2.6,
+                                                       pass, 0.2, 0.0, 'x', photo3, 30},
+                                           motion_case{"heldout7_circle120px_1pxpf_photo", 120, 2.6,
+                                                       circle, 0.125, 0.0, 'x', photo, 30},
+                                           motion_case{"heldout7_circle80px_1pxpf_photo4", 80, 2.6,
+                                                       circle, 0.125, 0.0, 'x', photo4, 30},
+                                           motion_case{"heldout7_pass160px_1pxpf_1rps_z_photo3",
+                                                       160, 2.6, pass, 0.2, 1.0, 'z', photo3, 30}),
+                         case_name);
+
 }  // namespace
