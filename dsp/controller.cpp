@@ -36,6 +36,9 @@ const char* stereo_method_name(stereo_method m) {
 namespace {
 
 constexpr int history_frames = 3;  // paper eq. 2-4 needs f(t-2), f(t-1), f(t)
+// Pairs a slow detection waits for its object to move key_frame::min_shift
+// px: slower than 0.4 px per frame it is taken as still.
+constexpr int max_candidate_pairs = 10;
 
 // Rows of the Sobel bands: the tracker never holds a pattern taller than
 // track.max_size; one input row more on each side.
@@ -76,6 +79,11 @@ box size_rule_region(box last, int reach, int width, int height) {
     const int x1 = min_int(width, last.right() + grow_x);
     const int y1 = min_int(height, last.bottom() + grow_y);
     return box{x0, y0, max_int(0, x1 - x0), max_int(0, y1 - y0)};
+}
+
+// `b` within `step` px of `a` on both axes.
+bool moved_at_most(box a, box b, int step) {
+    return b.x - a.x <= step && a.x - b.x <= step && b.y - a.y <= step && a.y - b.y <= step;
 }
 
 bool same_box(box a, box b) {
@@ -181,7 +189,9 @@ struct controller::impl {
 
     motion_detector detector;
     sad_tracker tracker;
-    key_frame key;  // a slow object's older frame (dsp/key_frame.h), SDRAM
+    key_frame key;                // a slow object's older frame (dsp/key_frame.h), SDRAM
+    bool slow_candidate = false;  // DETECT: a slow object's key, waiting for its outline
+    int candidate_pairs = 0;      // pairs the candidate has waited
 
     // Disparities (Q8) of the depth range's ends, without the search margin.
     int64_t far_disparity_q8 = 0, near_disparity_q8 = 0;
@@ -221,7 +231,16 @@ struct controller::impl {
     };
     bool track_object(uint64_t* cycles, sdram_traffic* traffic, track_motion* seen);
     void follow_slow_object(track_motion seen, uint64_t* cycles, sdram_traffic* traffic);
-    void take_key(uint64_t* cycles, sdram_traffic* traffic);
+    void take_key(uint64_t* cycles, sdram_traffic* traffic,
+                  int grow = key_frame::max_shift + key_frame::margin);
+    bool start_track(box detected, uint64_t* cycles, sdram_traffic* traffic);
+    bool confirm_slow_object(uint64_t* cycles, sdram_traffic* traffic);
+    bool keyed_object(uint64_t* cycles, sdram_traffic* traffic, bool of_part, box* object);
+    bool at_border(box b) const {
+        const int border = config.detect.close_passes + 1;
+        return b.x <= border || b.y <= border || b.right() >= width - border ||
+               b.bottom() >= height - border;
+    }
     // What the two frame differences say around the last box (dsp/box_refit.h).
     struct motion_extents {
         bool found = false;  // both differences hold enough pixels and share a box
@@ -353,6 +372,7 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
         s.width = w;
         s.height = h;
         s.frames_in_history = 0;
+        s.slow_candidate = false;
         m_state = tracker_state::detect;
     }
 
@@ -443,6 +463,13 @@ void controller::impl::update_motion_mask(uint64_t* cycles, sdram_traffic* traff
 bool controller::impl::detect(frame_output& out) {
     if (frames_in_history < history_frames) return false;
     stage_scope scope(*hardware, stage::detect, out);
+    uint64_t cycles = 0;
+    sdram_traffic traffic;
+    if (slow_candidate) {
+        out.detected = confirm_slow_object(&cycles, &traffic);
+        scope.charge(cycles, traffic);
+        return out.detected;
+    }
     const detection found =
         detector.detect_packed(history(1), history(0), motion_mask, config.detect);
     const int morphology_passes = 2 * (config.detect.open_passes + config.detect.close_passes);
@@ -465,39 +492,93 @@ bool controller::impl::detect(frame_output& out) {
     // object whole. It is detected again once wholly inside. The closing
     // clears the outermost close_passes rows and columns, so the border
     // band is one wider than that.
-    const int border = config.detect.close_passes + 1;
-    const box& b = found.object_box;
-    if (b.x <= border || b.y <= border || b.right() >= width - border ||
-        b.bottom() >= height - border) {
+    if (at_border(found.object_box)) {
         out.detection_at_border = true;
         return false;
     }
+    out.detected = start_track(found.object_box, &cycles, &traffic);
+    scope.charge(cycles, traffic);
+    return out.detected;
+}
 
+// The track's first box from the detection (object(t-1)): the SAD pattern
+// taken there is searched in f(t) around it (paper eq. 5), and object(t)
+// placed where Dif(t-1,t) reaches past object(t-1), as in TRACK
+// (track_object), with object(t-1)'s size; without such an extent, where
+// the SAD found the pattern. Where the SAD moved at most key_frame::max_step
+// px the object is slow, and its detection, made of one pair's thin
+// differences, may hold a part of it only (a 110 px ball at 1 px per frame
+// over a cluttered photograph: a 23 x 86 px crescent, or a 22 x 39 px
+// piece); it is not started but keyed (confirm_slow_object), the key's
+// region grown by twice the detection's longer side, where the rest of its
+// object may lie (a crescent is as long as its ball is wide; a smaller
+// piece's ball reached further).
+bool controller::impl::start_track(box detected, uint64_t* cycles, sdram_traffic* traffic) {
     key.drop();
-    tracker.start(history(1), found.object_box);
-    const gray_cplane pattern = tracker.pattern();
-    const int pattern_w = pattern.width, pattern_h = pattern.height;
-    // object(t) where Dif(t-1,t) reaches past object(t-1), as in TRACK
-    // (track_object); the size came from object(t-1).
-    uint64_t cycles = 0;
-    sdram_traffic traffic;
-    const motion_extents motion = measure_motion(b, &b, &cycles, &traffic);
+    tracker.start(history(1), detected);
+    const box pattern = tracker.pattern_box();
+    *cycles += cycles_of(cost::pattern_copy_profile(pattern.width, pattern.height));
+    const motion_extents motion = measure_motion(detected, &detected, cycles, traffic);
+    const track_status status = tracker.update(history(0));
+    *cycles += cycles_of(
+        cost::sad_search_profile(pattern.width, pattern.height, tracker.last_match().positions));
+    if (status == track_status::tracking) {
+        *cycles += cycles_of(
+            cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
+        if (moved_at_most(detected, tracker.position(), key_frame::max_step)) {
+            take_key(cycles, traffic,
+                     2 * max_int(detected.width, detected.height) + key_frame::max_shift +
+                         key_frame::margin);
+            slow_candidate = key.valid();
+            candidate_pairs = 0;
+            if (slow_candidate) return false;
+        }
+    }
     box followed;
-    const bool follows = motion.found && follow_object(motion, b, &followed);
-    const track_status status =
-        follows ? tracker.update_near(history(0), followed) : tracker.update(history(0));
-    cycles +=
-        cycles_of(cost::pattern_copy_profile(pattern_w, pattern_h)) +
-        cycles_of(cost::sad_search_profile(pattern_w, pattern_h, tracker.last_match().positions)) +
-        cycles_of(cost::pattern_copy_profile(tracker.pattern().width, tracker.pattern().height));
+    const bool follows = motion.found && follow_object(motion, detected, &followed);
     if (follows) {
         tracker.start(history(0), followed);
-        cycles += cycles_of(
-            cost::pattern_copy_profile(tracker.pattern().width, tracker.pattern().height));
+        *cycles += cycles_of(
+            cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
     }
-    scope.charge(cycles, traffic);
-    out.detected = follows || status == track_status::tracking;
-    return out.detected;
+    return follows || status == track_status::tracking;
+}
+
+// A slow object's detection confirmed from its key: each pair the key's
+// pattern is searched as in TRACK (key_frame::displacement); once the
+// object has moved min_shift px, Dif(key, t) holds its whole outline and
+// the track starts on object(t) from it (keyed_axis), with a new key
+// there. Not started when the pattern is lost (the object turned or sped
+// up: detected again) or has not moved min_shift px within
+// max_candidate_pairs (an object that stopped, or a flicker).
+bool controller::impl::confirm_slow_object(uint64_t* cycles, sdram_traffic* traffic) {
+    // No three-frame pass this pair: Dif(t-1,t) is made here, after which
+    // f(t-1)'s buffer is the pattern's scratch.
+    update_motion_mask(cycles, traffic);
+    int positions = 0;
+    const bool still = key.displacement(history(0), right_gray[1 - newest],
+                                        config.track.lost_mean_sad, &positions);
+    const box kp = key.pattern();
+    *cycles += cycles_of(cost::pattern_copy_profile(kp.width, kp.height)) +
+               cycles_of(cost::sad_search_profile(kp.width, kp.height, positions));
+    traffic->bytes_read += static_cast<uint64_t>(kp.width) * kp.height;
+    const int moved = max_int(max_int(key.dx(), -key.dx()), max_int(key.dy(), -key.dy()));
+    const bool waits = still && moved < key_frame::min_shift;
+    if (waits && ++candidate_pairs < max_candidate_pairs) return false;
+    slow_candidate = false;
+    if (waits || !still) {
+        key.drop();
+        return false;
+    }
+    box object;
+    const bool outlined = keyed_object(cycles, traffic, true, &object);
+    key.drop();
+    if (!outlined || at_border(object)) return false;
+    tracker.start(history(0), object);
+    *cycles += cycles_of(
+        cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
+    take_key(cycles, traffic);
+    return true;
 }
 
 // Stage track: SAD search around the last position (the tracker keeps the
@@ -587,11 +668,36 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
 // turning, spinning or faster object): the box of track_object stands.
 // Runs after update_motion_mask: f(t-1)'s buffer is scratch by then.
 // (take_key: the key at the tracker's box, its region's copy charged.)
-void controller::impl::take_key(uint64_t* cycles, sdram_traffic* traffic) {
-    key.take(history(0), tracker.position(), tracker.pattern_box());
+void controller::impl::take_key(uint64_t* cycles, sdram_traffic* traffic, int grow) {
+    key.take(history(0), tracker.position(), tracker.pattern_box(), grow);
     const box r = key.region();
     *cycles += cycles_of(cost::pattern_copy_profile(r.width, r.height));
     traffic->bytes_written += static_cast<uint64_t>(r.width) * r.height;
+}
+
+// object(t) from Dif(key, t) (keyed_axis), when that extent is one the
+// key's object can explain: within half and twice its size (else the
+// difference held more than the object, another mover or a light change,
+// or too little), or, for a key taken on a detection that may be a part of
+// its object (`of_part`), any size inside the key's region.
+bool controller::impl::keyed_object(uint64_t* cycles, sdram_traffic* traffic, bool of_part,
+                                    box* object) {
+    const block_group u =
+        key.moved_extent(history(0), config.detect.threshold, later_blocks, refit_rows);
+    const box r = key.region();
+    *cycles += cycles_of(cost::difference_packed_profile(r.width, r.height, cost::memory::sdram)) +
+               cycles_of(cost::motion_blocks_profile(r.width, r.height));
+    *traffic += cost::difference_packed_traffic(r.width, r.height, cost::memory::sdram);
+    const box o =
+        from_spans(keyed_axis(x_span(u.bbox), key.dx()), keyed_axis(y_span(u.bbox), key.dy()));
+    const box k = key.object();
+    if (!u.found || o.width < config.track.min_size || o.height < config.track.min_size)
+        return false;
+    if (!of_part && (2 * o.width < k.width || o.width > 2 * k.width || 2 * o.height < k.height ||
+                     o.height > 2 * k.height))
+        return false;
+    *object = o;
+    return true;
 }
 
 void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
@@ -615,24 +721,9 @@ void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
     b.x += key.dx();
     b.y += key.dy();
     const int moved = max_int(max_int(key.dx(), -key.dx()), max_int(key.dy(), -key.dy()));
-    if (moved >= key_frame::min_shift) {
-        const block_group u =
-            key.moved_extent(history(0), config.detect.threshold, later_blocks, refit_rows);
-        const box r = key.region();
-        *cycles +=
-            cycles_of(cost::difference_packed_profile(r.width, r.height, cost::memory::sdram)) +
-            cycles_of(cost::motion_blocks_profile(r.width, r.height));
-        *traffic += cost::difference_packed_traffic(r.width, r.height, cost::memory::sdram);
-        const box o =
-            from_spans(keyed_axis(x_span(u.bbox), key.dx()), keyed_axis(y_span(u.bbox), key.dy()));
-        const box k = key.object();
-        // Within half and twice the key's size: else the difference held
-        // more than the object (another mover, a light change) or too little.
-        if (u.found && 2 * o.width >= k.width && o.width <= 2 * k.width &&
-            2 * o.height >= k.height && o.height <= 2 * k.height &&
-            o.width >= config.track.min_size && o.height >= config.track.min_size)
-            b = o;
-    }
+    box outlined;
+    if (moved >= key_frame::min_shift && keyed_object(cycles, traffic, false, &outlined))
+        b = outlined;
     b.x = max_int(0, min_int(b.x, width - b.width));
     b.y = max_int(0, min_int(b.y, height - b.height));
     if (!same_box(b, tracker.position())) {
@@ -744,10 +835,7 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, box
     if (motion.both.width - w > reach || motion.both.height - h > reach) return false;
     const box b = from_spans(follow_axis(previous_x, x_span(motion.both), w),
                              follow_axis(previous_y, y_span(motion.both), h));
-    const int border = config.detect.close_passes + 1;
-    if (b.x <= border || b.y <= border || b.right() >= width - border ||
-        b.bottom() >= height - border)
-        return false;
+    if (at_border(b)) return false;
     *followed = b;
     return true;
 }

@@ -25,8 +25,7 @@ gray_cplane key_frame::region_plane() const {
     return gray_cplane{m_pixels, m_region.width, m_region.height, m_region.width};
 }
 
-void key_frame::take(gray_cplane frame, box object, box pattern) {
-    const int grow = max_shift + margin;
+void key_frame::take(gray_cplane frame, box object, box pattern, int grow) {
     const int x0 = std::max(0, object.x - grow), y0 = std::max(0, object.y - grow);
     const int x1 = std::min(frame.width, object.right() + grow);
     const int y1 = std::min(frame.height, object.bottom() + grow);

@@ -55,9 +55,10 @@ class key_frame {
     bool valid() const { return m_valid; }
     void drop() { m_valid = false; }
 
-    // The key: `frame`'s region around `object` (grown by max_shift + margin,
-    // clipped to the frame); `pattern` is the object's pattern box in it.
-    void take(gray_cplane frame, box object, box pattern);
+    // The key: `frame`'s region around `object` grown by `grow` each side
+    // (at least max_shift + margin), clipped to the frame; `pattern` is the
+    // object's pattern box in it.
+    void take(gray_cplane frame, box object, box pattern, int grow = max_shift + margin);
 
     // The displacement since the key (dx, dy): its pattern, copied into
     // `scratch` (at least pattern width x height bytes), searched in `frame`
