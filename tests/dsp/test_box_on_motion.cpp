@@ -238,8 +238,11 @@ INSTANTIATE_TEST_SUITE_P(
 
 // Slow objects, 2 px per frame and less: the thin differences of one pair
 // miss the outline along the motion, and the box's size and place across
-// it come from a key frame (dsp/key_frame.h). The first case was an open
-// case (mean 4.20, max 7.81 px before the key frame).
+// it come from a key frame (dsp/key_frame.h); a slow detection is started
+// only once its object moved key_frame::min_shift px, on Dif(key, t)'s
+// outline (dsp/controller.cpp, start_track), as one pair's detection may
+// hold a crescent of it. The first case was an open case (mean 4.20, max
+// 7.81 px before the key frame).
 INSTANTIATE_TEST_SUITE_P(
     Slow, BoxOnMotion,
     ::testing::Values(
@@ -249,49 +252,68 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"pass30px_1pxpf", 30, 2.6, pass, 0.2, 0.0, 'x', procedural, 30},
         // Held out: written before the key frame's rules were run on them,
         // run once after (circling at its leftmost point: mostly vertical).
-        // Five of those ten failed, four are open below; the rules that a
-        // key is taken only on a box a silhouette confirms and is not
-        // overruled by one pair's silhouette came after that.
+        // Five of those ten failed; the rules that a key is taken only on a
+        // box a silhouette confirms and is not overruled by one pair's
+        // silhouette came after that.
         motion_case{"heldout3_pass200px_1pxpf", 200, 1.5, pass, 0.2, 0.0, 'x', procedural, 30},
         motion_case{"heldout3_pass110px_2pxpf", 110, 2.6, pass, 0.4, 0.0, 'x', procedural, 30},
         motion_case{"heldout3_circle80px_1pxpf_photo2", 80, 2.6, circle, 0.125, 0.0, 'x', photo2,
                     30},
         motion_case{"heldout3_circle50px_2pxpf", 50, 2.6, circle, 0.25, 0.0, 'x', procedural, 30},
         motion_case{"heldout3_pass60px_1pxpf_3rps_z", 60, 2.6, pass, 0.2, 3.0, 'z', procedural, 30},
-        // Held out from the rules as they stand: written before, run once
-        // after. Four of six pass; two are open below.
+        // Held out from the key frame's final rules: written before, run
+        // once after. Four of six passed.
         motion_case{"heldout4_pass45px_1pxpf_photo2", 45, 2.6, pass, 0.2, 0.0, 'x', photo2, 30},
         motion_case{"heldout4_circle120px_1pxpf", 120, 2.6, circle, 0.125, 0.0, 'x', procedural,
                     30},
         motion_case{"heldout4_pass90px_1pxpf_2rps_y", 90, 2.6, pass, 0.2, 2.0, 'y', procedural, 30},
-        motion_case{"heldout4_pass20px_2pxpf_photo2", 20, 2.6, pass, 0.4, 0.0, 'x', photo2, 30}),
+        motion_case{"heldout4_pass20px_2pxpf_photo2", 20, 2.6, pass, 0.4, 0.0, 'x', photo2, 30},
+        // Open until the slow detection was keyed (its rules were chosen on
+        // these): a crescent or a piece detected (box means before: 3.80,
+        // 10.84, 6.81, 35.19, 19.20 px).
+        motion_case{"heldout3_pass110px_1pxpf_photo", 110, 2.6, pass, 0.2, 0.0, 'x', photo, 30},
+        motion_case{"heldout4_pass150px_1_5pxpf_photo", 150, 2.6, pass, 0.3, 0.0, 'x', photo, 30},
+        motion_case{"heldout4_circle70px_1_5pxpf_photo4", 70, 2.6, circle, 0.1875, 0.0, 'x', photo4,
+                    30},
+        motion_case{"heldout5_pass130px_1pxpf_photo", 130, 2.6, pass, 0.2, 0.0, 'x', photo, 30},
+        motion_case{"heldout5_circle90px_1pxpf_photo3", 90, 2.6, circle, 0.125, 0.0, 'x', photo3,
+                    30},
+        // Held out, round 6: three photographs no rule was chosen on
+        // (tsukuba, venus, aloe), written before the keyed slow detection
+        // ran on them, run once after: five of eight pass (three open
+        // below). The firmware before it passed the same five.
+        motion_case{"heldout6_pass140px_1_5pxpf_tsukuba", 140, 2.6, pass, 0.3, 0.0, 'x', tsukuba,
+                    30},
+        motion_case{"heldout6_pass70px_1pxpf_venus", 70, 2.6, pass, 0.2, 0.0, 'x', venus, 30},
+        motion_case{"heldout6_pass90px_2pxpf_aloe", 90, 2.6, pass, 0.4, 0.0, 'x', aloe, 30},
+        motion_case{"heldout6_pass120px_1pxpf_2rps_y_aloe", 120, 2.6, pass, 0.2, 2.0, 'y', aloe,
+                    30},
+        motion_case{"heldout6_pass50px_1pxpf_photo4", 50, 2.6, pass, 0.2, 0.0, 'x', photo4, 30},
+        // Held out, round 7: new sizes, paths and a spin over the cluttered
+        // photographs of the open cases, written after the rules were final,
+        // run once: three of six pass (three open below); the firmware
+        // before passed one (box means before 2.06, 4.23, 52.33 px).
+        motion_case{"heldout7_pass90px_1pxpf_photo", 90, 2.6, pass, 0.2, 0.0, 'x', photo, 30},
+        motion_case{"heldout7_pass70px_1pxpf_photo3", 70, 2.6, pass, 0.2, 0.0, 'x', photo3, 30},
+        motion_case{"heldout7_circle120px_1pxpf_photo", 120, 2.6, circle, 0.125, 0.0, 'x', photo,
+                    30}),
     case_name);
 
-// The other two held-out cases of that round fail, and the issue of the box
-// on fast and spinning objects stays open on them (docs/firmware.md, "Open";
-// run with --gtest_also_run_disabled_tests): the 110 px ball's depth is
-// 1.02 % in one of 24 pairs; the 60 px ball at 30 px per frame over "teddy"
-// is left behind from its second tracked pair (box 8.9, 13.6, 31.3, 56.1 px
-// off, depth 133 % while the box is on the background) and found again in
-// its sixth. The 110 px throw over kodim23 (not held out: written while
-// measuring the first) fails too: 1.04-1.07 % in depth in 3 of 24 pairs;
-// without spin 1.01-1.41 % in 3. Passing slowly (1 px per frame) over it,
-// 1.38 % in depth and the box's centre 4.4 px above to 8.8 px below the
-// ball's, as the thin differences of a slow object give its height badly
-// (with the key frame: box mean 0.56, max 2.10 px, depth up to 1.60 %).
-// Slow balls over cluttered photographs fail where their detection holds a
-// part of the ball only (one pair's thin differences: a crescent, or the
-// two crescents not joined): 110 px balls over cones, teddy and kodim19
-// (held out in round 3: box means 3.80, 34.48, 7.52 px now; 5.05, 11.85,
-// 13.32 before the key frame), an 80 px ball at 0.5 px per frame over
-// kodim19 detected only in pair 26; from round 4, a 150 px ball at 1.5 px
-// per frame over cones (detected 109 of 150 px wide; box mean 10.84) and a
-// 70 px ball circling at 1.5 px per frame over teddy (detected as a 55 x 16
-// crescent; mean 6.81, max 24.21 px). Round 5, three more slow balls over
-// those photographs, written to test a DETECT rule (a part's box widened to
-// Dif(t-1,t)'s extent; it helped only the case it was tried on and was not
-// kept), all fail on the firmware as it stands: 130 px over cones, 100 px
-// over teddy, 90 px circling over kodim19 (box means 35.19, 40.30, 19.20).
+// Open: the issue of the box on fast, large and spinning objects stays open
+// on these (docs/firmware.md, "Open"; run with
+// --gtest_also_run_disabled_tests, all fail). Depth beyond 1 % on balls of
+// 100-130 px over photographs, box within its bounds: the 110 px throws
+// over teddy and kodim23 (1.02, 1.07, 1.41 %), slow passes of 110 px over
+// kodim23, teddy, kodim19 and tsukuba (1.59, 1.80, 1.44, 1.13 %), 100 px
+// over teddy (1.31 %), 130 px over teddy (1.32 %), 100 px circling over
+// aloe (1.75 %). The 60 px ball at 30 px per frame over teddy is left
+// behind from its second tracked pair (box 8.9, 13.6, 31.3, 56.1 px off,
+// depth 133 % while on the background). A 100 px ball circling over venus
+// keeps a box 3.5 px left of it (mean 3.53, max 4.13). A 160 px ball
+// spinning at 1 rev/s over kodim19 drifts from its box by up to 13.9 px (its
+// pattern turns: no key). Detected too late for 30 frames: an 80 px ball at
+// 0.5 px per frame over kodim19 (no detection), an 80 px ball circling over
+// teddy (pair 25: 3 pairs scored).
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
     ::testing::Values(
@@ -301,56 +323,19 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"open_throw110px_6rps_z_photo2", 110, 2.6, thrown, 1.0, 6.0, 'z', photo2, 30},
         motion_case{"open_throw110px_photo2", 110, 2.6, thrown, 1.0, 0.0, 'x', photo2, 30},
         motion_case{"open_pass110px_1pxpf_photo2", 110, 2.6, pass, 0.2, 0.0, 'x', photo2, 30},
-        motion_case{"heldout3_pass110px_1pxpf_photo", 110, 2.6, pass, 0.2, 0.0, 'x', photo, 30},
         motion_case{"heldout3_pass110px_1pxpf_photo4", 110, 2.6, pass, 0.2, 0.0, 'x', photo4, 30},
         motion_case{"heldout3_pass110px_1pxpf_photo3", 110, 2.6, pass, 0.2, 0.0, 'x', photo3, 30},
         motion_case{"heldout3_pass80px_halfpxpf_photo3", 80, 2.6, pass, 0.1, 0.0, 'x', photo3, 30},
-        motion_case{"heldout4_pass150px_1_5pxpf_photo", 150, 2.6, pass, 0.3, 0.0, 'x', photo, 30},
-        motion_case{"heldout4_circle70px_1_5pxpf_photo4", 70, 2.6, circle, 0.1875, 0.0, 'x', photo4,
-                    30},
-        motion_case{"heldout5_pass130px_1pxpf_photo", 130, 2.6, pass, 0.2, 0.0, 'x', photo, 30},
         motion_case{"heldout5_pass100px_1pxpf_photo4", 100, 2.6, pass, 0.2, 0.0, 'x', photo4, 30},
-        motion_case{"heldout5_circle90px_1pxpf_photo3", 90, 2.6, circle, 0.125, 0.0, 'x', photo3,
-                    30}),
-    case_name);
-
-// Held out, round 6: slow balls over three photographs no rule was chosen
-// on (tsukuba, venus, aloe) and one smaller ball over teddy, written before
-// the DETECT rule for a slow ball's partial detection was run on them (the
-// rule was chosen on the open cases above), to be run once on it.
-INSTANTIATE_TEST_SUITE_P(
-    DISABLED_HeldOut6, BoxOnMotion,
-    ::testing::Values(
         motion_case{"heldout6_pass110px_1pxpf_tsukuba", 110, 2.6, pass, 0.2, 0.0, 'x', tsukuba, 30},
-        motion_case{"heldout6_pass140px_1_5pxpf_tsukuba", 140, 2.6, pass, 0.3, 0.0, 'x', tsukuba,
-                    30},
-        motion_case{"heldout6_pass70px_1pxpf_venus", 70, 2.6, pass, 0.2, 0.0, 'x', venus, 30},
         motion_case{"heldout6_circle100px_1pxpf_venus", 100, 2.6, circle, 0.125, 0.0, 'x', venus,
                     30},
         motion_case{"heldout6_circle100px_1pxpf_aloe", 100, 2.6, circle, 0.125, 0.0, 'x', aloe, 30},
-        motion_case{"heldout6_pass90px_2pxpf_aloe", 90, 2.6, pass, 0.4, 0.0, 'x', aloe, 30},
-        motion_case{"heldout6_pass120px_1pxpf_2rps_y_aloe", 120, 2.6, pass, 0.2, 2.0, 'y', aloe,
+        motion_case{"heldout7_pass130px_1_5pxpf_photo4", 130, 2.6, pass, 0.3, 0.0, 'x', photo4, 30},
+        motion_case{"heldout7_circle80px_1pxpf_photo4", 80, 2.6, circle, 0.125, 0.0, 'x', photo4,
                     30},
-        motion_case{"heldout6_pass50px_1pxpf_photo4", 50, 2.6, pass, 0.2, 0.0, 'x', photo4, 30}),
+        motion_case{"heldout7_pass160px_1pxpf_1rps_z_photo3", 160, 2.6, pass, 0.2, 1.0, 'z', photo3,
+                    30}),
     case_name);
-
-// Held out, round 7: slow balls over the cluttered photographs whose
-// detections held a part of the ball (cones, teddy, kodim19), new sizes,
-// paths and spins, written after the slow candidate's rules were final and
-// before they were run on them.
-INSTANTIATE_TEST_SUITE_P(DISABLED_HeldOut7, BoxOnMotion,
-                         ::testing::Values(motion_case{"heldout7_pass90px_1pxpf_photo", 90, 2.6,
-                                                       pass, 0.2, 0.0, 'x', photo, 30},
-                                           motion_case{"heldout7_pass130px_1_5pxpf_photo4", 130,
-                                                       2.6, pass, 0.3, 0.0, 'x', photo4, 30},
-                                           motion_case{"heldout7_pass70px_1pxpf_photo3", 70, 2.6,
-                                                       pass, 0.2, 0.0, 'x', photo3, 30},
-                                           motion_case{"heldout7_circle120px_1pxpf_photo", 120, 2.6,
-                                                       circle, 0.125, 0.0, 'x', photo, 30},
-                                           motion_case{"heldout7_circle80px_1pxpf_photo4", 80, 2.6,
-                                                       circle, 0.125, 0.0, 'x', photo4, 30},
-                                           motion_case{"heldout7_pass160px_1pxpf_1rps_z_photo3",
-                                                       160, 2.6, pass, 0.2, 1.0, 'z', photo3, 30}),
-                         case_name);
 
 }  // namespace
