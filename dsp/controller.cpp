@@ -233,6 +233,8 @@ struct controller::impl {
     void follow_slow_object(track_motion seen, uint64_t* cycles, sdram_traffic* traffic);
     void take_key(uint64_t* cycles, sdram_traffic* traffic,
                   int grow = key_frame::max_shift + key_frame::margin);
+    bool start_detection(const detection& found, frame_output& out, uint64_t* cycles,
+                         sdram_traffic* traffic);
     bool start_track(box detected, uint64_t* cycles, sdram_traffic* traffic);
     bool confirm_slow_object(uint64_t* cycles, sdram_traffic* traffic);
     bool keyed_object(uint64_t* cycles, sdram_traffic* traffic, bool of_part, box* object);
@@ -463,13 +465,6 @@ void controller::impl::update_motion_mask(uint64_t* cycles, sdram_traffic* traff
 bool controller::impl::detect(frame_output& out) {
     if (frames_in_history < history_frames) return false;
     stage_scope scope(*hardware, stage::detect, out);
-    uint64_t cycles = 0;
-    sdram_traffic traffic;
-    if (slow_candidate) {
-        out.detected = confirm_slow_object(&cycles, &traffic);
-        scope.charge(cycles, traffic);
-        return out.detected;
-    }
     const detection found =
         detector.detect_packed(history(1), history(0), motion_mask, config.detect);
     const int morphology_passes = 2 * (config.detect.open_passes + config.detect.close_passes);
@@ -483,7 +478,20 @@ bool controller::impl::detect(frame_output& out) {
     // block group around it (dsp/motion_blocks.h), or that group alone when
     // the opening left no component (an object much wider than its motion).
     scope.charge(cycles_of(cost::motion_blocks_profile(width, height)));
-    if (!found.object_found) return false;
+    // A slow candidate waiting from an earlier pair (start_track) goes on
+    // after this pair's detection, which may start a faster object instead.
+    const bool waiting = slow_candidate;
+    uint64_t cycles = 0;
+    sdram_traffic traffic;
+    out.detected = found.object_found && start_detection(found, out, &cycles, &traffic);
+    if (!out.detected && waiting && slow_candidate)
+        out.detected = confirm_slow_object(&cycles, &traffic);
+    scope.charge(cycles, traffic);
+    return out.detected;
+}
+
+bool controller::impl::start_detection(const detection& found, frame_output& out, uint64_t* cycles,
+                                       sdram_traffic* traffic) {
     out.motion_found = true;
     out.motion_box = found.object_box;
     // An object cut by the image border is not started: its box would hold
@@ -496,9 +504,7 @@ bool controller::impl::detect(frame_output& out) {
         out.detection_at_border = true;
         return false;
     }
-    out.detected = start_track(found.object_box, &cycles, &traffic);
-    scope.charge(cycles, traffic);
-    return out.detected;
+    return start_track(found.object_box, cycles, traffic);
 }
 
 // The track's first box from the detection (object(t-1)): the SAD pattern
@@ -512,9 +518,10 @@ bool controller::impl::detect(frame_output& out) {
 // piece); it is not started but keyed (confirm_slow_object), the key's
 // region grown by twice the detection's longer side, where the rest of its
 // object may lie (a crescent is as long as its ball is wide; a smaller
-// piece's ball reached further).
+// piece's ball reached further). One candidate at a time: while one waits,
+// a slow detection is left to it, and a faster one starts its track (a
+// candidate must not hold a thrown ball back for its 10 pairs).
 bool controller::impl::start_track(box detected, uint64_t* cycles, sdram_traffic* traffic) {
-    key.drop();
     tracker.start(history(1), detected);
     const box pattern = tracker.pattern_box();
     *cycles += cycles_of(cost::pattern_copy_profile(pattern.width, pattern.height));
@@ -526,6 +533,7 @@ bool controller::impl::start_track(box detected, uint64_t* cycles, sdram_traffic
         *cycles += cycles_of(
             cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
         if (moved_at_most(detected, tracker.position(), key_frame::max_step)) {
+            if (slow_candidate) return false;  // one at a time: the waiting one goes on
             take_key(cycles, traffic,
                      2 * max_int(detected.width, detected.height) + key_frame::max_shift +
                          key_frame::margin);
@@ -536,12 +544,15 @@ bool controller::impl::start_track(box detected, uint64_t* cycles, sdram_traffic
     }
     box followed;
     const bool follows = motion.found && follow_object(motion, detected, &followed);
+    if (!follows && status != track_status::tracking) return false;
+    key.drop();
+    slow_candidate = false;
     if (follows) {
         tracker.start(history(0), followed);
         *cycles += cycles_of(
             cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
     }
-    return follows || status == track_status::tracking;
+    return true;
 }
 
 // A slow object's detection confirmed from its key: each pair the key's
@@ -552,9 +563,8 @@ bool controller::impl::start_track(box detected, uint64_t* cycles, sdram_traffic
 // up: detected again) or has not moved min_shift px within
 // max_candidate_pairs (an object that stopped, or a flicker).
 bool controller::impl::confirm_slow_object(uint64_t* cycles, sdram_traffic* traffic) {
-    // No three-frame pass this pair: Dif(t-1,t) is made here, after which
-    // f(t-1)'s buffer is the pattern's scratch.
-    update_motion_mask(cycles, traffic);
+    // After this pair's detection (its pass made Dif(t-1,t)): f(t-1)'s
+    // buffer is the pattern's scratch.
     int positions = 0;
     const bool still = key.displacement(history(0), right_gray[1 - newest],
                                         config.track.lost_mean_sad, &positions);

@@ -1,0 +1,170 @@
+// The controller's slow candidate (dsp/controller.cpp, start_track and
+// confirm_slow_object) on rendered scenes: a detection whose SAD barely
+// moved waits for its object to move key_frame::min_shift px and starts on
+// Dif(key, t)'s outline; it gives up on an object that does not move that
+// far (a jiggle), and it does not keep a faster object from being detected. The truth (where
+// each ball's image is, when it starts moving) is the renderer's ellipse,
+// not the firmware's.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "dsp/controller.h"
+#include "model/scene/ball_paths.h"
+#include "tests/support/host/stereo_runner.h"
+
+namespace {
+
+constexpr double depth_m = 2.6;
+
+// A ball whose image at depth_m is diameter_px wide, on `path`.
+scene::ball_desc ball_of(double diameter_px, const scene::trajectory& path, double focal_px) {
+    scene::ball_desc ball;
+    ball.radius_m =
+        diameter_px * depth_m / std::sqrt(4.0 * focal_px * focal_px + diameter_px * diameter_px);
+    ball.path = path;
+    return ball;
+}
+
+scene::scenario procedural_scene(int frames) {
+    scene::scenario s;
+    s.scene.background =
+        scene::background_desc::procedural_plane(scene::procedural_texture_params{}, 5.0);
+    s.frame_count = frames;
+    return s;
+}
+
+// A ball jiggling on a circle `radius_px` in the image (in the plane at
+// depth_m), one turn per `frames_per_turn` frames, from `start_frame`.
+scene::trajectory jiggle(const scene::scenario& s, double x_m, double radius_px,
+                         double frames_per_turn, int start_frame) {
+    const double pi = std::acos(-1.0);
+    const double radius_m = radius_px * depth_m / s.scene.rig.focal_px();
+    return scene::trajectory::circle({x_m, 0.0, depth_m}, radius_m, {1.0, 0.0, 0.0},
+                                     {0.0, 1.0, 0.0},
+                                     2.0 * pi / (frames_per_turn * s.frame_period_s), 0.0,
+                                     scene::motion_start_s(start_frame, s.frame_period_s));
+}
+
+// A straight pass along +X at `px_per_frame` in the image from `start_frame`.
+scene::trajectory pass(const scene::scenario& s, double x_m, double y_m, double px_per_frame,
+                       int start_frame) {
+    const double v = px_per_frame * depth_m / s.scene.rig.focal_px() / s.frame_period_s;
+    return scene::trajectory::line({x_m, y_m, depth_m}, {v, 0.0, 0.0},
+                                   scene::motion_start_s(start_frame, s.frame_period_s));
+}
+
+struct run_result {
+    std::vector<host::host_record> records;
+    std::vector<std::vector<scene::ball_truth>> truth;  // per frame, per ball
+};
+
+run_result run(const scene::scenario& s) {
+    host::stereo_runner runner(s, host::controller_config_for(s.scene.rig));
+    run_result r;
+    r.records = runner.run(0, s.frame_count);
+    for (int n = 0; n < s.frame_count; ++n) r.truth.push_back(runner.sequence().truth(n));
+    return r;
+}
+
+// The first frame ball `b` is tracked (its box centre within a quarter of
+// its diameter of the ball's), or -1.
+int first_tracked(const run_result& r, size_t b) {
+    for (const host::host_record& rec : r.records) {
+        if (!rec.firmware.has_object) continue;
+        const scene::sphere_image& t = r.truth[static_cast<size_t>(rec.index)][b].right;
+        const dsp::box& box = rec.firmware.box_right;
+        const double dx = box.x + 0.5 * box.width - t.ellipse_centre.x;
+        const double dy = box.y + 0.5 * box.height - t.ellipse_centre.y;
+        if (std::hypot(dx, dy) <= 0.25 * (t.max_x - t.min_x)) return rec.index;
+    }
+    return -1;
+}
+
+std::string states(const run_result& r) {
+    std::string s;
+    for (const host::host_record& rec : r.records)
+        s += dsp::tracker_state_name(rec.firmware.state)[0];
+    return s;
+}
+
+}  // namespace
+
+// A 60 px ball passing at 1 px per frame: nothing is reported until it has
+// moved 4 px from where it was detected, and the first box is its outline
+// (centre within 1.5 px, size within 3 px of the rendered ellipse's).
+TEST(SlowCandidate, StartsOnTheOutlineOnceTheBallMovedFourPixels) {
+    scene::scenario s = procedural_scene(24);
+    s.scene.balls.push_back(ball_of(60.0, pass(s, 0.0, 0.0, 1.0, 3), s.scene.rig.focal_px()));
+    const run_result r = run(s);
+    std::printf("states %s\n", states(r).c_str());
+    int first = -1;
+    for (const host::host_record& rec : r.records)
+        if (rec.firmware.has_object && first < 0) first = rec.index;
+    ASSERT_GE(first, 0) << "never tracked";
+    // The ball starts moving between frames 3 and 4 (motion_start_s(3)).
+    const scene::sphere_image& t = r.truth[static_cast<size_t>(first)][0].right;
+    const scene::sphere_image& t3 = r.truth[3][0].right;
+    EXPECT_GE(t.ellipse_centre.x - t3.ellipse_centre.x, 4.0 + 1.0)
+        << "started before the ball moved 4 px past a detection (which needs 1 px of motion)";
+    const dsp::box& box = r.records[static_cast<size_t>(first)].firmware.box_right;
+    EXPECT_NEAR(box.x + 0.5 * box.width, t.ellipse_centre.x, 1.5);
+    EXPECT_NEAR(box.y + 0.5 * box.height, t.ellipse_centre.y, 1.5);
+    EXPECT_NEAR(box.width, t.max_x - t.min_x, 3.0);
+    EXPECT_NEAR(box.height, t.max_y - t.min_y, 3.0);
+}
+
+// A fast ball (12 px per frame) is started on its first detection: its SAD
+// moved more than key_frame::max_step, so it does not wait.
+TEST(SlowCandidate, AFastBallDoesNotWait) {
+    scene::scenario s = procedural_scene(16);
+    s.scene.balls.push_back(ball_of(60.0, pass(s, -0.25, 0.0, 12.0, 3), s.scene.rig.focal_px()));
+    const run_result r = run(s);
+    std::printf("states %s\n", states(r).c_str());
+    const int first = first_tracked(r, 0);
+    ASSERT_GE(first, 0) << "never tracked";
+    EXPECT_LE(first - 3, 3) << "tracked " << first - 3 << " frames after the motion began";
+}
+
+// A ball jiggling within 2.5 px never moves 4 px from a key: it is never
+// started, and its candidate gives up, so a large slow ball that starts
+// moving later is keyed and tracked in time (within 10 pairs of waiting,
+// the 4 px of its own, and 3 pairs for a detection).
+TEST(SlowCandidate, GivesUpOnAnObjectThatDoesNotMoveFourPixels) {
+    scene::scenario s = procedural_scene(50);
+    const double f = s.scene.rig.focal_px();
+    s.scene.balls.push_back(ball_of(40.0, jiggle(s, -0.55, 1.25, 6.0, 3), f));
+    const int b_start = 20;
+    s.scene.balls.push_back(ball_of(150.0, pass(s, 0.1, 0.0, 1.5, b_start), f));
+    const run_result r = run(s);
+    std::printf("states %s\n", states(r).c_str());
+    for (const host::host_record& rec : r.records) {
+        if (!rec.firmware.has_object) continue;
+        const scene::sphere_image& a = r.truth[static_cast<size_t>(rec.index)][0].right;
+        const dsp::box& box = rec.firmware.box_right;
+        const bool on_a = box.x <= a.ellipse_centre.x && a.ellipse_centre.x <= box.right() &&
+                          box.y <= a.ellipse_centre.y && a.ellipse_centre.y <= box.bottom();
+        EXPECT_FALSE(on_a) << "the jiggling ball was started in frame " << rec.index;
+    }
+    const int first = first_tracked(r, 1);
+    ASSERT_GE(first, 0) << "the large ball was never tracked";
+    EXPECT_LE(first - b_start, 10 + 3 + 3 + 2) << "tracked in frame " << first;
+}
+
+// While a candidate waits on the jiggling ball, a ball that starts a fast
+// pass is still detected and tracked within 3 frames.
+TEST(SlowCandidate, DoesNotHoldAFastBallBack) {
+    scene::scenario s = procedural_scene(40);
+    const double f = s.scene.rig.focal_px();
+    s.scene.balls.push_back(ball_of(40.0, jiggle(s, -0.55, 1.25, 6.0, 3), f));
+    const int b_start = 20;
+    s.scene.balls.push_back(ball_of(60.0, pass(s, 0.05, 0.15, 10.0, b_start), f));
+    const run_result r = run(s);
+    std::printf("states %s\n", states(r).c_str());
+    const int first = first_tracked(r, 1);
+    ASSERT_GE(first, 0) << "the fast ball was never tracked";
+    EXPECT_LE(first - b_start, 3) << "tracked in frame " << first;
+}
