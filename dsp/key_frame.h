@@ -56,7 +56,8 @@ class key_frame {
     void drop() { m_valid = false; }
 
     // The key: `frame`'s region around `object` grown by `grow` each side
-    // (at least max_shift + margin), clipped to the frame; `pattern` is the
+    // (max_shift + margin for a tracked object; more for a detection that
+    // may be a part of its object), clipped to the frame; `pattern` is the
     // object's pattern box in it.
     void take(gray_cplane frame, box object, box pattern, int grow = max_shift + margin);
 
