@@ -310,9 +310,9 @@ INSTANTIATE_TEST_SUITE_P(
 // behind from its second tracked pair (box 8.9, 13.6, 31.3, 56.1 px off,
 // depth 133 % while on the background). A 100 px ball circling over venus
 // keeps a box 3.5 px left of it (mean 3.53, max 4.13). A 160 px ball
-// spinning at 1 rev/s over kodim19 drifts from its box by up to 13.9 px (its
-// pattern turns: no key). Detected too late for 30 frames: an 80 px ball at
-// 0.5 px per frame over kodim19 (no detection), an 80 px ball circling over
+// spinning at 1 rev/s over kodim19 drifts from its box by up to 13.9 px
+// (why not yet measured). Detected too late for 30 frames: an 80 px ball at
+// 0.5 px per frame over kodim19 (no start), an 80 px ball circling over
 // teddy (pair 25: 3 pairs scored).
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
