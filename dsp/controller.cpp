@@ -237,6 +237,7 @@ struct controller::impl {
                          sdram_traffic* traffic);
     bool start_track(box detected, uint64_t* cycles, sdram_traffic* traffic);
     bool confirm_slow_object(uint64_t* cycles, sdram_traffic* traffic);
+    bool search_key(uint64_t* cycles, sdram_traffic* traffic);
     bool keyed_object(uint64_t* cycles, sdram_traffic* traffic, bool of_part, box* object);
     bool at_border(box b) const {
         const int border = config.detect.close_passes + 1;
@@ -525,7 +526,6 @@ bool controller::impl::start_track(box detected, uint64_t* cycles, sdram_traffic
     tracker.start(history(1), detected);
     const box pattern = tracker.pattern_box();
     *cycles += cycles_of(cost::pattern_copy_profile(pattern.width, pattern.height));
-    const motion_extents motion = measure_motion(detected, &detected, cycles, traffic);
     const track_status status = tracker.update(history(0));
     *cycles += cycles_of(
         cost::sad_search_profile(pattern.width, pattern.height, tracker.last_match().positions));
@@ -542,6 +542,8 @@ bool controller::impl::start_track(box detected, uint64_t* cycles, sdram_traffic
             if (slow_candidate) return false;
         }
     }
+    // Read only for an object that is started: not in a slow candidate's pairs.
+    const motion_extents motion = measure_motion(detected, &detected, cycles, traffic);
     box followed;
     const bool follows = motion.found && follow_object(motion, detected, &followed);
     if (!follows && status != track_status::tracking) return false;
@@ -565,15 +567,8 @@ bool controller::impl::start_track(box detected, uint64_t* cycles, sdram_traffic
 bool controller::impl::confirm_slow_object(uint64_t* cycles, sdram_traffic* traffic) {
     // After this pair's detection (its pass made Dif(t-1,t)): f(t-1)'s
     // buffer is the pattern's scratch.
-    int positions = 0;
-    const bool still = key.displacement(history(0), right_gray[1 - newest],
-                                        config.track.lost_mean_sad, &positions);
-    const box kp = key.pattern();
-    *cycles += cycles_of(cost::pattern_copy_profile(kp.width, kp.height)) +
-               cycles_of(cost::sad_search_profile(kp.width, kp.height, positions));
-    traffic->bytes_read += static_cast<uint64_t>(kp.width) * kp.height;
-    const int moved = max_int(max_int(key.dx(), -key.dx()), max_int(key.dy(), -key.dy()));
-    const bool waits = still && moved < key_frame::min_shift;
+    const bool still = search_key(cycles, traffic);
+    const bool waits = still && key.shift() < key_frame::min_shift;
     if (waits && ++candidate_pairs < max_candidate_pairs) return false;
     slow_candidate = false;
     if (waits || !still) {
@@ -685,6 +680,20 @@ void controller::impl::take_key(uint64_t* cycles, sdram_traffic* traffic, int gr
     traffic->bytes_written += static_cast<uint64_t>(r.width) * r.height;
 }
 
+// The key's pattern searched in f(t) (key_frame::displacement), charged:
+// whether it was found within max_step px of its last place. Its copy
+// borrows f(t-1)'s buffer, dead once Dif(t-1,t) is made.
+bool controller::impl::search_key(uint64_t* cycles, sdram_traffic* traffic) {
+    int positions = 0;
+    const bool still = key.displacement(history(0), right_gray[1 - newest],
+                                        config.track.lost_mean_sad, &positions);
+    const box kp = key.pattern();
+    *cycles += cycles_of(cost::pattern_copy_profile(kp.width, kp.height)) +
+               cycles_of(cost::sad_search_profile(kp.width, kp.height, positions));
+    traffic->bytes_read += static_cast<uint64_t>(kp.width) * kp.height;
+    return still;
+}
+
 // object(t) from Dif(key, t) (keyed_axis), when that extent is one the
 // key's object can explain: within half and twice its size (else the
 // difference held more than the object, another mover or a light change,
@@ -712,17 +721,7 @@ bool controller::impl::keyed_object(uint64_t* cycles, sdram_traffic* traffic, bo
 
 void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
                                           sdram_traffic* traffic) {
-    uint8_t* scratch = right_gray[1 - newest];
-    if (key.valid()) {
-        int positions = 0;
-        const bool still =
-            key.displacement(history(0), scratch, config.track.lost_mean_sad, &positions);
-        const box kp = key.pattern();
-        *cycles += cycles_of(cost::pattern_copy_profile(kp.width, kp.height)) +
-                   cycles_of(cost::sad_search_profile(kp.width, kp.height, positions));
-        traffic->bytes_read += static_cast<uint64_t>(kp.width) * kp.height;
-        if (!still) key.drop();
-    }
+    if (key.valid() && !search_key(cycles, traffic)) key.drop();
     if (!key.valid()) {
         if (seen.sad_slow && seen.confirmed) take_key(cycles, traffic);
         return;
@@ -730,7 +729,7 @@ void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
     box b = key.object();
     b.x += key.dx();
     b.y += key.dy();
-    const int moved = max_int(max_int(key.dx(), -key.dx()), max_int(key.dy(), -key.dy()));
+    const int moved = key.shift();
     box outlined;
     if (moved >= key_frame::min_shift && keyed_object(cycles, traffic, false, &outlined))
         b = outlined;

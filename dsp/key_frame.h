@@ -28,6 +28,7 @@
 // Costs: dsp::cost kernels, charged by the controller (stage track).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 
@@ -76,6 +77,9 @@ class key_frame {
     block_group moved_extent(gray_cplane frame, uint8_t threshold, motion_blocks& blocks,
                              uint8_t* row) const;
 
+    int shift() const {  // px moved since the key, on the axis it moved most
+        return std::max(std::max(m_dx, -m_dx), std::max(m_dy, -m_dy));
+    }
     int dx() const { return m_dx; }
     int dy() const { return m_dy; }
     box object() const { return m_object; }    // the object box when the key was taken

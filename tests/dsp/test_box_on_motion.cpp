@@ -37,6 +37,7 @@
 #include "model/scene/ball_paths.h"
 #include "tb/platform/scoring/error_metrics.h"
 #include "tests/support/data_path.h"
+#include "tests/support/host/scenarios.h"
 #include "tests/support/host/stereo_runner.h"
 #include "tests/support/photo_texture.h"
 
@@ -71,12 +72,6 @@ std::string case_name(const ::testing::TestParamInfo<motion_case>& info) {
     return info.param.name;
 }
 
-// The radius of a ball at depth_m whose image is diameter_px wide at the image
-// centre: the tangent cone's width 2 f r / sqrt(Z^2 - r^2) (model/scene/camera.h).
-double radius_for_width(double diameter_px, double depth_m, double focal_px) {
-    return diameter_px * depth_m / std::sqrt(4.0 * focal_px * focal_px + diameter_px * diameter_px);
-}
-
 // A real photograph mapped on the background plane at 5 m: the Middlebury
 // 2003 "cones" and "teddy" and 2001 "tsukuba" and "venus" left views
 // (../shared/data/middlebury_2001_2003), cluttered scenes, the 2006 "aloe"
@@ -105,7 +100,7 @@ scene::scenario scenario_of(const motion_case& c) {
     }
     const double start = scene::motion_start_s(3, s.frame_period_s);
     scene::ball_desc ball;
-    ball.radius_m = radius_for_width(c.diameter_px, c.depth_m, rig.focal_px());
+    ball.radius_m = host::ball_radius_for_width(c.diameter_px, c.depth_m, rig.focal_px());
     ball.spin_rad_s = c.spin_rps * 2.0 * std::acos(-1.0);
     ball.spin_axis = c.spin_axis == 'x'   ? scene::vec3{1.0, 0.0, 0.0}
                      : c.spin_axis == 'y' ? scene::vec3{0.0, 1.0, 0.0}

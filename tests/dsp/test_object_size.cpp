@@ -42,12 +42,6 @@ constexpr int max_detection_delay = 3;         // frames after the first motion 
 constexpr double max_mean_box_error_px = 5.0;  // box centre, mean over the tracked frames
 constexpr double max_depth_error_pct = 1.0;    // every tracked frame
 
-// The radius of a ball at depth_m whose image is diameter_px wide at the image
-// centre: the tangent cone's width 2 f r / sqrt(Z^2 - r^2) (model/scene/camera.h).
-double radius_for_width(double diameter_px, double depth_m, double focal_px) {
-    return diameter_px * depth_m / std::sqrt(4.0 * focal_px * focal_px + diameter_px * diameter_px);
-}
-
 struct size_case {
     double diameter_px;
     double depth_m;
@@ -67,7 +61,7 @@ struct size_result {
 
 size_result run_case(const size_case& c) {
     const scene::stereo_rig rig;
-    const double radius_m = radius_for_width(c.diameter_px, c.depth_m, rig.focal_px());
+    const double radius_m = host::ball_radius_for_width(c.diameter_px, c.depth_m, rig.focal_px());
     const scene::scenario scenario = host::pass_scenario(c.depth_m, radius_m);
     host::stereo_runner runner(scenario, host::controller_config_for(scenario.scene.rig));
     const std::vector<host::host_record> records = runner.run(0, scenario.frame_count);

@@ -2,9 +2,9 @@
 // confirm_slow_object) on rendered scenes: a detection whose SAD barely
 // moved waits for its object to move key_frame::min_shift px and starts on
 // Dif(key, t)'s outline; it gives up on an object that does not move that
-// far (a jiggle), and it does not keep a faster object from being detected. The truth (where
-// each ball's image is, when it starts moving) is the renderer's ellipse,
-// not the firmware's.
+// far (a jiggle), and it does not keep a faster object from being
+// detected. The truth (where each ball's image is, when it starts moving)
+// is the renderer's ellipse, not the firmware's.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,6 +14,7 @@
 
 #include "dsp/controller.h"
 #include "model/scene/ball_paths.h"
+#include "tests/support/host/scenarios.h"
 #include "tests/support/host/stereo_runner.h"
 
 namespace {
@@ -23,8 +24,7 @@ constexpr double depth_m = 2.6;
 // A ball whose image at depth_m is diameter_px wide, on `path`.
 scene::ball_desc ball_of(double diameter_px, const scene::trajectory& path, double focal_px) {
     scene::ball_desc ball;
-    ball.radius_m =
-        diameter_px * depth_m / std::sqrt(4.0 * focal_px * focal_px + diameter_px * diameter_px);
+    ball.radius_m = host::ball_radius_for_width(diameter_px, depth_m, focal_px);
     ball.path = path;
     return ball;
 }

@@ -24,6 +24,10 @@ scene::scenario one_ball_scenario(const scene::trajectory& path, int frames,
 
 }  // namespace
 
+double ball_radius_for_width(double diameter_px, double depth_m, double focal_px) {
+    return diameter_px * depth_m / std::sqrt(4.0 * focal_px * focal_px + diameter_px * diameter_px);
+}
+
 scene::scenario static_scenario(int frames) {
     return one_ball_scenario(scene::resting_path(2.6), frames);
 }

@@ -8,6 +8,10 @@
 
 namespace host {
 
+// The radius of a ball at depth_m whose image is diameter_px wide at the image
+// centre: the tangent cone's width 2 f r / sqrt(Z^2 - r^2) (model/scene/camera.h).
+double ball_radius_for_width(double diameter_px, double depth_m, double focal_px);
+
 // The ball rests at (-0.3, 0, 2.6) m (scene::resting_path) for every frame:
 // nothing moves.
 scene::scenario static_scenario(int frames = 40);
