@@ -256,7 +256,7 @@ struct controller::impl {
                                   sdram_traffic* traffic);
     bool follow_object(const motion_extents& motion, box last, box* followed) const;
     box pull_box(const motion_extents& motion, box last, box found) const;
-    void stereo_sad(box object, frame_output& out);
+    void stereo_sad(box object, bool outlined, frame_output& out);
     void stereo_edge(box object, frame_output& out);
     bool choose_disparity(frame_output& out) const;
     void xyz(box object, frame_output& out);
@@ -382,6 +382,9 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
     s.preprocess(raw_left, raw_right, m_state, out);
 
     bool has_object = false;
+    // TRACK's box is the object's outline (within a pixel or two: box_refit.h);
+    // a detection's may be a part of it (one pair's thin differences).
+    const bool outlined = m_state == tracker_state::track;
     switch (m_state) {
         case tracker_state::detect:
             has_object = s.detect(out);
@@ -404,7 +407,7 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
 
     out.has_object = true;
     out.box_right = s.tracker.position();
-    s.stereo_sad(out.box_right, out);
+    s.stereo_sad(out.box_right, outlined, out);
     s.stereo_edge(out.box_right, out);
     if (s.choose_disparity(out)) s.xyz(out.box_right, out);
     return out;
@@ -867,7 +870,7 @@ box controller::impl::pull_box(const motion_extents& motion, box last, box found
 // (+-row_slack) of the left image over the depth range; a large
 // object's disparity is then its tiles' mean depth around the core's
 // (dsp/object_depth.h), the core's when too few tiles matched.
-void controller::impl::stereo_sad(box object, frame_output& out) {
+void controller::impl::stereo_sad(box object, bool outlined, frame_output& out) {
     stage_scope scope(*hardware, stage::stereo_sad, out);
     const box core = object_core(object);
     out.sad_match = stereo_match_sad(history(0), left(), core, config.stereo);
@@ -881,13 +884,16 @@ void controller::impl::stereo_sad(box object, frame_output& out) {
     if (!object_is_tiled(object, config.surface)) return;
     const object_depth_result& r = out.surface =
         match_object_surface(history(0), left(), object, out.sad_match.disparity_q8, config.stereo,
-                             config.rig, config.surface);
+                             config.rig, config.surface, outlined);
     // Each tile a search of its own (the mean of their positions: they
     // differ only where the left image's border clips one).
     if (r.tiles > 0)
         scope.charge(r.tiles * cycles_of(cost::sad_search_profile(r.tile_width, r.tile_height,
                                                                   r.positions / r.tiles)));
     if (config.stereo.subpixel) scope.charge(r.tiles * cycles_of(cost::subpixel_profile()));
+    if (outlined)
+        scope.charge(
+            cycles_of(cost::surface_outline_profile(r.rows * r.tile_height, r.columns, r.inside)));
     scope.charge(cycles_of(cost::surface_mean_profile(r.inside, r.matched)));
     if (r.valid) out.sad_match.disparity_q8 = r.disparity_q8;
 }

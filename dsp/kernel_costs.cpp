@@ -317,6 +317,23 @@ kernel_profile subpixel_profile() {
     return p;
 }
 
+kernel_profile surface_outline_profile(int rows, int columns, int inside) {
+    // Per object row: the ellipse's half width, an integer square root by
+    // bits (31 steps of ADD, MPY, CMPGTU, conditional add: l 2, m 1, lsd 2,
+    // each waiting on the last: not pipelined) and one division by the height;
+    // per tile row: the span clipped to the tile and summed (MIN, MAX, SUB,
+    // ADD: l 4, lsd 2). Per tile matched inside the range: its SAD scaled to
+    // the whole tile (one division).
+    const uint64_t r = non_negative(rows), c = non_negative(columns);
+    kernel_profile p("surface_outline");
+    p.add(block("square root step", op_mix{/*l*/ 2, 0, /*m*/ 1, 0, 0, /*lsd*/ 2},
+                latency_mpy16 + 2 * latency_alu, 31 * r));
+    p.add_call(c64x::software_divide(16, true), r);
+    p.add(loop("tile row span", op_mix{/*l*/ 4, 0, 0, 0, 0, /*lsd*/ 2}, r * c, latency_alu));
+    p.add_call(c64x::software_divide(16, true), non_negative(inside));
+    return p;
+}
+
 kernel_profile surface_mean_profile(int inside, int matched) {
     // The gate's insertion sort of `inside` SADs: n^2 / 4 shifts on
     // average (load, compare, store, branch; not pipelined: the compare
@@ -502,6 +519,10 @@ uint64_t pattern_copy_cycles(int pattern_w, int pattern_h) {
 
 uint64_t subpixel_cycles() {
     return default_model().cycles(subpixel_profile());
+}
+
+uint64_t surface_outline_cycles(int rows, int columns, int inside) {
+    return default_model().cycles(surface_outline_profile(rows, columns, inside));
 }
 
 uint64_t surface_mean_cycles(int inside, int matched) {

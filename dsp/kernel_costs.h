@@ -57,6 +57,10 @@ uint64_t subpixel_cycles();
 // the sort of `inside` SADs, one 64-bit division per `matched` tile and one
 // for the mean.
 uint64_t surface_mean_cycles(int inside, int matched);
+// The outline's mask over a large object's tiles (dsp/object_depth.h): an
+// ellipse span for each of `rows` rows, clipped to `columns` tiles, and each
+// `inside` tile's SAD scaled to a whole tile's.
+uint64_t surface_outline_cycles(int rows, int columns, int inside);
 // Sobel 3x3 over `rows` rows of `width` pixels.
 uint64_t sobel_cycles(int width, int rows);
 // Edge segment extraction and matching over `lines` epipolar lines of
@@ -96,6 +100,7 @@ c64x::kernel_profile sad_search_profile(int pattern_w, int pattern_h, int positi
 c64x::kernel_profile pattern_copy_profile(int pattern_w, int pattern_h);
 c64x::kernel_profile subpixel_profile();
 c64x::kernel_profile surface_mean_profile(int inside, int matched);
+c64x::kernel_profile surface_outline_profile(int rows, int columns, int inside);
 c64x::kernel_profile sobel_profile(int width, int rows);
 c64x::kernel_profile edge_match_profile(int width, int lines, int max_disparity,
                                         int min_disparity = 0);

@@ -8,6 +8,7 @@ namespace {
 
 constexpr int max_tiles_per_side = 16;
 constexpr int max_tiles = max_tiles_per_side * max_tiles_per_side;
+constexpr int max_tile_rows = 64;  // a tile's height: under 2 min_tile_side up to 512 rows
 
 // Tiles along one side of `length` px: as many as fit at min_tile_side, at
 // most tiles_per_side.
@@ -45,6 +46,31 @@ uint64_t sad_gate(const uint32_t* sads, int n, int area, const object_depth_para
            static_cast<uint64_t>(params.gate_floor_per_pixel) * static_cast<uint64_t>(area);
 }
 
+// Integer square root (floor) of v >= 0.
+int64_t isqrt(int64_t v) {
+    int64_t r = 0;
+    for (int64_t bit = int64_t{1} << 30; bit > 0; bit >>= 1)
+        if ((r + bit) * (r + bit) <= v) r += bit;
+    return r;
+}
+
+// The columns [begin, end) of row y (absolute) whose pixel centres lie in
+// the ellipse inscribed in `object`: (2x + 1 - cx)^2 h^2 + (2y + 1 - cy)^2 w^2
+// <= w^2 h^2 with cx = 2 object.x + w, cy = 2 object.y + h (doubled units).
+row_span ellipse_row(box object, int y) {
+    const int64_t w = object.width, h = object.height;
+    const int64_t dy = 2 * int64_t{y} + 1 - (2 * int64_t{object.y} + h);
+    if (dy * dy > h * h) return {};
+    const int64_t half = isqrt((h * h - dy * dy) * w * w) / h;  // doubled units
+    const int64_t cx = 2 * int64_t{object.x} + w;
+    // 2x + 1 in [cx - half, cx + half]; cx - half >= 2 object.x >= 0.
+    row_span span;
+    span.begin = static_cast<int>((cx - half) / 2);  // ceil((cx - half - 1) / 2)
+    span.end = static_cast<int>((cx + half - 1) / 2 + 1);
+    if (span.end < span.begin) span.end = span.begin;
+    return span;
+}
+
 }  // namespace
 
 bool object_is_tiled(box object, const object_depth_params& params) {
@@ -53,7 +79,8 @@ bool object_is_tiled(box object, const object_depth_params& params) {
 
 object_depth_result match_object_surface(gray_cplane right, gray_cplane left, box object,
                                          int32_t core_q8, const stereo_params& search,
-                                         const camera_rig& rig, const object_depth_params& params) {
+                                         const camera_rig& rig, const object_depth_params& params,
+                                         bool outlined) {
     object_depth_result r;
     if (!object_is_tiled(object, params)) return r;
     r.tiled = true;
@@ -64,19 +91,41 @@ object_depth_result match_object_surface(gray_cplane right, gray_cplane left, bo
 
     const int columns = tiles_along(object.width, params);
     const int rows = tiles_along(object.height, params);
+    r.columns = columns;
+    r.rows = rows;
     r.tile_width = object.width / columns;
     r.tile_height = object.height / rows;
+    if (r.tile_height > max_tile_rows) return r;
     // The grid centred on the box (its remainder split between both sides).
     const int x0 = object.x + (object.width - columns * r.tile_width) / 2;
     const int y0 = object.y + (object.height - rows * r.tile_height) / 2;
     const int64_t offset_q8 = rig.principal_offset_q8();
     int32_t tile_q8[max_tiles];
     uint32_t tile_sad[max_tiles];
+    uint32_t tile_pixels[max_tiles];
+    const int area = r.tile_width * r.tile_height;
+    // Each row's part of the object: the outline's ellipse (inset), or the whole box row.
+    const int inset = params.outline_inset;
+    const box ellipse{object.x + inset, object.y + inset, object.width - 2 * inset,
+                      object.height - 2 * inset};
+    row_span object_rows[max_tile_rows];
+    row_span spans[max_tile_rows];
     for (int j = 0; j < rows; ++j) {
+        const int tile_y = y0 + j * r.tile_height;
+        for (int y = 0; y < r.tile_height; ++y)
+            object_rows[y] = outlined && !ellipse.empty() ? ellipse_row(ellipse, tile_y + y)
+                                                          : row_span{object.x, object.right()};
         for (int i = 0; i < columns; ++i) {
-            const box tile{x0 + i * r.tile_width, y0 + j * r.tile_height, r.tile_width,
-                           r.tile_height};
-            const stereo_result m = stereo_match_sad(right, left, tile, narrow);
+            const box tile{x0 + i * r.tile_width, tile_y, r.tile_width, r.tile_height};
+            int pixels = 0;
+            for (int y = 0; y < tile.height; ++y) {
+                spans[y].begin = std::max(0, std::min(tile.width, object_rows[y].begin - tile.x));
+                spans[y].end =
+                    std::max(spans[y].begin, std::min(tile.width, object_rows[y].end - tile.x));
+                pixels += spans[y].end - spans[y].begin;
+            }
+            if (4 * pixels < area) continue;  // a corner's sliver: too few pixels to match
+            const stereo_result m = stereo_match_sad_masked(right, left, tile, spans, narrow);
             ++r.tiles;
             r.positions += m.positions;
             // Kept only with its minimum strictly inside the narrow range.
@@ -85,21 +134,25 @@ object_depth_result match_object_surface(gray_cplane right, gray_cplane left, bo
                 continue;
             if (m.disparity_q8 - offset_q8 <= 0) continue;
             tile_q8[r.inside] = m.disparity_q8;
-            tile_sad[r.inside] = m.sad;
+            // The SAD a whole tile would have at that rate, for the gate.
+            tile_sad[r.inside] = static_cast<uint32_t>(
+                uint64_t{m.sad} * static_cast<uint64_t>(area) / static_cast<uint64_t>(pixels));
+            tile_pixels[r.inside] = static_cast<uint32_t>(pixels);
             ++r.inside;
         }
     }
-    const uint64_t gate =
-        r.inside > 0 ? sad_gate(tile_sad, r.inside, r.tile_width * r.tile_height, params) : 0;
-    uint64_t inverse_sum = 0;  // sum of 2^32 / (d_i - offset), Q8 disparities
+    const uint64_t gate = r.inside > 0 ? sad_gate(tile_sad, r.inside, area, params) : 0;
+    uint64_t inverse_sum = 0;  // sum of n_i 2^32 / (d_i - offset), Q8 disparities
+    uint64_t pixel_sum = 0;
     for (int k = 0; k < r.inside; ++k) {
         if (tile_sad[k] > gate) continue;
-        inverse_sum += (uint64_t{1} << 32) / static_cast<uint64_t>(tile_q8[k] - offset_q8);
+        inverse_sum +=
+            tile_pixels[k] * ((uint64_t{1} << 32) / static_cast<uint64_t>(tile_q8[k] - offset_q8));
+        pixel_sum += tile_pixels[k];
         ++r.matched;
     }
     if (r.matched < params.min_tiles || inverse_sum == 0) return r;
-    const uint64_t mean_q8 =
-        ((static_cast<uint64_t>(r.matched) << 32) + inverse_sum / 2) / inverse_sum;
+    const uint64_t mean_q8 = ((pixel_sum << 32) + inverse_sum / 2) / inverse_sum;
     r.valid = true;
     r.disparity_q8 = static_cast<int32_t>(static_cast<int64_t>(mean_q8) + offset_q8);
     return r;

@@ -7,15 +7,19 @@ namespace dsp {
 
 namespace {
 
-// SAD of two w x h boxes. The byte loop is the C form of the C64x SUBABS4 +
-// DOTPU4 kernel (four pixels per instruction there).
-uint32_t box_sad(const uint8_t* a, int a_stride, const uint8_t* b, int b_stride, int w, int h) {
+// SAD of two w x h boxes, or of each row's span of them when `spans` is
+// given. The byte loop is the C form of the C64x SUBABS4 + DOTPU4 kernel
+// (four pixels per instruction there).
+uint32_t box_sad(const uint8_t* a, int a_stride, const uint8_t* b, int b_stride, int w, int h,
+                 const row_span* spans) {
     uint32_t sum = 0;
     for (int j = 0; j < h; ++j) {
         const uint8_t* ra = a + static_cast<std::ptrdiff_t>(j) * a_stride;
         const uint8_t* rb = b + static_cast<std::ptrdiff_t>(j) * b_stride;
+        const int begin = spans ? spans[j].begin : 0;
+        const int end = spans ? spans[j].end : w;
         uint32_t row = 0;
-        for (int i = 0; i < w; ++i) row += static_cast<uint32_t>(std::abs(ra[i] - rb[i]));
+        for (int i = begin; i < end; ++i) row += static_cast<uint32_t>(std::abs(ra[i] - rb[i]));
         sum += row;
     }
     return sum;
@@ -57,8 +61,10 @@ int32_t subpixel_offset_equiangular_q8(uint32_t s_minus, uint32_t s0, uint32_t s
     return static_cast<int32_t>(offset);
 }
 
-stereo_result stereo_match_sad(gray_cplane right, gray_cplane left, box pattern,
-                               const stereo_params& params) {
+namespace {
+
+stereo_result match(gray_cplane right, gray_cplane left, box pattern, const row_span* spans,
+                    const stereo_params& params) {
     stereo_result result;
     if (pattern.empty() || right.empty() || left.empty()) return result;
     if (!box_inside(pattern, right.width, right.height)) return result;
@@ -91,7 +97,7 @@ stereo_result stereo_match_sad(gray_cplane right, gray_cplane left, box pattern,
         uint32_t previous = 0;
         for (int d = d_first; d <= d_last; ++d) {
             const uint32_t sad = box_sad(left_row + pattern.x + d, left.stride, pattern_origin,
-                                         right.stride, pattern.width, pattern.height);
+                                         right.stride, pattern.width, pattern.height, spans);
             ++result.positions;
             if (plus_pending) {
                 best_plus = sad;
@@ -125,6 +131,18 @@ stereo_result stereo_match_sad(gray_cplane right, gray_cplane left, box pattern,
                         : subpixel_offset_equiangular_q8(best_minus, best, best_plus);
     result.disparity_q8 = result.disparity * 256 + offset_q8;
     return result;
+}
+
+}  // namespace
+
+stereo_result stereo_match_sad(gray_cplane right, gray_cplane left, box pattern,
+                               const stereo_params& params) {
+    return match(right, left, pattern, nullptr, params);
+}
+
+stereo_result stereo_match_sad_masked(gray_cplane right, gray_cplane left, box pattern,
+                                      const row_span* spans, const stereo_params& params) {
+    return match(right, left, pattern, spans, params);
 }
 
 bool at_range_end(const stereo_result& match, box pattern, int min_disparity, int max_disparity,

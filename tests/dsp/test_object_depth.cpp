@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "dsp/object_depth.h"
@@ -82,7 +83,7 @@ TEST(ObjectDepth, TheTilesGiveTheDisparityOfTheMeanDepth) {
     const dsp::camera_rig rig;
     const dsp::object_depth_result r = dsp::match_object_surface(
         p.right_view(), p.left_view(), object, core_disparity_q8(p, object), depth_range_search(),
-        rig, dsp::object_depth_params{});
+        rig, dsp::object_depth_params{}, false);
     EXPECT_TRUE(r.tiled);
     ASSERT_TRUE(r.valid);
     EXPECT_EQ(r.tiles, 64);  // 128 / 16 px a side: 8 x 8
@@ -102,7 +103,7 @@ TEST(ObjectDepth, BackgroundTilesAreLeftOut) {
     wide.width += 32;
     const dsp::object_depth_result r =
         dsp::match_object_surface(p.right_view(), p.left_view(), wide, core_disparity_q8(p, object),
-                                  depth_range_search(), dsp::camera_rig{}, {});
+                                  depth_range_search(), dsp::camera_rig{}, {}, false);
     ASSERT_TRUE(r.valid);
     EXPECT_EQ(r.tiles, 80);
     EXPECT_EQ(r.matched, 64);
@@ -115,9 +116,9 @@ TEST(ObjectDepth, ThePrincipalOffsetIsOutsideTheMean) {
     const pair_images p = make_pair();
     dsp::camera_rig rig;
     rig.cx_right_q8 = rig.cx_left_q8 + 20 * 256;
-    const dsp::object_depth_result r =
-        dsp::match_object_surface(p.right_view(), p.left_view(), object,
-                                  core_disparity_q8(p, object), depth_range_search(), rig, {});
+    const dsp::object_depth_result r = dsp::match_object_surface(
+        p.right_view(), p.left_view(), object, core_disparity_q8(p, object), depth_range_search(),
+        rig, {}, false);
     ASSERT_TRUE(r.valid);
     EXPECT_NEAR(r.disparity_q8, 256 * halves_mean_depth_disparity(-20), 1.0);
     EXPECT_GT(
@@ -131,10 +132,53 @@ TEST(ObjectDepth, ObjectsUpToThePatternCapAreNotTiled) {
     small.width = small.height = 96;  // the tracker's pattern cap: the core match stands
     const dsp::object_depth_result r =
         dsp::match_object_surface(p.right_view(), p.left_view(), small, core_disparity_q8(p, small),
-                                  depth_range_search(), {}, {});
+                                  depth_range_search(), {}, {}, false);
     EXPECT_FALSE(r.tiled);
     EXPECT_FALSE(r.valid);
     EXPECT_EQ(r.tiles, 0);
+}
+
+// A disc (the box's inscribed circle) of faint texture at one disparity in
+// front of a wall of full-contrast texture 3 px behind it (inside the
+// object's narrow range): a tile on the outline is mostly wall by contrast,
+// its minimum goes to the wall's disparity, and its SAD is low (the wall
+// matches there), so the gate keeps it. With the outline (the box's ellipse
+// less outline_inset a side) only the disc's pixels are matched, and each
+// tile weighs by its pixels on it.
+pair_images make_disc_pair(int disparity, int wall) {
+    pair_images p{std::vector<uint8_t>(width * height), std::vector<uint8_t>(width * height)};
+    const double cx = object.x + 0.5 * object.width, cy = object.y + 0.5 * object.height;
+    const double radius = 0.5 * object.width;
+    auto on_disc = [&](int x, int y) { return std::hypot(x + 0.5 - cx, y + 0.5 - cy) <= radius; };
+    auto faint = [](int x, int y) { return static_cast<uint8_t>(120 + texture(1, x, y) / 16); };
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            p.right[y * width + x] = on_disc(x, y) ? faint(x, y) : texture(0, x, y);
+            const int x_disc = x - disparity;
+            p.left[y * width + x] = on_disc(x_disc, y) ? faint(x_disc, y) : texture(0, x - wall, y);
+        }
+    }
+    return p;
+}
+
+TEST(ObjectDepth, TheOutlineKeepsTheBackgroundOutOfTheDiscsTiles) {
+    constexpr int disc = 42, wall = 39;
+    const pair_images p = make_disc_pair(disc, wall);
+    const int32_t core = core_disparity_q8(p, object);
+    const dsp::object_depth_result whole = dsp::match_object_surface(
+        p.right_view(), p.left_view(), object, core, depth_range_search(), {}, {}, false);
+    const dsp::object_depth_result outlined = dsp::match_object_surface(
+        p.right_view(), p.left_view(), object, core, depth_range_search(), {}, {}, true);
+    ASSERT_TRUE(whole.valid);
+    ASSERT_TRUE(outlined.valid);
+    std::printf("disc at %d px: whole tiles %.3f px (%d kept), outlined %.3f px (%d kept)\n", disc,
+                whole.disparity_q8 / 256.0, whole.matched, outlined.disparity_q8 / 256.0,
+                outlined.matched);
+    // 8 x 8 tiles of 16 px: the 4 corner tiles hold no disc pixel, 8 more
+    // hold under a quarter of a tile (a 64 px circle's corner slivers).
+    EXPECT_EQ(outlined.tiles, 64 - 4 - 8);
+    EXPECT_NEAR(outlined.disparity_q8, disc * 256, 8);  // within 1/32 px
+    EXPECT_GT(std::abs(whole.disparity_q8 - disc * 256), 3 * 8);
 }
 
 }  // namespace
