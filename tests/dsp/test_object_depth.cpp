@@ -145,17 +145,21 @@ TEST(ObjectDepth, ObjectsUpToThePatternCapAreNotTiled) {
 // matches there), so the gate keeps it. With the outline (the box's ellipse
 // less outline_inset a side) only the disc's pixels are matched, and each
 // tile weighs by its pixels on it.
-pair_images make_disc_pair(int disparity, int wall) {
+pair_images make_disc_pair(int disparity, int wall, int wall_contrast_shift = 0) {
     pair_images p{std::vector<uint8_t>(width * height), std::vector<uint8_t>(width * height)};
     const double cx = object.x + 0.5 * object.width, cy = object.y + 0.5 * object.height;
     const double radius = 0.5 * object.width;
     auto on_disc = [&](int x, int y) { return std::hypot(x + 0.5 - cx, y + 0.5 - cy) <= radius; };
     auto faint = [](int x, int y) { return static_cast<uint8_t>(120 + texture(1, x, y) / 16); };
+    // The wall's texture around mid-grey, its contrast divided by 2^shift.
+    auto wall_at = [&](int x, int y) {
+        return static_cast<uint8_t>(128 + (texture(0, x, y) - 128) / (1 << wall_contrast_shift));
+    };
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
-            p.right[y * width + x] = on_disc(x, y) ? faint(x, y) : texture(0, x, y);
+            p.right[y * width + x] = on_disc(x, y) ? faint(x, y) : wall_at(x, y);
             const int x_disc = x - disparity;
-            p.left[y * width + x] = on_disc(x_disc, y) ? faint(x_disc, y) : texture(0, x - wall, y);
+            p.left[y * width + x] = on_disc(x_disc, y) ? faint(x_disc, y) : wall_at(x - wall, y);
         }
     }
     return p;
@@ -179,6 +183,25 @@ TEST(ObjectDepth, TheOutlineKeepsTheBackgroundOutOfTheDiscsTiles) {
     EXPECT_EQ(outlined.tiles, 64 - 4 - 8);
     EXPECT_NEAR(outlined.disparity_q8, disc * 256, 8);  // within 1/32 px
     EXPECT_GT(std::abs(whole.disparity_q8 - disc * 256), 3 * 8);
+}
+
+// The outline's ellipse reaching past the disc (a box 16 px too large a
+// side) over a faint wall (contrast / 8) whose true match lies outside the
+// object's range: the ring of tiles partly on the wall find false minima
+// inside the range, their SAD a few levels a pixel, far above the disc's
+// tiles'. The gate compares each tile's SAD scaled to a whole tile's; a
+// quarter-tile's raw SAD passed it (41.82 px, 5 more tiles kept).
+TEST(ObjectDepth, AnOutlineTooLargeKeepsTheBackgroundTilesOut) {
+    constexpr int disc = 42;
+    const pair_images p = make_disc_pair(disc, background, 3);
+    const dsp::box large{object.x - 16, object.y - 16, object.width + 32, object.height + 32};
+    const dsp::object_depth_result r =
+        dsp::match_object_surface(p.right_view(), p.left_view(), large,
+                                  core_disparity_q8(p, object), depth_range_search(), {}, {}, true);
+    ASSERT_TRUE(r.valid);
+    std::printf("outline 16 px too large: %.3f px, %d of %d inside the range kept\n",
+                r.disparity_q8 / 256.0, r.matched, r.inside);
+    EXPECT_NEAR(r.disparity_q8, disc * 256, 8);
 }
 
 }  // namespace
