@@ -24,11 +24,18 @@
 //            background can still find a false minimum inside the range, at
 //            a SAD far above the object's tiles').
 //   result:  the disparity of the kept tiles' mean depth, Z ~ 1 / (d - offset):
-//            offset + n / sum 1 / (d_i - offset), each term 2^32 / (d_i -
-//            offset) in Q8 (relative rounding below 1e-5).
+//            offset + sum n_i / sum n_i / (d_i - offset), n_i the tile's
+//            pixels matched (its area unless outlined, below), each term
+//            2^32 / (d_i - offset) in Q8 (relative rounding below 1e-5).
 // Each kept tile counts once, so the mean weighs the surface by image area
 // as the visible-surface mean does; a tile on the outline is kept when the
-// object dominates its texture.
+// object dominates its texture. On a sphere (numerical integral, 8 x 8 and
+// 10 x 10 tiles): the tiles at least half on the disc give +0.08 % and
+// +0.05 % of the visible mean, all tiles touching it +1.4 % and +0.9 %, the
+// tiles wholly on it -3.4 % and -2.3 %: the outline's tiles decide it.
+// tiles_per_side and the gate were chosen among 8, 12, 16 tiles and factors
+// 2 and 4 on the host runs of tests/dsp/test_object_size.cpp (noise-free
+// renders), then checked on sizes and co-simulated runs not used to choose.
 //
 // Outlined (TRACK's box, the object's outline within a pixel or two): each
 // tile is matched on its pixels inside the box's inscribed ellipse less
@@ -38,19 +45,17 @@
 // is mostly background by contrast over a cluttered photograph (a smooth,
 // shaded ball), and its minimum leaned to the background side of the range:
 // 100-130 px balls over the photographs were 1.0-1.8 % farther than their
-// visible surface (-0.1 to +0.8 % with it). A detection's box (one pair's
+// visible surface (at most 0.44 % with it). A detection's box (one pair's
 // thin differences) may hold a part of the object only: not outlined, as
-// before (a 240 px ball's first box, 43 px short, gave -1.04 % outlined). On a sphere (numerical
-// integral, 8 x 8 and 10 x 10 tiles): the tiles at least half on the disc give +0.08 % and +0.05 %
-// of the visible mean, all tiles touching it +1.4 % and +0.9 %, the tiles wholly on it -3.4 % and
-// -2.3 %: the outline's tiles decide it. tiles_per_side and the gate were chosen among 8, 12, 16
-// tiles and factors 2 and 4 on the host runs of tests/dsp/test_object_size.cpp (noise-free
-// renders), then checked on sizes and co-simulated runs not used to choose.
+// before (a 240 px ball's first box, 43 px short, gave -1.04 % outlined).
+// Assumes a round object: one that fills its box's ellipse (the ball).
 //
 // Assumes: object inside `right`; the core's match valid.
 // Costs: per tile a SAD search of its positions plus the sub-pixel step;
 //   the gate's sort and one 64-bit division per kept tile and one for the
-//   mean: dsp::cost::sad_search_cycles, subpixel_cycles, surface_mean_cycles.
+//   mean: dsp::cost::sad_search_cycles, subpixel_cycles, surface_mean_cycles;
+//   outlined, an ellipse span per row and a division per tile inside the
+//   range: surface_outline_cycles.
 #pragma once
 
 #include <cstdint>

@@ -329,8 +329,9 @@ INSTANTIATE_TEST_SUITE_P(
 // frame over teddy is left behind from its second tracked pair (box 8.9,
 // 13.6, 31.3, 56.1 px off, depth 133 % while on the background). A 100 px
 // ball circling over venus keeps a box 3.5 px left of it (mean 3.53, max
-// 4.13). A 160 px ball spinning at 1 rev/s over kodim19 drifts from its box
-// by up to 13.9 px (why not yet measured). A 140 px ball thrown spinning at
+// 4.13; its right rim never in Dif(key, t)). A 160 px ball spinning at
+// 1 rev/s over kodim19 drifts from its box by up to 13.9 px (the key's
+// pattern found on the turning texture). A 140 px ball thrown spinning at
 // 3 rev/s over teddy: box max 6.50 px in one pair (mean 1.95). Detected too
 // late for 30 frames: an 80 px ball at 0.5 px per frame over kodim19 (no
 // start), an 80 px ball circling over teddy (pair 25: 3 pairs scored).

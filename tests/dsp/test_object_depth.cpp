@@ -179,7 +179,7 @@ TEST(ObjectDepth, TheOutlineKeepsTheBackgroundOutOfTheDiscsTiles) {
                 whole.disparity_q8 / 256.0, whole.matched, outlined.disparity_q8 / 256.0,
                 outlined.matched);
     // 8 x 8 tiles of 16 px: the 4 corner tiles hold no disc pixel, 8 more
-    // hold under a quarter of a tile (a 64 px circle's corner slivers).
+    // hold under a quarter of a tile (the 128 px circle's corner slivers).
     EXPECT_EQ(outlined.tiles, 64 - 4 - 8);
     EXPECT_NEAR(outlined.disparity_q8, disc * 256, 8);  // within 1/32 px
     EXPECT_GT(std::abs(whole.disparity_q8 - disc * 256), 3 * 8);
