@@ -332,7 +332,8 @@ INSTANTIATE_TEST_SUITE_P(
 // 4.13; its right rim never in Dif(key, t)). A 160 px ball spinning at
 // 1 rev/s over kodim19 drifts from its box by up to 13.9 px (the key's
 // pattern found on the turning texture). A 140 px ball thrown spinning at
-// 3 rev/s over teddy: box max 6.50 px in one pair (mean 1.95). Detected too
+// 3 rev/s over teddy: box max 6.50 px in one pair (mean 1.95; after the
+// bounce the box 10 px narrow for two pairs). Detected too
 // late for 30 frames: an 80 px ball at 0.5 px per frame over kodim19 (no
 // start), an 80 px ball circling over teddy (pair 25: 3 pairs scored).
 INSTANTIATE_TEST_SUITE_P(
