@@ -71,6 +71,18 @@ row_span ellipse_row(box object, int y) {
     return span;
 }
 
+// `tile`'s part of the object rows (absolute columns, one per tile row) as
+// spans relative to the tile; returns its pixels.
+int clip_to_tile(const row_span* object_rows, box tile, row_span* spans) {
+    int pixels = 0;
+    for (int y = 0; y < tile.height; ++y) {
+        spans[y].begin = std::max(0, std::min(tile.width, object_rows[y].begin - tile.x));
+        spans[y].end = std::max(spans[y].begin, std::min(tile.width, object_rows[y].end - tile.x));
+        pixels += spans[y].end - spans[y].begin;
+    }
+    return pixels;
+}
+
 }  // namespace
 
 bool object_is_tiled(box object, const object_depth_params& params) {
@@ -104,28 +116,26 @@ object_depth_result match_object_surface(gray_cplane right, gray_cplane left, bo
     uint32_t tile_sad[max_tiles];
     uint32_t tile_pixels[max_tiles];
     const int area = r.tile_width * r.tile_height;
-    // Each row's part of the object: the outline's ellipse (inset), or the whole box row.
+    // Outlined: each tile row's part of the box's ellipse (inset), each tile
+    // matched on its part of it.
     const int inset = params.outline_inset;
     const box ellipse{object.x + inset, object.y + inset, object.width - 2 * inset,
                       object.height - 2 * inset};
-    row_span object_rows[max_tile_rows];
+    const bool masked = outlined && !ellipse.empty();
+    row_span ellipse_rows[max_tile_rows];
     row_span spans[max_tile_rows];
     for (int j = 0; j < rows; ++j) {
         const int tile_y = y0 + j * r.tile_height;
-        for (int y = 0; y < r.tile_height; ++y)
-            object_rows[y] = outlined && !ellipse.empty() ? ellipse_row(ellipse, tile_y + y)
-                                                          : row_span{object.x, object.right()};
+        if (masked)
+            for (int y = 0; y < r.tile_height; ++y)
+                ellipse_rows[y] = ellipse_row(ellipse, tile_y + y);
         for (int i = 0; i < columns; ++i) {
             const box tile{x0 + i * r.tile_width, tile_y, r.tile_width, r.tile_height};
-            int pixels = 0;
-            for (int y = 0; y < tile.height; ++y) {
-                spans[y].begin = std::max(0, std::min(tile.width, object_rows[y].begin - tile.x));
-                spans[y].end =
-                    std::max(spans[y].begin, std::min(tile.width, object_rows[y].end - tile.x));
-                pixels += spans[y].end - spans[y].begin;
-            }
+            const int pixels = masked ? clip_to_tile(ellipse_rows, tile, spans) : area;
             if (4 * pixels < area) continue;  // a corner's sliver: too few pixels to match
-            const stereo_result m = stereo_match_sad_masked(right, left, tile, spans, narrow);
+            const stereo_result m = masked
+                                        ? stereo_match_sad_masked(right, left, tile, spans, narrow)
+                                        : stereo_match_sad(right, left, tile, narrow);
             ++r.tiles;
             r.positions += m.positions;
             // Kept only with its minimum strictly inside the narrow range.
@@ -135,8 +145,11 @@ object_depth_result match_object_surface(gray_cplane right, gray_cplane left, bo
             if (m.disparity_q8 - offset_q8 <= 0) continue;
             tile_q8[r.inside] = m.disparity_q8;
             // The SAD a whole tile would have at that rate, for the gate.
-            tile_sad[r.inside] = static_cast<uint32_t>(
-                uint64_t{m.sad} * static_cast<uint64_t>(area) / static_cast<uint64_t>(pixels));
+            tile_sad[r.inside] =
+                pixels == area
+                    ? m.sad
+                    : static_cast<uint32_t>(uint64_t{m.sad} * static_cast<uint64_t>(area) /
+                                            static_cast<uint64_t>(pixels));
             tile_pixels[r.inside] = static_cast<uint32_t>(pixels);
             ++r.inside;
         }
