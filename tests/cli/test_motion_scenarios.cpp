@@ -70,4 +70,27 @@ TEST(MotionScenarios, DISABLED_SlowSmallBall) {
     expect_tracked_in_budget(report, "small at 1 px per frame");
 }
 
+// The spinning throw slowed to a fifth of its speed, its ball turning once
+// a second about y: box max 4.30 px from the third tracked pair, |depth|
+// 0.70 %.
+TEST(MotionScenarios, SlowSpinningBallAboutY) {
+    const json report = scenario_test::run(
+        "spinning",
+        "--set scenario.speed=0.2 --set scenario.spin_rpm=60 --set scenario.spin_axis=y");
+    EXPECT_EQ(report["config"]["scenario"]["spin_axis"], "y");  // the option reached the run
+    expect_tracked_in_budget(report, "spinning at 1 rev/s about y, a fifth of its speed");
+}
+
+// Open: the same about x (docs/firmware.md, "Open": the grid of slow
+// spinning balls in tests/dsp/test_box_on_motion.cpp fails on such balls;
+// this run's cause not traced): detected 6 frames after the motion began,
+// box mean 5.44 px, max 16.4 px, |depth| max 1.17 %.
+TEST(MotionScenarios, DISABLED_SlowSpinningBallAboutX) {
+    const json report = scenario_test::run(
+        "spinning",
+        "--set scenario.speed=0.2 --set scenario.spin_rpm=60 --set scenario.spin_axis=x");
+    EXPECT_EQ(report["config"]["scenario"]["spin_rpm"], 60.0);  // the option reached the run
+    expect_tracked_in_budget(report, "spinning at 1 rev/s about x, a fifth of its speed");
+}
+
 }  // namespace
