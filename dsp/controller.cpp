@@ -100,16 +100,6 @@ span y_span(box b) {
     return span{b.y, b.height};
 }
 
-// One axis of a round object's box from the extent of Dif(key, t) (`both`,
-// object(key) and object(t)): `size` px from the edge that moved past the
-// key's box `keyed` (the leading one).
-span round_axis(span both, span keyed, int size) {
-    if (both.size <= size) return both;
-    const int past_end = both.end() - keyed.end();
-    const int past_start = keyed.start - both.start;
-    return past_end >= past_start ? span{both.end() - size, size} : span{both.start, size};
-}
-
 box intersection(box a, box b) {
     const int x0 = max_int(a.x, b.x), y0 = max_int(a.y, b.y);
     const int x1 = min_int(a.right(), b.right()), y1 = min_int(a.bottom(), b.bottom());
@@ -202,7 +192,6 @@ struct controller::impl {
     key_frame key;                // a slow object's older frame (dsp/key_frame.h), SDRAM
     bool slow_candidate = false;  // DETECT: a slow object's key, waiting for its outline
     int candidate_pairs = 0;      // pairs the candidate has waited
-    int key_pairs = 0;            // TRACK: pairs the key has been searched
 
     // Disparities (Q8) of the depth range's ends, without the search margin.
     int64_t far_disparity_q8 = 0, near_disparity_q8 = 0;
@@ -250,7 +239,6 @@ struct controller::impl {
     bool confirm_slow_object(uint64_t* cycles, sdram_traffic* traffic);
     bool search_key(uint64_t* cycles, sdram_traffic* traffic);
     bool keyed_object(uint64_t* cycles, sdram_traffic* traffic, bool of_part, box* object);
-    bool round_outline(uint64_t* cycles, sdram_traffic* traffic, box* object);
     bool at_border(box b) const {
         const int border = config.detect.close_passes + 1;
         return b.x <= border || b.y <= border || b.right() >= width - border ||
@@ -685,16 +673,11 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
 // after max_shift px. Once keyed, one pair's silhouette does not overrule
 // the key: across a slow motion it is the measurement the key improves on
 // (a 30 px ball's jumped 10 px in one pair). The key's pattern lost (a
-// turning, spinning or faster object): where Dif(key, t) outlines a round
-// object that moved at most max_step px a pair since the key, the box is
-// that outline (round_outline: a slow spinning ball, whose key followed
-// its turning texture and the still background in its box's corners);
-// else the box of track_object stands.
+// turning, spinning or faster object): the box of track_object stands.
 // Runs after update_motion_mask: f(t-1)'s buffer is scratch by then.
 // (take_key: the key at the tracker's box, its region's copy charged.)
 void controller::impl::take_key(uint64_t* cycles, sdram_traffic* traffic, int grow) {
     key.take(history(0), tracker.position(), tracker.pattern_box(), grow);
-    key_pairs = 0;
     const box r = key.region();
     *cycles += cycles_of(cost::pattern_copy_profile(r.width, r.height));
     traffic->bytes_written += static_cast<uint64_t>(r.width) * r.height;
@@ -739,46 +722,9 @@ bool controller::impl::keyed_object(uint64_t* cycles, sdram_traffic* traffic, bo
     return true;
 }
 
-// A round object's box from Dif(key, t) when its key's pattern is lost
-// (a spinning ball's texture turned): its size the extent's smaller side
-// (the side across the motion), on each axis from the edge that moved.
-bool controller::impl::round_outline(uint64_t* cycles, sdram_traffic* traffic, box* object) {
-    const block_group u =
-        key.moved_extent(history(0), config.detect.threshold, later_blocks, refit_rows);
-    const box r = key.region();
-    *cycles += cycles_of(cost::difference_packed_profile(r.width, r.height, cost::memory::sdram)) +
-               cycles_of(cost::motion_blocks_profile(r.width, r.height));
-    *traffic += cost::difference_packed_traffic(r.width, r.height, cost::memory::sdram);
-    if (!u.found) return false;
-    const box k = key.object();
-    const int size = min_int(min_int(u.bbox.width, u.bbox.height), max_int(k.width, k.height));
-    if (size < config.track.min_size || 2 * size < min_int(k.width, k.height) ||
-        size > 2 * max_int(k.width, k.height))
-        return false;
-    // A slow object's: moved at most max_step px a pair since the key (a
-    // pattern lost as the object sped up is not this).
-    const int moved = max_int(u.bbox.width, u.bbox.height) - size;
-    if (moved > key_pairs * key_frame::max_step) return false;
-    *object = from_spans(round_axis(x_span(u.bbox), x_span(k), size),
-                         round_axis(y_span(u.bbox), y_span(k), size));
-    return true;
-}
-
 void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
                                           sdram_traffic* traffic) {
-    if (key.valid() && !search_key(cycles, traffic)) {
-        box outlined;
-        const bool round =
-            ++key_pairs >= 2 && round_outline(cycles, traffic, &outlined) && !at_border(outlined);
-        key.drop();
-        if (round) {
-            tracker.start(history(0), outlined);
-            *cycles += cycles_of(cost::pattern_copy_profile(tracker.pattern_box().width,
-                                                            tracker.pattern_box().height));
-        }
-    } else if (key.valid()) {
-        ++key_pairs;
-    }
+    if (key.valid() && !search_key(cycles, traffic)) key.drop();
     if (!key.valid()) {
         if (seen.sad_slow && seen.confirmed) take_key(cycles, traffic);
         return;
