@@ -402,6 +402,29 @@ INSTANTIATE_TEST_SUITE_P(HeldOutSpinning10, BoxOnMotion,
                                                        2.6, pass, 0.2, 2.5, 'z', procedural, 30}),
                          case_name);
 
+// Held out, round 11: more slow balls, spinning or not, and a throw, on
+// sizes, rates and backgrounds no round before has, written and committed
+// before a change of the refit's follow_axis (docs/firmware.md) was tried.
+INSTANTIATE_TEST_SUITE_P(
+    HeldOutSlow11, BoxOnMotion,
+    ::testing::Values(motion_case{"heldout11_spin115px_1pxpf_0_6rps_x_photo4", 115, 2.6, pass, 0.2,
+                                  0.6, 'x', photo4, 30},
+                      motion_case{"heldout11_spin85px_1pxpf_0_9rps_z_photo", 85, 2.6, pass, 0.2,
+                                  0.9, 'z', photo, 30},
+                      motion_case{"heldout11_spin140px_1_5pxpf_0_8rps_x_tsukuba", 140, 2.6, pass,
+                                  0.3, 0.8, 'x', tsukuba, 30},
+                      motion_case{"heldout11_pass105px_1pxpf_photo2", 105, 2.6, pass, 0.2, 0.0, 'x',
+                                  photo2, 30},
+                      motion_case{"heldout11_spin65px_1pxpf_1_4rps_x_aloe", 65, 2.6, pass, 0.2, 1.4,
+                                  'x', aloe, 30},
+                      motion_case{"heldout11_circle100px_1pxpf_1rps_z_photo3", 100, 2.6, circle,
+                                  0.125, 1.0, 'z', photo3, 30},
+                      motion_case{"heldout11_spin125px_2pxpf_0_5rps_y_venus", 125, 2.6, pass, 0.4,
+                                  0.5, 'y', venus, 30},
+                      motion_case{"heldout11_throw100px_2rps_z_photo", 100, 2.6, thrown, 1.0, 2.0,
+                                  'z', photo, 30}),
+    case_name);
+
 // Open: the issue of the box on fast, large and spinning objects stays open
 // on these (docs/firmware.md, "Open"; run with
 // --gtest_also_run_disabled_tests, all fail). The 60 px ball at 30 px per
