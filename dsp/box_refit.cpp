@@ -35,6 +35,15 @@ span follow_axis(span previous, span both, int size) {
     return span{(centre2 - size) >> 1, size};  // floor, also below 0
 }
 
+bool is_part(span both, span last) {
+    return 2 * both.size < last.size;
+}
+
+span part_axis(span both, span last) {
+    const bool towards_end = both.start + both.end() > last.start + last.end();
+    return towards_end ? span{both.end() - last.size, last.size} : span{both.start, last.size};
+}
+
 span keyed_axis(span both, int shift) {
     const int moved = shift < 0 ? -shift : shift;
     return span{shift > 0 ? both.start + shift : both.start, both.size - moved};

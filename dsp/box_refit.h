@@ -42,6 +42,18 @@ span previous_axis(span before, span after, int size);
 // object(t) is centred in `both`.
 span follow_axis(span previous, span both, int size);
 
+// Dif(t-1,t)'s extent `both` under half the last box `last` on an axis: a
+// part of the object, not its outline (a slow ball whose other parts change
+// too little: at 1 px per frame a 130 px ball spinning about x over "cones"
+// gave Dif(t-1,t) 43 px wide at its leading edge, and the box centred on it
+// was 44 px ahead of the ball).
+bool is_part(span both, span last);
+
+// object(t) on that axis, as large as the last box, from the part's outer
+// edge: the end when the part lies past the last box's centre (it leads
+// towards the end), else the start.
+span part_axis(span both, span last);
+
 // The SAD box `found` gets a size moved towards `mask`'s (object(t-1)) by at
 // most a step, and its centre moved by half the offset between the last box
 // and the mask (object(t-1) was seen where the last box was), at most a

@@ -825,15 +825,33 @@ controller::impl::motion_extents controller::impl::measure_motion(box last, cons
 // object, which nearly stopped and only its texture changed, or it held more than the object), when
 // Dif(t-1,t) reaches further than the object could have moved (twice the search radius: a change of
 // the light, another mover joined), or when object(t) touches the image border (the SAD's rule then
-// says whether it is leaving).
+// says whether it is leaving). On an axis where Dif(t-1,t) is a part of the object (is_part: a
+// slow ball's leading crescent), object(t) is the last box's size from the part's outer edge.
 bool controller::impl::follow_object(const motion_extents& motion, box last, box* followed) const {
     const track_params& p = config.track;
+    const bool part_x = is_part(x_span(motion.both), x_span(last));
+    const bool part_y = is_part(y_span(motion.both), y_span(last));
+    if (part_x && part_y) return false;
     const span previous_x = previous_axis(x_span(motion.before), x_span(motion.after), last.width);
     const span previous_y = previous_axis(y_span(motion.before), y_span(motion.after), last.height);
     const int tolerance_x = max_int(2, last.width / 8), tolerance_y = max_int(2, last.height / 8);
-    if (!near_size(previous_x.size, last.width, tolerance_x) ||
-        !near_size(previous_y.size, last.height, tolerance_y))
+    if ((!part_x && !near_size(previous_x.size, last.width, tolerance_x)) ||
+        (!part_y && !near_size(previous_y.size, last.height, tolerance_y)))
         return false;
+    const int reach = 2 * p.search_radius;
+    if (part_x || part_y) {
+        if ((!part_x && motion.both.width - last.width > reach) ||
+            (!part_y && motion.both.height - last.height > reach))
+            return false;
+        const box b =
+            from_spans(part_x ? part_axis(x_span(motion.both), x_span(last))
+                              : follow_axis(previous_x, x_span(motion.both), last.width),
+                       part_y ? part_axis(y_span(motion.both), y_span(last))
+                              : follow_axis(previous_y, y_span(motion.both), last.height));
+        if (at_border(b)) return false;
+        *followed = b;
+        return true;
+    }
     // object(t-1)'s measured size (within the tolerance above of the last):
     // its edges and object(t)'s leading edge are found alike, so their
     // rounding cancels in the centre.
@@ -843,7 +861,6 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, box
     const int h = near_size(previous_y.size, last.height, 1)
                       ? last.height
                       : max_int(p.min_size, min_int(height, previous_y.size));
-    const int reach = 2 * p.search_radius;
     if (motion.both.width - w > reach || motion.both.height - h > reach) return false;
     const box b = from_spans(follow_axis(previous_x, x_span(motion.both), w),
                              follow_axis(previous_y, y_span(motion.both), h));

@@ -35,6 +35,19 @@ TEST(FollowAxis, NoSideFurtherIsTheCentreOfTheDifference) {
     EXPECT_TRUE(is_span(dsp::follow_axis(span{100, 61}, span{100, 61}, 60), 100, 60));
 }
 
+// The extents traced on a 130 px ball at 1 px per frame spinning about x
+// over "cones" (docs/firmware.md): last box [199, 328), Dif(t-1,t) [286, 329)
+// only, its leading crescent; the ball was at [197.8, 328.1).
+TEST(PartAxis, APartUnderHalfTheBoxGivesItsOuterEdge) {
+    EXPECT_TRUE(dsp::is_part(span{286, 43}, span{199, 129}));
+    EXPECT_FALSE(dsp::is_part(span{286, 65}, span{199, 129}));  // 130 >= 129: not a part
+    EXPECT_TRUE(dsp::is_part(span{286, 64}, span{199, 129}));   // 128 < 129
+    EXPECT_TRUE(is_span(dsp::part_axis(span{286, 43}, span{199, 129}), 200, 129));
+    // Its mirror: a crescent in the box's first half leads towards the start.
+    EXPECT_TRUE(is_span(dsp::part_axis(span{199, 43}, span{199, 129}), 199, 129));
+    EXPECT_TRUE(is_span(dsp::part_axis(span{190, 43}, span{199, 129}), 190, 129));
+}
+
 TEST(PreviousAxis, TheCommonPartOfBothDifferences) {
     // Moving towards the end: Dif(t-2,t-1) [90, 160), Dif(t-1,t) [100, 180).
     EXPECT_TRUE(is_span(dsp::previous_axis(span{90, 70}, span{100, 80}, 60), 100, 60));
