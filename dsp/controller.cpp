@@ -838,32 +838,21 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, box
     if ((!part_x && !near_size(previous_x.size, last.width, tolerance_x)) ||
         (!part_y && !near_size(previous_y.size, last.height, tolerance_y)))
         return false;
-    const int reach = 2 * p.search_radius;
-    if (part_x || part_y) {
-        if ((!part_x && motion.both.width - last.width > reach) ||
-            (!part_y && motion.both.height - last.height > reach))
-            return false;
-        const box b =
-            from_spans(part_x ? part_axis(x_span(motion.both), x_span(last))
-                              : follow_axis(previous_x, x_span(motion.both), last.width),
-                       part_y ? part_axis(y_span(motion.both), y_span(last))
-                              : follow_axis(previous_y, y_span(motion.both), last.height));
-        if (at_border(b)) return false;
-        *followed = b;
-        return true;
-    }
     // object(t-1)'s measured size (within the tolerance above of the last):
     // its edges and object(t)'s leading edge are found alike, so their
-    // rounding cancels in the centre.
-    const int w = near_size(previous_x.size, last.width, 1)
+    // rounding cancels in the centre. A part's axis keeps the last size.
+    const int w = part_x || near_size(previous_x.size, last.width, 1)
                       ? last.width
                       : max_int(p.min_size, min_int(width, previous_x.size));
-    const int h = near_size(previous_y.size, last.height, 1)
+    const int h = part_y || near_size(previous_y.size, last.height, 1)
                       ? last.height
                       : max_int(p.min_size, min_int(height, previous_y.size));
+    const int reach = 2 * p.search_radius;
     if (motion.both.width - w > reach || motion.both.height - h > reach) return false;
-    const box b = from_spans(follow_axis(previous_x, x_span(motion.both), w),
-                             follow_axis(previous_y, y_span(motion.both), h));
+    const box b = from_spans(part_x ? part_axis(x_span(motion.both), x_span(last))
+                                    : follow_axis(previous_x, x_span(motion.both), w),
+                             part_y ? part_axis(y_span(motion.both), y_span(last))
+                                    : follow_axis(previous_y, y_span(motion.both), h));
     if (at_border(b)) return false;
     *followed = b;
     return true;
