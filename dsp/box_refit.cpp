@@ -49,6 +49,27 @@ span keyed_axis(span both, int shift) {
     return span{shift > 0 ? both.start + shift : both.start, both.size - moved};
 }
 
+bool difference_shift(span both, span key, int* shift) {
+    const int past_end = both.end() - key.end(), past_start = key.start - both.start;
+    if (past_end > past_start && past_start <= 2) {
+        *shift = past_end;
+        return true;
+    }
+    if (past_start > past_end && past_end <= 2) {
+        *shift = -past_start;
+        return true;
+    }
+    if (past_start == past_end && past_end <= 2) {
+        *shift = 0;
+        return true;
+    }
+    return false;
+}
+
+int key_reach(span both, span key) {
+    return max_int(both.end() - key.end(), key.start - both.start);
+}
+
 int step_size(int size, int target, int min_size, int max_size, int limit) {
     const int step = max_int(1, max_int(size, target) / 8);
     const int moved = max_int(size - step, min_int(size + step, target));

@@ -67,6 +67,20 @@ span pull_axis(span found, span last, span mask, int min_size, int max_size, int
 // `shift` since the key: `both` less |shift| on the side away from the motion.
 span keyed_axis(span both, int shift);
 
+// The displacement since the key on one axis read from Dif(key, t)'s
+// extent `both` and the key's object box `key`: the object moved towards the
+// side where `both` reaches past the key's box, by that much, when on the
+// other side it reaches no further (within 2 px: the key's box may be a
+// little narrower than the outline); 0 when it reaches equally far on both
+// sides, within 2 px. False otherwise (the key's box did not outline the
+// object). For a pattern that turned with its texture: an 80 px ball at
+// 1 px per frame spinning 0.5 rev/s about y kept its key's pattern still for
+// 8 pairs while Dif(key, t) grew by 1 px each.
+bool difference_shift(span both, span key, int* shift);
+
+// How far `both` reaches past the key's box on its further side.
+int key_reach(span both, span key);
+
 // A size moved towards `target` by at most max(1, larger of the two / 8),
 // within [min_size, max_size] and at most `limit`.
 int step_size(int size, int target, int min_size, int max_size, int limit);

@@ -111,6 +111,10 @@ bool near_size(int measured, int size, int tolerance) {
     return measured >= size - tolerance && measured <= size + tolerance;
 }
 
+bool covers(span outer, span inner) {
+    return outer.start <= inner.start + 1 && outer.end() >= inner.end() - 1;
+}
+
 box shifted(box b, int dx, int dy) {
     return box{b.x + dx, b.y + dy, b.width, b.height};
 }
@@ -192,6 +196,7 @@ struct controller::impl {
     key_frame key;                // a slow object's older frame (dsp/key_frame.h), SDRAM
     bool slow_candidate = false;  // DETECT: a slow object's key, waiting for its outline
     int candidate_pairs = 0;      // pairs the candidate has waited
+    bool key_unfit_x = false, key_unfit_y = false;  // the key's box did not outline the object
 
     // Disparities (Q8) of the depth range's ends, without the search margin.
     int64_t far_disparity_q8 = 0, near_disparity_q8 = 0;
@@ -238,7 +243,9 @@ struct controller::impl {
     bool start_track(box detected, uint64_t* cycles, sdram_traffic* traffic);
     bool confirm_slow_object(uint64_t* cycles, sdram_traffic* traffic);
     bool search_key(uint64_t* cycles, sdram_traffic* traffic);
-    bool keyed_object(uint64_t* cycles, sdram_traffic* traffic, bool of_part, box* object);
+    block_group keyed_extent(uint64_t* cycles, sdram_traffic* traffic);
+    bool keyed_object(const block_group& u, int dx, int dy, bool of_part, box* object) const;
+    bool key_displacement(const block_group& u, bool matched, int* dx, int* dy);
     bool at_border(box b) const {
         const int border = config.detect.close_passes + 1;
         return b.x <= border || b.y <= border || b.right() >= width - border ||
@@ -579,7 +586,8 @@ bool controller::impl::confirm_slow_object(uint64_t* cycles, sdram_traffic* traf
         return false;
     }
     box object;
-    const bool outlined = keyed_object(cycles, traffic, true, &object);
+    const bool outlined =
+        keyed_object(keyed_extent(cycles, traffic), key.dx(), key.dy(), true, &object);
     key.drop();
     if (!outlined || at_border(object)) return false;
     tracker.start(history(0), object);
@@ -697,21 +705,26 @@ bool controller::impl::search_key(uint64_t* cycles, sdram_traffic* traffic) {
     return still;
 }
 
-// object(t) from Dif(key, t) (keyed_axis), when that extent is one the
-// key's object can explain: within half and twice its size (else the
-// difference held more than the object, another mover or a light change,
-// or too little), or, for a key taken on a detection that may be a part of
-// its object (`of_part`), any size inside the key's region.
-bool controller::impl::keyed_object(uint64_t* cycles, sdram_traffic* traffic, bool of_part,
-                                    box* object) {
+// Dif(key, t)'s extent (key_frame::moved_extent), charged.
+block_group controller::impl::keyed_extent(uint64_t* cycles, sdram_traffic* traffic) {
     const block_group u =
         key.moved_extent(history(0), config.detect.threshold, later_blocks, refit_rows);
     const box r = key.region();
     *cycles += cycles_of(cost::difference_packed_profile(r.width, r.height, cost::memory::sdram)) +
                cycles_of(cost::motion_blocks_profile(r.width, r.height));
     *traffic += cost::difference_packed_traffic(r.width, r.height, cost::memory::sdram);
-    const box o =
-        from_spans(keyed_axis(x_span(u.bbox), key.dx()), keyed_axis(y_span(u.bbox), key.dy()));
+    return u;
+}
+
+// object(t) from Dif(key, t)'s extent `u` and the displacement since the
+// key (keyed_axis), when that extent is one the key's object can explain:
+// within half and twice its size (else the difference held more than the
+// object, another mover or a light change, or too little), or, for a key
+// taken on a detection that may be a part of its object (`of_part`), any
+// size inside the key's region.
+bool controller::impl::keyed_object(const block_group& u, int dx, int dy, bool of_part,
+                                    box* object) const {
+    const box o = from_spans(keyed_axis(x_span(u.bbox), dx), keyed_axis(y_span(u.bbox), dy));
     const box k = key.object();
     if (!u.found || o.width < config.track.min_size || o.height < config.track.min_size)
         return false;
@@ -722,20 +735,58 @@ bool controller::impl::keyed_object(uint64_t* cycles, sdram_traffic* traffic, bo
     return true;
 }
 
+// The displacement since the key (dx, dy): the pattern's, or, on an axis
+// where Dif(key, t) reads one (difference_shift) and the pattern turned, the
+// difference's. An axis where Dif(key, t) reached past the key's box further
+// than a slow object could have moved by then (max_step px a pair, +1) is
+// one the key's box did not outline (its texture's silhouette when taken):
+// there, for the key's life, the pattern's. False when the pattern was lost
+// and the difference does not read both axes (the key is of no more use).
+bool controller::impl::key_displacement(const block_group& u, bool matched, int* dx, int* dy) {
+    const box k = key.object();
+    *dx = key.dx();
+    *dy = key.dy();
+    bool read_x = false, read_y = false;
+    if (u.found) {
+        const int reach = key_frame::max_step * key.pairs() + 1;
+        if (key.pairs() == 1) key_unfit_x = key_unfit_y = false;
+        key_unfit_x = key_unfit_x || key_reach(x_span(u.bbox), x_span(k)) > reach;
+        key_unfit_y = key_unfit_y || key_reach(y_span(u.bbox), y_span(k)) > reach;
+        if (key.turned() && !key_unfit_x)
+            read_x = difference_shift(x_span(u.bbox), x_span(k), dx);
+        if (key.turned() && !key_unfit_y)
+            read_y = difference_shift(y_span(u.bbox), y_span(k), dy);
+    }
+    return matched || (read_x && read_y);
+}
+
 void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
                                           sdram_traffic* traffic) {
-    if (key.valid() && !search_key(cycles, traffic)) key.drop();
+    const bool matched = key.valid() && search_key(cycles, traffic);
+    if (key.valid() && !matched && !key.turned()) key.drop();
     if (!key.valid()) {
         if (seen.sad_slow && seen.confirmed) take_key(cycles, traffic);
         return;
     }
-    box b = key.object();
-    b.x += key.dx();
-    b.y += key.dy();
-    const int moved = key.shift();
+    const box k = key.object();
+    const block_group u = keyed_extent(cycles, traffic);
+    int dx = 0, dy = 0;
+    if (!key_displacement(u, matched, &dx, &dy)) {
+        key.drop();
+        return;
+    }
+    box b = shifted(k, dx, dy);
+    const int moved = max_int(max_int(dx, -dx), max_int(dy, -dy));
+    // Outlined once the object moved min_shift px; an axis the key's box did
+    // not outline as soon as Dif(key, t) holds that box (the whole outline).
+    const bool shifted_enough = moved >= key_frame::min_shift;
+    const bool outline_x = shifted_enough || (key_unfit_x && covers(x_span(u.bbox), x_span(k)));
+    const bool outline_y = shifted_enough || (key_unfit_y && covers(y_span(u.bbox), y_span(k)));
     box outlined;
-    if (moved >= key_frame::min_shift && keyed_object(cycles, traffic, false, &outlined))
-        b = outlined;
+    if ((outline_x || outline_y) && keyed_object(u, dx, dy, false, &outlined)) {
+        if (outline_x) b = from_spans(x_span(outlined), y_span(b));
+        if (outline_y) b = from_spans(x_span(b), y_span(outlined));
+    }
     b.x = max_int(0, min_int(b.x, width - b.width));
     b.y = max_int(0, min_int(b.y, height - b.height));
     if (!same_box(b, tracker.position())) {

@@ -42,12 +42,15 @@ void key_frame::take(gray_cplane frame, box object, box pattern, int grow) {
     m_object = object;
     m_pattern = pattern;
     m_dx = m_dy = 0;
+    m_pairs = 0;
+    m_turned = false;
 }
 
 bool key_frame::displacement(gray_cplane frame, uint8_t* scratch, uint32_t lost_mean_sad,
                              int* positions) {
     *positions = 0;
     if (!m_valid) return false;
+    ++m_pairs;
     const gray_cplane key = region_plane();
     const int px = m_pattern.x - m_region.x, py = m_pattern.y - m_region.y;
     for (int y = 0; y < m_pattern.height; ++y)
@@ -65,6 +68,7 @@ bool key_frame::displacement(gray_cplane frame, uint8_t* scratch, uint32_t lost_
                          best.y == window.bottom() - 1;
     const uint64_t area = static_cast<uint64_t>(pattern.width) * pattern.height;
     if (on_edge || best.sad > static_cast<uint64_t>(lost_mean_sad) * area) return false;
+    m_turned = best.sad > static_cast<uint64_t>(turned_mean_sad) * area;
     m_dx = best.x - m_pattern.x;
     m_dy = best.y - m_pattern.y;
     return true;

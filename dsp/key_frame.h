@@ -44,6 +44,7 @@ class key_frame {
     static constexpr int max_shift = 16;  // px moved since the key: a new key is taken
     static constexpr int max_step = 2;    // px per pair, at most, for an object to count as slow
     static constexpr int margin = 8;      // px of the region beyond max_shift around the object
+    static constexpr uint32_t turned_mean_sad = 8;  // mean |difference| per pixel: a turned pattern
 
     key_frame() = default;
     ~key_frame();
@@ -80,6 +81,10 @@ class key_frame {
     int shift() const {  // px moved since the key, on the axis it moved most
         return std::max(std::max(m_dx, -m_dx), std::max(m_dy, -m_dy));
     }
+    int pairs() const { return m_pairs; }  // pairs searched since the key was taken
+    // The last match differed by more than turned_mean_sad per pixel on
+    // average: the pattern's texture turned.
+    bool turned() const { return m_turned; }
     int dx() const { return m_dx; }
     int dy() const { return m_dy; }
     box object() const { return m_object; }    // the object box when the key was taken
@@ -96,6 +101,8 @@ class key_frame {
     box m_object;
     box m_pattern;
     int m_dx = 0, m_dy = 0;
+    int m_pairs = 0;
+    bool m_turned = false;
 };
 
 }  // namespace dsp

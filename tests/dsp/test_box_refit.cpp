@@ -1,8 +1,9 @@
 // The box refit's axis rules (dsp/box_refit.h), each against extents worked
 // out by hand: object(t) ends where Dif(t-1,t) reaches past object(t-1),
 // object(t-1) is the common part of the two differences unless they share
-// one edge only (the motion reversed), and the SAD box's pull keeps its
-// documented step.
+// one edge only (the motion reversed), the SAD box's pull keeps its
+// documented step, and Dif(key, t) reads a displacement only where one side
+// reaches past the key's box and the other does not.
 #include <gtest/gtest.h>
 
 #include "dsp/box_refit.h"
@@ -46,6 +47,39 @@ TEST(PartAxis, APartUnderHalfTheBoxGivesItsOuterEdge) {
     // Its mirror: a crescent in the box's first half leads towards the start.
     EXPECT_TRUE(is_span(dsp::part_axis(span{199, 43}, span{199, 129}), 199, 129));
     EXPECT_TRUE(is_span(dsp::part_axis(span{190, 43}, span{199, 129}), 190, 129));
+}
+
+TEST(DifferenceShift, TheSideReachedPastWithTheOtherWithinTwoPixels) {
+    int shift = 99;
+    // The key's box [230, 311); Dif(key, t) [230, 317): moved 6 px towards the end.
+    ASSERT_TRUE(dsp::difference_shift(span{230, 87}, span{230, 81}, &shift));
+    EXPECT_EQ(shift, 6);
+    // A box 8 px wider than the object on the trailing side ([198, 330), the
+    // object [206, 331)) does not matter: [206, 340) is 10 px on.
+    ASSERT_TRUE(dsp::difference_shift(span{206, 134}, span{198, 132}, &shift));
+    EXPECT_EQ(shift, 10);
+    // Towards the start, the box 2 px short at the end: [186, 267) vs [191, 265).
+    ASSERT_TRUE(dsp::difference_shift(span{186, 81}, span{191, 74}, &shift));
+    EXPECT_EQ(shift, -5);
+    // Equally far on both sides, within 2 px: no motion on this axis.
+    ASSERT_TRUE(dsp::difference_shift(span{144, 114}, span{145, 112}, &shift));
+    EXPECT_EQ(shift, 0);
+}
+
+TEST(DifferenceShift, PastTheBoxOnBothSidesReadsNothing) {
+    int shift = 99;
+    // [162, 289) around the key's box [166, 288): 4 px past at the start, 1 at
+    // the end is a reading; 4 and 3 px is not (the box did not outline it).
+    EXPECT_TRUE(dsp::difference_shift(span{162, 127}, span{166, 122}, &shift));
+    EXPECT_EQ(shift, -4);
+    EXPECT_FALSE(dsp::difference_shift(span{162, 129}, span{166, 122}, &shift));
+    EXPECT_FALSE(dsp::difference_shift(span{160, 130}, span{166, 118}, &shift));
+}
+
+TEST(KeyReach, TheFurtherSidePastTheKeysBox) {
+    EXPECT_EQ(dsp::key_reach(span{186, 81}, span{201, 66}), 15);
+    EXPECT_EQ(dsp::key_reach(span{230, 94}, span{230, 81}), 13);
+    EXPECT_EQ(dsp::key_reach(span{206, 128}, span{198, 132}), 4);
 }
 
 TEST(PreviousAxis, TheCommonPartOfBothDifferences) {
