@@ -752,10 +752,8 @@ bool controller::impl::key_displacement(const block_group& u, bool matched, int*
         if (key.pairs() == 1) key_unfit_x = key_unfit_y = false;
         key_unfit_x = key_unfit_x || key_reach(x_span(u.bbox), x_span(k)) > reach;
         key_unfit_y = key_unfit_y || key_reach(y_span(u.bbox), y_span(k)) > reach;
-        if (key.turned() && !key_unfit_x)
-            read_x = difference_shift(x_span(u.bbox), x_span(k), dx);
-        if (key.turned() && !key_unfit_y)
-            read_y = difference_shift(y_span(u.bbox), y_span(k), dy);
+        if (key.turned() && !key_unfit_x) read_x = difference_shift(x_span(u.bbox), x_span(k), dx);
+        if (key.turned() && !key_unfit_y) read_y = difference_shift(y_span(u.bbox), y_span(k), dy);
     }
     return matched || (read_x && read_y);
 }

@@ -16,9 +16,12 @@
 // key's pattern (the object box's centre, at most the tracker's max_size,
 // as in dsp/tracker.h) is searched in the new frame within max_step px of
 // where it was last: the displacement since the key, with no rounding
-// carried from pair to pair. It is the object's because the pattern still
-// matches (a spinning or turning object's does not, and its texture's
-// changes outline it every pair anyway). Once the object has moved
+// carried from pair to pair. It is the object's while the pattern still
+// matches closely; a slowly turning texture's pattern can still match
+// within the lost rule, at the texture's displacement, and its match then
+// differs by over turned_mean_sad per pixel (turned(): the controller then
+// reads the displacement from Dif(key, t), dsp/box_refit.h
+// difference_shift). Once the object has moved
 // min_shift px, Dif(key, t) spans object(key) and object(t) with the whole
 // outline; object(t) is that extent less the displacement, on the side the
 // object moved to (dsp/box_refit.h, keyed_axis).
