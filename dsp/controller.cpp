@@ -686,6 +686,7 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
 // (take_key: the key at the tracker's box, its region's copy charged.)
 void controller::impl::take_key(uint64_t* cycles, sdram_traffic* traffic, int grow) {
     key.take(history(0), tracker.position(), tracker.pattern_box(), grow);
+    key_unfit_x = key_unfit_y = false;
     const box r = key.region();
     *cycles += cycles_of(cost::pattern_copy_profile(r.width, r.height));
     traffic->bytes_written += static_cast<uint64_t>(r.width) * r.height;
@@ -749,7 +750,6 @@ bool controller::impl::key_displacement(const block_group& u, bool matched, int*
     bool read_x = false, read_y = false;
     if (u.found) {
         const int reach = key_frame::max_step * key.pairs() + 1;
-        if (key.pairs() == 1) key_unfit_x = key_unfit_y = false;
         key_unfit_x = key_unfit_x || key_reach(x_span(u.bbox), x_span(k)) > reach;
         key_unfit_y = key_unfit_y || key_reach(y_span(u.bbox), y_span(k)) > reach;
         if (key.turned() && !key_unfit_x) read_x = difference_shift(x_span(u.bbox), x_span(k), dx);

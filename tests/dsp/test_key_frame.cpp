@@ -106,6 +106,22 @@ TEST_F(key_fixture, AMoveOverMaxStepOrATurnedTextureIsNoDisplacement) {
     EXPECT_FALSE(displace(draw(81, 70, 5)));
 }
 
+TEST_F(key_fixture, ATextureThatTurnedALittleMatchesButCountsAsTurned) {
+    const drawn start = draw(80, 70);
+    key.take(start.plane(), start.disc, start.disc);
+    ASSERT_TRUE(displace(draw(81, 70)));
+    EXPECT_FALSE(key.turned()) << "a texture moving with its disc";
+    // The checker turned 3 px of its 5 px squares while the disc moved 1 px
+    // (a shift of 1 would leave it where it was: a texture still in the
+    // image matches at 0 with only the rim differing): within the lost
+    // rule's 28 per pixel, over turned_mean_sad.
+    key.take(start.plane(), start.disc, start.disc);
+    ASSERT_TRUE(displace(draw(81, 70, 3)));
+    EXPECT_TRUE(key.turned());
+    key.take(start.plane(), start.disc, start.disc);
+    EXPECT_FALSE(key.turned()) << "a new key has not turned";
+}
+
 TEST_F(key_fixture, MovedExtentSpansTheKeysAndTheCurrentDisc) {
     const drawn start = draw(80, 70);
     key.take(start.plane(), start.disc, start.disc);
