@@ -51,19 +51,9 @@ span keyed_axis(span both, int shift) {
 
 bool difference_shift(span both, span key, int* shift) {
     const int past_end = both.end() - key.end(), past_start = key.start - both.start;
-    if (past_end > past_start && past_start <= 2) {
-        *shift = past_end;
-        return true;
-    }
-    if (past_start > past_end && past_end <= 2) {
-        *shift = -past_start;
-        return true;
-    }
-    if (past_start == past_end && past_end <= 2) {
-        *shift = 0;
-        return true;
-    }
-    return false;
+    if (min_int(past_end, past_start) > 2) return false;  // past the box on both sides
+    *shift = past_end > past_start ? past_end : past_start > past_end ? -past_start : 0;
+    return true;
 }
 
 int key_reach(span both, span key) {
