@@ -60,6 +60,14 @@ int key_reach(span both, span key) {
     return max_int(both.end() - key.end(), key.start - both.start);
 }
 
+span outline_key_axis(span both, span key, int size, bool across) {
+    const int lo = min_int(both.start, key.start), hi = max_int(both.end(), key.end());
+    if (across) return span{lo, min_int(hi - lo, key.size + key.size / 4 + 1)};
+    const int past_start = key.start - lo, past_end = hi - key.end();
+    if (hi - lo <= size || past_start == past_end) return span{lo + (hi - lo - size) / 2, size};
+    return past_end > past_start ? span{hi - size, size} : span{lo, size};
+}
+
 int step_size(int size, int target, int min_size, int max_size, int limit) {
     const int step = max_int(1, max_int(size, target) / 8);
     const int moved = max_int(size - step, min_int(size + step, target));

@@ -80,6 +80,18 @@ bool difference_shift(span both, span key, int* shift);
 
 // How far `both` reaches past the key's box on its further side.
 int key_reach(span both, span key);
+// object(t) on one axis for a key whose pattern does not follow its object
+// (a texture that outruns it: a 140 px ball at 1 px per frame spinning
+// 1 rev/s about y had its SAD pattern found 7 px a pair off a silhouette that
+// moved 1), from Dif(key, t)'s extent `both` and the key's box `key`: their
+// hull holds object(key) and object(t) whatever the texture did. Across the
+// motion (`across`) the object is the hull (it moved little there; at most
+// a quarter more than the key's box, + 1): a silhouette of three frames
+// misses a slow ball's poles there (120-131 px of 140 measured), Dif(key, t)
+// over a texture turned for a few pairs does not. Along it, `size` wide at
+// the end the hull reaches further past the key's box (the object moved
+// there), centred in the hull when neither does.
+span outline_key_axis(span both, span key, int size, bool across);
 
 // A size moved towards `target` by at most max(1, larger of the two / 8),
 // within [min_size, max_size] and at most `limit`.

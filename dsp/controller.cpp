@@ -197,6 +197,7 @@ struct controller::impl {
     bool slow_candidate = false;  // DETECT: a slow object's key, waiting for its outline
     int candidate_pairs = 0;      // pairs the candidate has waited
     bool key_unfit_x = false, key_unfit_y = false;  // the key's box did not outline the object
+    char outline_key_across = 0;  // a key of the outline: 'x' or 'y' across the motion, 0 unknown
 
     // Disparities (Q8) of the depth range's ends, without the search margin.
     int64_t far_disparity_q8 = 0, near_disparity_q8 = 0;
@@ -231,11 +232,16 @@ struct controller::impl {
     bool track(frame_output& out);
     // What track_object saw of the object's speed, for the key.
     struct track_motion {
-        bool sad_slow = false;   // the SAD pattern moved at most key_frame::max_step px
-        bool confirmed = false;  // a silhouette within an eighth of the SAD box
+        bool sad_slow = false;      // the SAD pattern moved at most key_frame::max_step px
+        bool confirmed = false;     // a silhouette within an eighth of the SAD box
+        bool outlined = false;      // the box followed a silhouette (follow_object)
+        bool outline_slow = false;  // whose centre moved at most key_frame::max_step px
     };
     bool track_object(uint64_t* cycles, sdram_traffic* traffic, track_motion* seen);
     void follow_slow_object(track_motion seen, uint64_t* cycles, sdram_traffic* traffic);
+    void follow_outline_key(track_motion seen, uint64_t* cycles, sdram_traffic* traffic);
+    void judge_across(track_motion seen, box silhouette, box difference);
+    void take_outline_key(uint64_t* cycles, sdram_traffic* traffic, char across);
     void take_key(uint64_t* cycles, sdram_traffic* traffic,
                   int grow = key_frame::max_shift + key_frame::margin);
     bool start_detection(const detection& found, frame_output& out, uint64_t* cycles,
@@ -655,6 +661,11 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
         const int off_y = followed.center_y2() - found.center_y2();
         seen->confirmed = 2 * max_int(step, found.width / 8) >= max_int(off_x, -off_x) &&
                           2 * max_int(step, found.height / 8) >= max_int(off_y, -off_y);
+        const int move_x = followed.center_x2() - last.center_x2();
+        const int move_y = followed.center_y2() - last.center_y2();
+        seen->outlined = true;
+        seen->outline_slow =
+            2 * step >= max_int(move_x, -move_x) && 2 * step >= max_int(move_y, -move_y);
     }
     box resized = found;
     if (follows) {
@@ -681,7 +692,9 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
 // after max_shift px. Once keyed, one pair's silhouette does not overrule
 // the key: across a slow motion it is the measurement the key improves on
 // (a 30 px ball's jumped 10 px in one pair). The key's pattern lost (a
-// turning, spinning or faster object): the box of track_object stands.
+// turning, spinning or faster object): the box of track_object stands, and
+// where the silhouette still moved at most max_step px a key of the outline
+// is taken (follow_outline_key).
 // Runs after update_motion_mask: f(t-1)'s buffer is scratch by then.
 // (take_key: the key at the tracker's box, its region's copy charged.)
 void controller::impl::take_key(uint64_t* cycles, sdram_traffic* traffic, int grow) {
@@ -760,10 +773,18 @@ bool controller::impl::key_displacement(const block_group& u, bool matched, int*
 
 void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
                                           sdram_traffic* traffic) {
+    if (key.valid() && key.outline_only()) {
+        follow_outline_key(seen, cycles, traffic);
+        return;
+    }
     const bool matched = key.valid() && search_key(cycles, traffic);
     if (key.valid() && !matched && !key.turned()) key.drop();
     if (!key.valid()) {
-        if (seen.sad_slow && seen.confirmed) take_key(cycles, traffic);
+        if (seen.sad_slow && seen.confirmed) {
+            take_key(cycles, traffic);
+        } else if (seen.outline_slow) {
+            take_outline_key(cycles, traffic, 0);
+        }
         return;
     }
     const box k = key.object();
@@ -793,6 +814,70 @@ void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
             cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
     }
     if (moved >= key_frame::max_shift) take_key(cycles, traffic);
+}
+
+// A slow object whose texture outruns it (a ball spinning 1 rev/s or more:
+// its silhouette moved at most max_step px, its SAD pattern further): the
+// key's pattern would be lost at once, Dif(key, t) still holds the outline.
+// The box from it per axis (outline_key_axis): along the motion the
+// silhouette's size (its crescents outline it), at the hull's leading end;
+// across it the hull (the silhouette misses a slow ball's poles). Re-taken
+// once Dif(key, t) reaches max_shift px past the key's box; dropped when it
+// reaches the key region's edge (no longer slow).
+void controller::impl::follow_outline_key(track_motion seen, uint64_t* cycles,
+                                          sdram_traffic* traffic) {
+    const box s = tracker.position();  // track_object's: the silhouette's, else the SAD's
+    const box k = key.object();
+    const block_group u = keyed_extent(cycles, traffic);
+    if (!u.found) {
+        key.drop();
+        return;
+    }
+    judge_across(seen, s, u.bbox);
+    // Under half the key's box: a part of the object changed, not its outline.
+    if (2 * u.bbox.width < k.width || 2 * u.bbox.height < k.height) return;
+    const int size_x = seen.outlined ? max_int(s.width, k.width) : k.width;
+    const int size_y = seen.outlined ? max_int(s.height, k.height) : k.height;
+    box b =
+        from_spans(outline_key_axis(x_span(u.bbox), x_span(k), size_x, outline_key_across == 'x'),
+                   outline_key_axis(y_span(u.bbox), y_span(k), size_y, outline_key_across == 'y'));
+    b.x = max_int(0, min_int(b.x, width - b.width));
+    b.y = max_int(0, min_int(b.y, height - b.height));
+    if (!same_box(b, s)) {
+        tracker.start(history(0), b);
+        *cycles += cycles_of(
+            cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
+    }
+    if (max_int(key_reach(x_span(u.bbox), x_span(k)), key_reach(y_span(u.bbox), y_span(k))) >=
+        key_frame::max_shift)
+        take_outline_key(cycles, traffic, outline_key_across);
+}
+
+// The axis across the motion for a key of the outline: the one along which
+// the silhouette's centre moved at most half as far as along the other since
+// the key, the other at least min_shift px, and on which Dif(key, t) reaches
+// past the key's box no further. Until judged otherwise it stands, across
+// keys: the silhouette's centre across a slow motion jumps with the poles it
+// misses (9 px in one pair of a 150 px ball).
+void controller::impl::judge_across(track_motion seen, box silhouette, box difference) {
+    if (!seen.outlined) return;
+    const box k = key.object();
+    const int move_x =
+        max_int(silhouette.center_x2() - k.center_x2(), k.center_x2() - silhouette.center_x2()) / 2;
+    const int move_y =
+        max_int(silhouette.center_y2() - k.center_y2(), k.center_y2() - silhouette.center_y2()) / 2;
+    const int reach_x = key_reach(x_span(difference), x_span(k));
+    const int reach_y = key_reach(y_span(difference), y_span(k));
+    if (2 * move_y <= move_x && move_x >= key_frame::min_shift && reach_y <= reach_x)
+        outline_key_across = 'y';
+    if (2 * move_x <= move_y && move_y >= key_frame::min_shift && reach_x <= reach_y)
+        outline_key_across = 'x';
+}
+
+void controller::impl::take_outline_key(uint64_t* cycles, sdram_traffic* traffic, char across) {
+    take_key(cycles, traffic);
+    key.set_outline_only();
+    outline_key_across = across;
 }
 
 // object(t-1)'s box is the box where both differences around it agree:

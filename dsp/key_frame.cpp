@@ -44,6 +44,7 @@ void key_frame::take(gray_cplane frame, box object, box pattern, int grow) {
     m_dx = m_dy = 0;
     m_pairs = 0;
     m_turned = false;
+    m_outline_only = false;
 }
 
 bool key_frame::displacement(gray_cplane frame, uint8_t* scratch, uint32_t lost_mean_sad,

@@ -88,6 +88,10 @@ class key_frame {
     // The last match differed by more than turned_mean_sad per pixel on
     // average: the pattern's texture turned.
     bool turned() const { return m_turned; }
+    // A key of the outline only: its pattern is not searched (its texture
+    // outruns its object); the controller reads Dif(key, t) alone.
+    bool outline_only() const { return m_outline_only; }
+    void set_outline_only() { m_outline_only = true; }
     int dx() const { return m_dx; }
     int dy() const { return m_dy; }
     box object() const { return m_object; }    // the object box when the key was taken
@@ -106,6 +110,7 @@ class key_frame {
     int m_dx = 0, m_dy = 0;
     int m_pairs = 0;
     bool m_turned = false;
+    bool m_outline_only = false;
 };
 
 }  // namespace dsp

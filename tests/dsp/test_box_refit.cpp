@@ -82,6 +82,31 @@ TEST(KeyReach, TheFurtherSidePastTheKeysBox) {
     EXPECT_EQ(dsp::key_reach(span{206, 128}, span{198, 132}), 4);
 }
 
+// A key of the outline: the hull of Dif(key, t)'s extent and the key's box.
+TEST(OutlineKeyAxis, AcrossTheMotionTheHull) {
+    // The trace of a 140 px ball about y: the key's box missed 6 px at the
+    // top, Dif(key, t) 1 (y 156..293 against the key's 161..292).
+    EXPECT_TRUE(
+        is_span(dsp::outline_key_axis(span{156, 137}, span{161, 131}, 131, true), 156, 137));
+    // At most a quarter more than the key's box, + 1.
+    EXPECT_TRUE(
+        is_span(dsp::outline_key_axis(span{100, 200}, span{120, 100}, 100, true), 100, 126));
+}
+
+TEST(OutlineKeyAxis, AlongTheMotionTheSizeAtTheLeadingEnd) {
+    // Moved 10 px towards the end: [193, 344) less the size from its end.
+    EXPECT_TRUE(
+        is_span(dsp::outline_key_axis(span{194, 150}, span{193, 141}, 140, false), 204, 140));
+    // Towards the start.
+    EXPECT_TRUE(
+        is_span(dsp::outline_key_axis(span{180, 150}, span{190, 140}, 140, false), 180, 140));
+    // Equally far on both sides: centred in the hull [100, 164).
+    EXPECT_TRUE(is_span(dsp::outline_key_axis(span{100, 64}, span{102, 60}, 60, false), 102, 60));
+    // A part inside the key's box (a leading crescent 41 px of 129): the key's box.
+    EXPECT_TRUE(
+        is_span(dsp::outline_key_axis(span{289, 41}, span{201, 129}, 129, false), 201, 129));
+}
+
 TEST(PreviousAxis, TheCommonPartOfBothDifferences) {
     // Moving towards the end: Dif(t-2,t-1) [90, 160), Dif(t-1,t) [100, 180).
     EXPECT_TRUE(is_span(dsp::previous_axis(span{90, 70}, span{100, 80}, 60), 100, 60));
