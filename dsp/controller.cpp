@@ -197,7 +197,8 @@ struct controller::impl {
     bool slow_candidate = false;  // DETECT: a slow object's key, waiting for its outline
     int candidate_pairs = 0;      // pairs the candidate has waited
     bool key_unfit_x = false, key_unfit_y = false;  // the key's box did not outline the object
-    char outline_key_across = 0;  // a key of the outline: 'x' or 'y' across the motion, 0 unknown
+    char outline_key_across = 0;   // a key of the outline: 'x' or 'y' across the motion, 0 unknown
+    bool box_may_be_part = false;  // a detection's box no silhouette of its size has confirmed
 
     // Disparities (Q8) of the depth range's ends, without the search margin.
     int64_t far_disparity_q8 = 0, near_disparity_q8 = 0;
@@ -240,8 +241,8 @@ struct controller::impl {
     bool track_object(uint64_t* cycles, sdram_traffic* traffic, track_motion* seen);
     void follow_slow_object(track_motion seen, uint64_t* cycles, sdram_traffic* traffic);
     void follow_outline_key(track_motion seen, uint64_t* cycles, sdram_traffic* traffic);
-    void judge_across(track_motion seen, box silhouette, box difference);
-    void take_outline_key(uint64_t* cycles, sdram_traffic* traffic, char across);
+    void judge_across(track_motion seen, box silhouette);
+    void take_outline_key(uint64_t* cycles, sdram_traffic* traffic);
     void take_key(uint64_t* cycles, sdram_traffic* traffic,
                   int grow = key_frame::max_shift + key_frame::margin);
     bool start_detection(const detection& found, frame_output& out, uint64_t* cycles,
@@ -267,7 +268,8 @@ struct controller::impl {
     };
     motion_extents measure_motion(box last, const box* detected, uint64_t* cycles,
                                   sdram_traffic* traffic);
-    bool follow_object(const motion_extents& motion, box last, box* followed) const;
+    bool follow_object(const motion_extents& motion, box last, bool may_be_part,
+                       box* followed) const;
     box pull_box(const motion_extents& motion, box last, box found) const;
     void stereo_sad(box object, bool outlined, frame_output& out);
     void stereo_edge(box object, frame_output& out);
@@ -561,10 +563,11 @@ bool controller::impl::start_track(box detected, uint64_t* cycles, sdram_traffic
     // Read only for an object that is started: not in a slow candidate's pairs.
     const motion_extents motion = measure_motion(detected, &detected, cycles, traffic);
     box followed;
-    const bool follows = motion.found && follow_object(motion, detected, &followed);
+    const bool follows = motion.found && follow_object(motion, detected, false, &followed);
     if (!follows && status != track_status::tracking) return false;
     key.drop();
     slow_candidate = false;
+    box_may_be_part = true;
     if (follows) {
         tracker.start(history(0), followed);
         *cycles += cycles_of(
@@ -641,7 +644,7 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
     const box pattern = tracker.pattern_box();
     const motion_extents motion = measure_motion(last, nullptr, cycles, traffic);
     box followed;
-    const bool follows = motion.found && follow_object(motion, last, &followed);
+    const bool follows = motion.found && follow_object(motion, last, box_may_be_part, &followed);
     const track_status status =
         follows ? tracker.update_near(history(0), followed) : tracker.update(history(0));
     *cycles += cycles_of(
@@ -667,6 +670,9 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
         seen->outline_slow =
             2 * step >= max_int(move_x, -move_x) && 2 * step >= max_int(move_y, -move_y);
     }
+    if (follows && near_size(followed.width, last.width, max_int(2, last.width / 8)) &&
+        near_size(followed.height, last.height, max_int(2, last.height / 8)))
+        box_may_be_part = false;  // a silhouette of the box's size
     box resized = found;
     if (follows) {
         resized = followed;
@@ -783,7 +789,7 @@ void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
         if (seen.sad_slow && seen.confirmed) {
             take_key(cycles, traffic);
         } else if (seen.outline_slow) {
-            take_outline_key(cycles, traffic, 0);
+            take_outline_key(cycles, traffic);
         }
         return;
     }
@@ -833,11 +839,10 @@ void controller::impl::follow_outline_key(track_motion seen, uint64_t* cycles,
         key.drop();
         return;
     }
-    judge_across(seen, s, u.bbox);
+    judge_across(seen, s);
     // Under half the key's box: a part of the object changed, not its outline.
     if (2 * u.bbox.width < k.width || 2 * u.bbox.height < k.height) return;
-    const int size_x = seen.outlined ? max_int(s.width, k.width) : k.width;
-    const int size_y = seen.outlined ? max_int(s.height, k.height) : k.height;
+    const int size_x = max_int(s.width, k.width), size_y = max_int(s.height, k.height);
     box b =
         from_spans(outline_key_axis(x_span(u.bbox), x_span(k), size_x, outline_key_across == 'x'),
                    outline_key_axis(y_span(u.bbox), y_span(k), size_y, outline_key_across == 'y'));
@@ -850,34 +855,28 @@ void controller::impl::follow_outline_key(track_motion seen, uint64_t* cycles,
     }
     if (max_int(key_reach(x_span(u.bbox), x_span(k)), key_reach(y_span(u.bbox), y_span(k))) >=
         key_frame::max_shift)
-        take_outline_key(cycles, traffic, outline_key_across);
+        take_outline_key(cycles, traffic);
 }
 
 // The axis across the motion for a key of the outline: the one along which
-// the silhouette's centre moved at most half as far as along the other since
-// the key, the other at least min_shift px, and on which Dif(key, t) reaches
-// past the key's box no further. Until judged otherwise it stands, across
-// keys: the silhouette's centre across a slow motion jumps with the poles it
-// misses (9 px in one pair of a 150 px ball).
-void controller::impl::judge_across(track_motion seen, box silhouette, box difference) {
+// the silhouette's centre moved at most half as far since the key as along
+// the other, that one at least min_shift px; none before (both axes then
+// take the object's size at the hull's leading end, or centred).
+void controller::impl::judge_across(track_motion seen, box silhouette) {
     if (!seen.outlined) return;
     const box k = key.object();
     const int move_x =
         max_int(silhouette.center_x2() - k.center_x2(), k.center_x2() - silhouette.center_x2()) / 2;
     const int move_y =
         max_int(silhouette.center_y2() - k.center_y2(), k.center_y2() - silhouette.center_y2()) / 2;
-    const int reach_x = key_reach(x_span(difference), x_span(k));
-    const int reach_y = key_reach(y_span(difference), y_span(k));
-    if (2 * move_y <= move_x && move_x >= key_frame::min_shift && reach_y <= reach_x)
-        outline_key_across = 'y';
-    if (2 * move_x <= move_y && move_y >= key_frame::min_shift && reach_x <= reach_y)
-        outline_key_across = 'x';
+    if (2 * move_y <= move_x && move_x >= key_frame::min_shift) outline_key_across = 'y';
+    if (2 * move_x <= move_y && move_y >= key_frame::min_shift) outline_key_across = 'x';
 }
 
-void controller::impl::take_outline_key(uint64_t* cycles, sdram_traffic* traffic, char across) {
+void controller::impl::take_outline_key(uint64_t* cycles, sdram_traffic* traffic) {
     take_key(cycles, traffic);
     key.set_outline_only();
-    outline_key_across = across;
+    outline_key_across = 0;
 }
 
 // object(t-1)'s box is the box where both differences around it agree:
@@ -961,16 +960,31 @@ controller::impl::motion_extents controller::impl::measure_motion(box last, cons
 // the light, another mover joined), or when object(t) touches the image border (the SAD's rule then
 // says whether it is leaving). On an axis where Dif(t-1,t) is a part of the object (is_part: a
 // slow ball's leading crescent), object(t) is the last box's size from the part's outer edge.
-bool controller::impl::follow_object(const motion_extents& motion, box last, box* followed) const {
+// A box that may be a part of its object (`may_be_part`: a detection's, until a silhouette of its
+// size confirms it) takes object(t-1)'s extent, the common part of both differences, on an axis
+// where that extent holds the box and is larger than the tolerance allows: the three-frame AND of
+// a slow spinning ball holds where its texture changed most (a detection 67 x 34 px of a 110 px
+// ball, 88 px wide of 140), both differences the whole ball. Not later in a track: at a bounce the
+// common part holds the ball and where it was and will be.
+bool controller::impl::follow_object(const motion_extents& motion, box last, bool may_be_part,
+                                     box* followed) const {
     const track_params& p = config.track;
     const bool part_x = is_part(x_span(motion.both), x_span(last));
     const bool part_y = is_part(y_span(motion.both), y_span(last));
     if (part_x && part_y) return false;
-    const span previous_x = previous_axis(x_span(motion.before), x_span(motion.after), last.width);
-    const span previous_y = previous_axis(y_span(motion.before), y_span(motion.after), last.height);
     const int tolerance_x = max_int(2, last.width / 8), tolerance_y = max_int(2, last.height / 8);
-    if ((!part_x && !near_size(previous_x.size, last.width, tolerance_x)) ||
-        (!part_y && !near_size(previous_y.size, last.height, tolerance_y)))
+    const span common_x = x_span(motion.previous), common_y = y_span(motion.previous);
+    const bool grown_x = may_be_part && !part_x && covers(common_x, x_span(last)) &&
+                         common_x.size > last.width + tolerance_x;
+    const bool grown_y = may_be_part && !part_y && covers(common_y, y_span(last)) &&
+                         common_y.size > last.height + tolerance_y;
+    const span previous_x =
+        grown_x ? common_x : previous_axis(x_span(motion.before), x_span(motion.after), last.width);
+    const span previous_y =
+        grown_y ? common_y
+                : previous_axis(y_span(motion.before), y_span(motion.after), last.height);
+    if ((!part_x && !grown_x && !near_size(previous_x.size, last.width, tolerance_x)) ||
+        (!part_y && !grown_y && !near_size(previous_y.size, last.height, tolerance_y)))
         return false;
     // object(t-1)'s measured size (within the tolerance above of the last):
     // its edges and object(t)'s leading edge are found alike, so their

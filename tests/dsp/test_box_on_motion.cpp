@@ -333,7 +333,10 @@ INSTANTIATE_TEST_SUITE_P(
 // of that rule since. The three 140 px balls about y after them failed until
 // a key of the outline (dsp/controller.cpp, follow_outline_key; 1 rev/s was
 // traced for it): their texture outran them, no key was taken and the
-// silhouette missed their poles.
+// silhouette missed their poles. The last two failed until a detection's box
+// may grow to both differences' common part (dsp/controller.cpp,
+// follow_object; 1 rev/s about x was traced for it) and the axis across the
+// motion of a key of the outline was judged afresh each pair.
 INSTANTIATE_TEST_SUITE_P(
     SlowSpinning, BoxOnMotion,
     ::testing::Values(
@@ -368,7 +371,9 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"spin140px_1pxpf_0_5rps_z", 140, 2.6, pass, 0.2, 0.5, 'z', procedural, 30},
         motion_case{"spin140px_1pxpf_1rps_y", 140, 2.6, pass, 0.2, 1.0, 'y', procedural, 30},
         motion_case{"spin140px_1pxpf_2rps_y", 140, 2.6, pass, 0.2, 2.0, 'y', procedural, 30},
-        motion_case{"spin140px_1pxpf_3rps_y", 140, 2.6, pass, 0.2, 3.0, 'y', procedural, 30}),
+        motion_case{"spin140px_1pxpf_3rps_y", 140, 2.6, pass, 0.2, 3.0, 'y', procedural, 30},
+        motion_case{"spin140px_1pxpf_1rps_x", 140, 2.6, pass, 0.2, 1.0, 'x', procedural, 30},
+        motion_case{"spin140px_1pxpf_0_5rps_y", 140, 2.6, pass, 0.2, 0.5, 'y', procedural, 30}),
     case_name);
 
 // Held out, round 9: slow spinning balls on other sizes, rates, paths and
@@ -453,25 +458,28 @@ INSTANTIATE_TEST_SUITE_P(
 // a key whose pattern turns was tried, run once on that rule and once on
 // the firmware before it: 5 of 8 pass on both (the rule moved the 115 px
 // ball's mean 4.13 -> 2.28 px, its max stays 7.24); three failed. The last
-// two here pass since a key of the outline (box max 7.24 -> 2.10 and
-// 11.71 -> 2.65 px); the 75 px ball circling over cones still fails (below).
-INSTANTIATE_TEST_SUITE_P(HeldOutSlow12, BoxOnMotion,
-                         ::testing::Values(motion_case{"heldout12_spin90px_1pxpf_0_7rps_y_photo4",
-                                                       90, 2.6, pass, 0.2, 0.7, 'y', photo4, 30},
-                                           motion_case{"heldout12_spin50px_1pxpf_0_6rps_y_photo2",
-                                                       50, 2.6, pass, 0.2, 0.6, 'y', photo2, 30},
-                                           motion_case{"heldout12_spin65px_2pxpf_0_9rps_y_aloe", 65,
-                                                       2.6, pass, 0.4, 0.9, 'y', aloe, 30},
-                                           motion_case{"heldout12_spin100px_1pxpf_0_6rps_x_venus",
-                                                       100, 2.6, pass, 0.2, 0.6, 'x', venus, 30},
-                                           motion_case{"heldout12_pass85px_1pxpf_tsukuba", 85, 2.6,
-                                                       pass, 0.2, 0.0, 'x', tsukuba, 30},
-                                           motion_case{
-                                               "heldout12_spin115px_1_5pxpf_1_3rps_y_photo3", 115,
-                                               2.6, pass, 0.3, 1.3, 'y', photo3, 30},
-                                           motion_case{"heldout12_spin150px_1pxpf_0_8rps_y", 150,
-                                                       2.4, pass, 0.2, 0.8, 'y', procedural, 30}),
-                         case_name);
+// two but one here pass since a key of the outline (box max 7.24 -> 2.10 and
+// 11.71 -> 2.65 px), the 75 px ball circling over cones (last) since a
+// detection's box may grow to both differences' common part (7.61 -> 4.93).
+INSTANTIATE_TEST_SUITE_P(
+    HeldOutSlow12, BoxOnMotion,
+    ::testing::Values(motion_case{"heldout12_spin90px_1pxpf_0_7rps_y_photo4", 90, 2.6, pass, 0.2,
+                                  0.7, 'y', photo4, 30},
+                      motion_case{"heldout12_spin50px_1pxpf_0_6rps_y_photo2", 50, 2.6, pass, 0.2,
+                                  0.6, 'y', photo2, 30},
+                      motion_case{"heldout12_spin65px_2pxpf_0_9rps_y_aloe", 65, 2.6, pass, 0.4, 0.9,
+                                  'y', aloe, 30},
+                      motion_case{"heldout12_spin100px_1pxpf_0_6rps_x_venus", 100, 2.6, pass, 0.2,
+                                  0.6, 'x', venus, 30},
+                      motion_case{"heldout12_pass85px_1pxpf_tsukuba", 85, 2.6, pass, 0.2, 0.0, 'x',
+                                  tsukuba, 30},
+                      motion_case{"heldout12_spin115px_1_5pxpf_1_3rps_y_photo3", 115, 2.6, pass,
+                                  0.3, 1.3, 'y', photo3, 30},
+                      motion_case{"heldout12_spin150px_1pxpf_0_8rps_y", 150, 2.4, pass, 0.2, 0.8,
+                                  'y', procedural, 30},
+                      motion_case{"heldout12_circle75px_1pxpf_0_8rps_y_photo", 75, 2.6, circle,
+                                  0.125, 0.8, 'y', photo, 30}),
+    case_name);
 
 // Held out, round 13: slow balls spinning fast enough that the texture
 // outruns the ball (about y, x and z; one circling), on sizes, rates and
@@ -479,24 +487,29 @@ INSTANTIATE_TEST_SUITE_P(HeldOutSlow12, BoxOnMotion,
 // outline (dsp/controller.cpp, follow_outline_key) ran on them, run once on
 // it and once on the firmware before: 7 of 8 pass on both (the key moved four
 // means: 1.02 -> 0.65, 2.08 -> 1.15, 1.26 -> 0.75, 1.00 -> 0.91 px). A 110 px
-// ball circling over teddy at 2 rev/s fails on both (24.1 px, below, open).
-INSTANTIATE_TEST_SUITE_P(HeldOutSlow13, BoxOnMotion,
-                         ::testing::Values(motion_case{"heldout13_spin135px_1pxpf_1_7rps_y_tsukuba",
-                                                       135, 2.6, pass, 0.2, 1.7, 'y', tsukuba, 30},
-                                           motion_case{
-                                               "heldout13_spin105px_1_5pxpf_2_5rps_y_photo2", 105,
-                                               2.6, pass, 0.3, 2.5, 'y', photo2, 30},
-                                           motion_case{"heldout13_spin170px_1pxpf_1_2rps_y", 170,
-                                                       2.2, pass, 0.2, 1.2, 'y', procedural, 30},
-                                           motion_case{"heldout13_spin120px_1pxpf_2_2rps_x_venus",
-                                                       120, 2.6, pass, 0.2, 2.2, 'x', venus, 30},
-                                           motion_case{"heldout13_spin145px_2pxpf_1_5rps_y_aloe",
-                                                       145, 2.6, pass, 0.4, 1.5, 'y', aloe, 30},
-                                           motion_case{"heldout13_spin95px_1pxpf_3_5rps_z_photo",
-                                                       95, 2.6, pass, 0.2, 3.5, 'z', photo, 30},
-                                           motion_case{"heldout13_spin80px_1pxpf_1_5rps_y_photo3",
-                                                       80, 2.6, pass, 0.2, 1.5, 'y', photo3, 30}),
-                         case_name);
+// ball circling over teddy at 2 rev/s failed on both (24.1 px; its
+// detection a 67 x 34 px part) and was then traced: it passes since a
+// detection's box may grow to both differences' common part (last here; a
+// development case of that rule, no longer held out).
+INSTANTIATE_TEST_SUITE_P(
+    HeldOutSlow13, BoxOnMotion,
+    ::testing::Values(motion_case{"heldout13_spin135px_1pxpf_1_7rps_y_tsukuba", 135, 2.6, pass, 0.2,
+                                  1.7, 'y', tsukuba, 30},
+                      motion_case{"heldout13_spin105px_1_5pxpf_2_5rps_y_photo2", 105, 2.6, pass,
+                                  0.3, 2.5, 'y', photo2, 30},
+                      motion_case{"heldout13_spin170px_1pxpf_1_2rps_y", 170, 2.2, pass, 0.2, 1.2,
+                                  'y', procedural, 30},
+                      motion_case{"heldout13_spin120px_1pxpf_2_2rps_x_venus", 120, 2.6, pass, 0.2,
+                                  2.2, 'x', venus, 30},
+                      motion_case{"heldout13_spin145px_2pxpf_1_5rps_y_aloe", 145, 2.6, pass, 0.4,
+                                  1.5, 'y', aloe, 30},
+                      motion_case{"heldout13_spin95px_1pxpf_3_5rps_z_photo", 95, 2.6, pass, 0.2,
+                                  3.5, 'z', photo, 30},
+                      motion_case{"heldout13_spin80px_1pxpf_1_5rps_y_photo3", 80, 2.6, pass, 0.2,
+                                  1.5, 'y', photo3, 30},
+                      motion_case{"heldout13_circle110px_1pxpf_2rps_y_photo4", 110, 2.6, circle,
+                                  0.125, 2.0, 'y', photo4, 30}),
+    case_name);
 
 // Open: the issue of the box on fast, large and spinning objects stays open
 // on these (docs/firmware.md, "Open"; run with
@@ -511,13 +524,11 @@ INSTANTIATE_TEST_SUITE_P(HeldOutSlow13, BoxOnMotion,
 // bounce the box 10 px narrow for two pairs). Detected too
 // late for 30 frames: an 80 px ball at 0.5 px per frame over kodim19 (no
 // start), an 80 px ball circling over teddy (pair 25: 3 pairs scored).
-// Four slow spinning 140 px balls of the SlowSpinning grid (about y at
-// 0.5 rev/s, about x at 0.5 and 1 rev/s, about z at 1 rev/s); a 160 px ball
-// over kodim19 (round 9, 32.8 px off in its first pairs); a 125 px ball at
-// 2 px per frame over venus (round 11, 12.2 px: its first key's box 8 px
-// behind the ball, read as not outlining it); a 75 px ball circling over
-// cones (round 12, 7.6 px) and a 110 px ball circling over teddy at 2 rev/s
-// (round 13, 24.1 px).
+// Two slow spinning 140 px balls of the SlowSpinning grid (about x at
+// 0.5 rev/s, about z at 1 rev/s); a 160 px ball over kodim19 (round 9,
+// 32.8 px off in its first pairs, 6.8 px since its detection may grow); a
+// 125 px ball at 2 px per frame over venus (round 11, 12.2 px: its first
+// key's box 8 px behind the ball, read as not outlining it).
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
     ::testing::Values(
@@ -541,13 +552,7 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"heldout11_spin125px_2pxpf_0_5rps_y_venus", 125, 2.6, pass, 0.4, 0.5, 'y',
                     venus, 30},
         motion_case{"spin140px_1pxpf_0_5rps_x", 140, 2.6, pass, 0.2, 0.5, 'x', procedural, 30},
-        motion_case{"spin140px_1pxpf_1rps_x", 140, 2.6, pass, 0.2, 1.0, 'x', procedural, 30},
-        motion_case{"spin140px_1pxpf_0_5rps_y", 140, 2.6, pass, 0.2, 0.5, 'y', procedural, 30},
-        motion_case{"spin140px_1pxpf_1rps_z", 140, 2.6, pass, 0.2, 1.0, 'z', procedural, 30},
-        motion_case{"heldout12_circle75px_1pxpf_0_8rps_y_photo", 75, 2.6, circle, 0.125, 0.8, 'y',
-                    photo, 30},
-        motion_case{"heldout13_circle110px_1pxpf_2rps_y_photo4", 110, 2.6, circle, 0.125, 2.0, 'y',
-                    photo4, 30}),
+        motion_case{"spin140px_1pxpf_1rps_z", 140, 2.6, pass, 0.2, 1.0, 'z', procedural, 30}),
     case_name);
 
 }  // namespace
