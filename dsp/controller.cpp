@@ -961,11 +961,12 @@ controller::impl::motion_extents controller::impl::measure_motion(box last, cons
 // says whether it is leaving). On an axis where Dif(t-1,t) is a part of the object (is_part: a
 // slow ball's leading crescent), object(t) is the last box's size from the part's outer edge.
 // A box that may be a part of its object (`may_be_part`: a detection's, until a silhouette of its
-// size confirms it) takes object(t-1)'s extent, the common part of both differences, on an axis
-// where that extent holds the box and is larger than the tolerance allows: the three-frame AND of
-// a slow spinning ball holds where its texture changed most (a detection 67 x 34 px of a 110 px
-// ball, 88 px wide of 140), both differences the whole ball. Not later in a track: at a bounce the
-// common part holds the ball and where it was and will be.
+// size confirms it) of a slow object takes object(t-1)'s extent, the common part of both
+// differences, on an axis where that extent holds the box and is larger than the tolerance
+// allows: the three-frame AND of a slow spinning ball holds where its texture changed most (a
+// detection 67 x 34 px of a 110 px ball, 88 px wide of 140), both differences the whole ball. Not
+// later in a track (at a bounce the common part holds the ball and where it was and will be), nor
+// for a fast object (a throw's first common part is over an eighth larger than its detection).
 bool controller::impl::follow_object(const motion_extents& motion, box last, bool may_be_part,
                                      box* followed) const {
     const track_params& p = config.track;
@@ -974,9 +975,15 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
     if (part_x && part_y) return false;
     const int tolerance_x = max_int(2, last.width / 8), tolerance_y = max_int(2, last.height / 8);
     const span common_x = x_span(motion.previous), common_y = y_span(motion.previous);
-    const bool grown_x = may_be_part && !part_x && covers(common_x, x_span(last)) &&
+    // A slow object's: both differences' extents within min_shift px of each other.
+    const int slow = key_frame::min_shift;
+    const bool grows = may_be_part && near_size(motion.before.x, motion.after.x, slow) &&
+                       near_size(motion.before.right(), motion.after.right(), slow) &&
+                       near_size(motion.before.y, motion.after.y, slow) &&
+                       near_size(motion.before.bottom(), motion.after.bottom(), slow);
+    const bool grown_x = grows && !part_x && covers(common_x, x_span(last)) &&
                          common_x.size > last.width + tolerance_x;
-    const bool grown_y = may_be_part && !part_y && covers(common_y, y_span(last)) &&
+    const bool grown_y = grows && !part_y && covers(common_y, y_span(last)) &&
                          common_y.size > last.height + tolerance_y;
     const span previous_x =
         grown_x ? common_x : previous_axis(x_span(motion.before), x_span(motion.after), last.width);
