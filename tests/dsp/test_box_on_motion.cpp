@@ -458,8 +458,8 @@ INSTANTIATE_TEST_SUITE_P(
 // a key whose pattern turns was tried, run once on that rule and once on
 // the firmware before it: 5 of 8 pass on both (the rule moved the 115 px
 // ball's mean 4.13 -> 2.28 px, its max stays 7.24); three failed. The last
-// two but one here pass since a key of the outline (box max 7.24 -> 2.10 and
-// 11.71 -> 2.65 px), the 75 px ball circling over cones (last) since a
+// two but one here pass since a key of the outline (box max 7.24 -> 4.96 and
+// 11.71 -> 2.68 px), the 75 px ball circling over cones (last) since a
 // detection's box may grow to both differences' common part (7.61 -> 4.93).
 INSTANTIATE_TEST_SUITE_P(
     HeldOutSlow12, BoxOnMotion,
