@@ -86,6 +86,15 @@ bool moved_at_most(box a, box b, int step) {
     return b.x - a.x <= step && a.x - b.x <= step && b.y - a.y <= step && a.y - b.y <= step;
 }
 
+// How far apart two boxes' centres are on each axis, in half pixels.
+struct centre_gap {
+    int x2, y2;
+};
+centre_gap centre_offset2(box a, box b) {
+    const int x2 = a.center_x2() - b.center_x2(), y2 = a.center_y2() - b.center_y2();
+    return centre_gap{max_int(x2, -x2), max_int(y2, -y2)};
+}
+
 bool same_box(box a, box b) {
     return a.x == b.x && a.y == b.y && a.width == b.width && a.height == b.height;
 }
@@ -656,19 +665,14 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
 
     const box found = tracker.position();
     const int step = key_frame::max_step;
-    seen->sad_slow = status == track_status::tracking && found.x - last.x <= step &&
-                     last.x - found.x <= step && found.y - last.y <= step &&
-                     last.y - found.y <= step;
+    seen->sad_slow = status == track_status::tracking && moved_at_most(last, found, step);
     if (follows) {
-        const int off_x = followed.center_x2() - found.center_x2();
-        const int off_y = followed.center_y2() - found.center_y2();
-        seen->confirmed = 2 * max_int(step, found.width / 8) >= max_int(off_x, -off_x) &&
-                          2 * max_int(step, found.height / 8) >= max_int(off_y, -off_y);
-        const int move_x = followed.center_x2() - last.center_x2();
-        const int move_y = followed.center_y2() - last.center_y2();
+        const centre_gap off = centre_offset2(followed, found);
+        seen->confirmed = 2 * max_int(step, found.width / 8) >= off.x2 &&
+                          2 * max_int(step, found.height / 8) >= off.y2;
+        const centre_gap moved = centre_offset2(followed, last);
         seen->outlined = true;
-        seen->outline_slow =
-            2 * step >= max_int(move_x, -move_x) && 2 * step >= max_int(move_y, -move_y);
+        seen->outline_slow = 2 * step >= moved.x2 && 2 * step >= moved.y2;
     }
     if (follows && near_size(followed.width, last.width, max_int(2, last.width / 8)) &&
         near_size(followed.height, last.height, max_int(2, last.height / 8)))
@@ -864,11 +868,8 @@ void controller::impl::follow_outline_key(track_motion seen, uint64_t* cycles,
 // take the object's size at the hull's leading end, or centred).
 void controller::impl::judge_across(track_motion seen, box silhouette) {
     if (!seen.outlined) return;
-    const box k = key.object();
-    const int move_x =
-        max_int(silhouette.center_x2() - k.center_x2(), k.center_x2() - silhouette.center_x2()) / 2;
-    const int move_y =
-        max_int(silhouette.center_y2() - k.center_y2(), k.center_y2() - silhouette.center_y2()) / 2;
+    const centre_gap moved = centre_offset2(silhouette, key.object());
+    const int move_x = moved.x2 / 2, move_y = moved.y2 / 2;
     if (2 * move_y <= move_x && move_x >= key_frame::min_shift) outline_key_across = 'y';
     if (2 * move_x <= move_y && move_y >= key_frame::min_shift) outline_key_across = 'x';
 }
