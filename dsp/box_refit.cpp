@@ -64,6 +64,7 @@ span outline_key_axis(span both, span key, int size, bool across) {
     const int lo = min_int(both.start, key.start), hi = max_int(both.end(), key.end());
     if (across) return span{lo, min_int(hi - lo, key.size + key.size / 4 + 1)};
     const int past_start = key.start - lo, past_end = hi - key.end();
+    size = max_int(size, key.size + 2 * min_int(past_start, past_end));
     if (hi - lo <= size || past_start == past_end) return span{lo + (hi - lo - size) / 2, size};
     return past_end > past_start ? span{hi - size, size} : span{lo, size};
 }

@@ -90,7 +90,10 @@ int key_reach(span both, span key);
 // misses a slow ball's poles there (120-131 px of 140 measured), Dif(key, t)
 // over a texture turned for a few pairs does not. Along it, `size` wide at
 // the end the hull reaches further past the key's box (the object moved
-// there), centred in the hull when neither does.
+// there), centred in the hull when neither does; at least the key's box plus
+// twice the hull's reach past its trailing side, for a hull past the key's box
+// on both sides says that box was short by that much on each (a 160 px ball
+// spinning 2 rev/s about y was keyed short along the motion).
 span outline_key_axis(span both, span key, int size, bool across);
 
 // A size moved towards `target` by at most max(1, larger of the two / 8),

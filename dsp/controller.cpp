@@ -830,7 +830,8 @@ void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
 // its silhouette moved at most max_step px, its SAD pattern further): the
 // key's pattern would be lost at once, Dif(key, t) still holds the outline.
 // The box from it per axis (outline_key_axis): along the motion the
-// silhouette's size (its crescents outline it), at the hull's leading end;
+// silhouette's size (its crescents outline it), more where the hull says the
+// key's box was short, at the hull's leading end;
 // across it the hull (the silhouette misses a slow ball's poles). Re-taken
 // once Dif(key, t) reaches max_shift px past the key's box; dropped when it
 // reaches the key region's edge (no longer slow).

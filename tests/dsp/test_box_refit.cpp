@@ -94,14 +94,21 @@ TEST(OutlineKeyAxis, AcrossTheMotionTheHull) {
 }
 
 TEST(OutlineKeyAxis, AlongTheMotionTheSizeAtTheLeadingEnd) {
-    // Moved 10 px towards the end: [193, 344) less the size from its end.
+    // Moved 10 px towards the end: [193, 344) less the size from its end,
+    // never under the key's box (141).
     EXPECT_TRUE(
-        is_span(dsp::outline_key_axis(span{194, 150}, span{193, 141}, 140, false), 204, 140));
+        is_span(dsp::outline_key_axis(span{194, 150}, span{193, 141}, 140, false), 203, 141));
+    EXPECT_TRUE(
+        is_span(dsp::outline_key_axis(span{194, 150}, span{193, 141}, 145, false), 199, 145));
     // Towards the start.
     EXPECT_TRUE(
         is_span(dsp::outline_key_axis(span{180, 150}, span{190, 140}, 140, false), 180, 140));
-    // Equally far on both sides: centred in the hull [100, 164).
-    EXPECT_TRUE(is_span(dsp::outline_key_axis(span{100, 64}, span{102, 60}, 60, false), 102, 60));
+    // Equally far on both sides: the key's box was 2 px short on each; the
+    // hull [100, 164).
+    EXPECT_TRUE(is_span(dsp::outline_key_axis(span{100, 64}, span{102, 60}, 60, false), 100, 64));
+    // Past it by 6 px ahead and 2 behind: 4 px more than the key's box, at the
+    // leading end of the hull [98, 166).
+    EXPECT_TRUE(is_span(dsp::outline_key_axis(span{98, 68}, span{100, 60}, 60, false), 102, 64));
     // A part inside the key's box (a leading crescent 41 px of 129): the key's box.
     EXPECT_TRUE(
         is_span(dsp::outline_key_axis(span{289, 41}, span{201, 129}, 129, false), 201, 129));
