@@ -518,9 +518,11 @@ INSTANTIATE_TEST_SUITE_P(
 // texture outruns them (about y, x and z; one circling), on sizes, rates
 // and backgrounds no case had, written and committed disabled after a key's
 // box short on both sides was grown (dsp/box_refit.h, outline_key_axis) and
-// before any run: to be run once on it and once on the firmware before it.
+// before any run, run once on it and once on the firmware before it: 8 of 8
+// pass on both; the rule moved four means nearer (0.91 -> 0.75, 0.46 ->
+// 0.43, 1.08 -> 0.90, 1.17 -> 1.16 px) and one further (0.58 -> 0.64 px).
 INSTANTIATE_TEST_SUITE_P(
-    DISABLED_HeldOutSlow14, BoxOnMotion,
+    HeldOutSlow14, BoxOnMotion,
     ::testing::Values(motion_case{"heldout14_spin175px_1pxpf_2_5rps_y_cones", 175, 2.2, pass, 0.2,
                                   2.5, 'y', photo, 30},
                       motion_case{"heldout14_spin155px_1pxpf_1_8rps_y_kodim23", 155, 2.4, pass, 0.2,
