@@ -35,6 +35,11 @@ span follow_axis(span previous, span both, int size) {
     return span{(centre2 - size) >> 1, size};  // floor, also below 0
 }
 
+span held_axis(span both, span last, int size) {
+    const int start = max_int(min_int(last.start, both.start), both.end() - size);
+    return span{start, size};
+}
+
 bool is_part(span both, span last) {
     return 2 * both.size < last.size;
 }
@@ -58,6 +63,12 @@ bool difference_shift(span both, span key, int* shift) {
 
 int key_reach(span both, span key) {
     return max_int(both.end() - key.end(), key.start - both.start);
+}
+
+int bounded_shift(span both, span key, int shift, bool* bounded) {
+    const int limit = max_int(0, both.size - key.size) + 1;
+    *bounded = shift > limit || shift < -limit;
+    return max_int(-limit, min_int(limit, shift));
 }
 
 span outline_key_axis(span both, span key, int size, bool across) {

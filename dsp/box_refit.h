@@ -42,6 +42,14 @@ span previous_axis(span before, span after, int size);
 // object(t) is centred in `both`.
 span follow_axis(span previous, span both, int size);
 
+// object(t) on an axis where Dif(t-1,t)'s extent `both` is shorter than the
+// object (`size`): the last box `last` moved only as far as it must to hold
+// `both`. Such a difference holds the parts that changed, not the rim: on a
+// slow ball lit from above (140 px spinning 1 rev/s about z at 1 px per
+// frame) Dif(t-1,t) was 110-120 px high, its bottom within 3 px of the
+// ball's and its top 17-27 px short; centred in it the box stood 8 px low.
+span held_axis(span both, span last, int size);
+
 // Dif(t-1,t)'s extent `both` under half the last box `last` on an axis: a
 // part of the object, not its outline (a slow ball whose other parts change
 // too little: at 1 px per frame a 130 px ball spinning about x over "cones"
@@ -80,6 +88,14 @@ bool difference_shift(span both, span key, int* shift);
 
 // How far `both` reaches past the key's box on its further side.
 int key_reach(span both, span key);
+// The displacement since the key `shift` on one axis, at most Dif(key, t)'s
+// extent `both` less the key's box `key` in size, + 1 px: that extent holds
+// object(key) and object(t), so it is larger than the object by the motion.
+// A pattern that follows a turning texture reads more (a 140 px ball moving
+// 1 px a pair along x, spinning 0.5 rev/s about x: 7-8 px down for a ball
+// that had not moved in y, its Dif(key, t) 2 px higher than the key's box).
+// `bounded` is set when `shift` was more.
+int bounded_shift(span both, span key, int shift, bool* bounded);
 // object(t) on one axis for a key whose pattern does not follow its object
 // (a texture that outruns it: a 140 px ball at 1 px per frame spinning
 // 1 rev/s about y had its SAD pattern found 7 px a pair off a silhouette that

@@ -116,6 +116,12 @@ box intersection(box a, box b) {
     return box{x0, y0, x1 - x0, y1 - y0};
 }
 
+// object(t) on one axis: from Dif(t-1,t)'s extent where it holds the object,
+// else the last box's place holding it (dsp/box_refit.h, held_axis).
+span object_axis(span previous, span both, span last, int size) {
+    return both.size < size ? held_axis(both, last, size) : follow_axis(previous, both, size);
+}
+
 bool near_size(int measured, int size, int tolerance) {
     return measured >= size - tolerance && measured <= size + tolerance;
 }
@@ -261,7 +267,8 @@ struct controller::impl {
     bool search_key(uint64_t* cycles, sdram_traffic* traffic);
     block_group keyed_extent(uint64_t* cycles, sdram_traffic* traffic);
     bool keyed_object(const block_group& u, int dx, int dy, bool of_part, box* object) const;
-    bool key_displacement(const block_group& u, bool matched, int* dx, int* dy);
+    bool key_displacement(const block_group& u, bool matched, int* dx, int* dy, bool* bounded_x,
+                          bool* bounded_y);
     bool at_border(box b) const {
         const int border = config.detect.close_passes + 1;
         return b.x <= border || b.y <= border || b.right() >= width - border ||
@@ -764,9 +771,12 @@ bool controller::impl::keyed_object(const block_group& u, int dx, int dy, bool o
 // difference's. An axis where Dif(key, t) reached past the key's box further
 // than a slow object could have moved by then (max_step px a pair, +1) is
 // one the key's box did not outline (its texture's silhouette when taken):
-// there, for the key's life, the pattern's. False when the pattern was lost
-// and the difference does not read both axes (the key is of no more use).
-bool controller::impl::key_displacement(const block_group& u, bool matched, int* dx, int* dy) {
+// there, for the key's life, the pattern's. Either at most what Dif(key, t)'s
+// size leaves for a motion (bounded_shift; `bounded_x`/`bounded_y` when it
+// read more: the pattern followed the texture). False when the pattern was
+// lost and the difference does not read both axes (the key is of no more use).
+bool controller::impl::key_displacement(const block_group& u, bool matched, int* dx, int* dy,
+                                        bool* bounded_x, bool* bounded_y) {
     const box k = key.object();
     *dx = key.dx();
     *dy = key.dy();
@@ -777,6 +787,8 @@ bool controller::impl::key_displacement(const block_group& u, bool matched, int*
         key_unfit_y = key_unfit_y || key_reach(y_span(u.bbox), y_span(k)) > reach;
         if (key.turned() && !key_unfit_x) read_x = difference_shift(x_span(u.bbox), x_span(k), dx);
         if (key.turned() && !key_unfit_y) read_y = difference_shift(y_span(u.bbox), y_span(k), dy);
+        *dx = bounded_shift(x_span(u.bbox), x_span(k), *dx, bounded_x);
+        *dy = bounded_shift(y_span(u.bbox), y_span(k), *dy, bounded_y);
     }
     return matched || (read_x && read_y);
 }
@@ -800,17 +812,22 @@ void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
     const box k = key.object();
     const block_group u = keyed_extent(cycles, traffic);
     int dx = 0, dy = 0;
-    if (!key_displacement(u, matched, &dx, &dy)) {
+    bool bounded_x = false, bounded_y = false;
+    if (!key_displacement(u, matched, &dx, &dy, &bounded_x, &bounded_y)) {
         key.drop();
         return;
     }
     box b = shifted(k, dx, dy);
     const int moved = max_int(max_int(dx, -dx), max_int(dy, -dy));
-    // Outlined once the object moved min_shift px; an axis the key's box did
-    // not outline as soon as Dif(key, t) holds that box (the whole outline).
+    // Outlined once the object moved min_shift px; an axis whose pattern read
+    // more than Dif(key, t) leaves room for at once (its extent, not the
+    // pattern, holds the object there); an axis the key's box did not outline
+    // as soon as Dif(key, t) holds that box (the whole outline).
     const bool shifted_enough = moved >= key_frame::min_shift;
-    const bool outline_x = shifted_enough || (key_unfit_x && covers(x_span(u.bbox), x_span(k)));
-    const bool outline_y = shifted_enough || (key_unfit_y && covers(y_span(u.bbox), y_span(k)));
+    const bool outline_x =
+        shifted_enough || bounded_x || (key_unfit_x && covers(x_span(u.bbox), x_span(k)));
+    const bool outline_y =
+        shifted_enough || bounded_y || (key_unfit_y && covers(y_span(u.bbox), y_span(k)));
     box outlined;
     if ((outline_x || outline_y) && keyed_object(u, dx, dy, false, &outlined)) {
         if (outline_x) b = from_spans(x_span(outlined), y_span(b));
@@ -1006,10 +1023,11 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
                       : max_int(p.min_size, min_int(height, previous_y.size));
     const int reach = 2 * p.search_radius;
     if (motion.both.width - w > reach || motion.both.height - h > reach) return false;
-    const box b = from_spans(part_x ? part_axis(x_span(motion.both), x_span(last))
-                                    : follow_axis(previous_x, x_span(motion.both), w),
-                             part_y ? part_axis(y_span(motion.both), y_span(last))
-                                    : follow_axis(previous_y, y_span(motion.both), h));
+    const box b =
+        from_spans(part_x ? part_axis(x_span(motion.both), x_span(last))
+                          : object_axis(previous_x, x_span(motion.both), x_span(last), w),
+                   part_y ? part_axis(y_span(motion.both), y_span(last))
+                          : object_axis(previous_y, y_span(motion.both), y_span(last), h));
     if (at_border(b)) return false;
     *followed = b;
     return true;

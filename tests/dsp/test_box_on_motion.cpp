@@ -305,7 +305,11 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"heldout5_pass100px_1pxpf_photo4", 100, 2.6, pass, 0.2, 0.0, 'x', photo4, 30},
         motion_case{"heldout6_pass110px_1pxpf_tsukuba", 110, 2.6, pass, 0.2, 0.0, 'x', tsukuba, 30},
         motion_case{"heldout6_circle100px_1pxpf_aloe", 100, 2.6, circle, 0.125, 0.0, 'x', aloe, 30},
-        motion_case{"heldout7_pass130px_1_5pxpf_photo4", 130, 2.6, pass, 0.3, 0.0, 'x', photo4,
+        motion_case{"heldout7_pass130px_1_5pxpf_photo4", 130, 2.6, pass, 0.3, 0.0, 'x', photo4, 30},
+        // Round 7's 160 px ball about z over kodim19, open until a box held
+        // where the difference is shorter than the ball and a key's
+        // displacement bounded by Dif(key, t) (dsp/box_refit.h).
+        motion_case{"heldout7_pass160px_1pxpf_1rps_z_photo3", 160, 2.6, pass, 0.2, 1.0, 'z', photo3,
                     30}),
     case_name);
 
@@ -373,7 +377,11 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"spin140px_1pxpf_2rps_y", 140, 2.6, pass, 0.2, 2.0, 'y', procedural, 30},
         motion_case{"spin140px_1pxpf_3rps_y", 140, 2.6, pass, 0.2, 3.0, 'y', procedural, 30},
         motion_case{"spin140px_1pxpf_1rps_x", 140, 2.6, pass, 0.2, 1.0, 'x', procedural, 30},
-        motion_case{"spin140px_1pxpf_0_5rps_y", 140, 2.6, pass, 0.2, 0.5, 'y', procedural, 30}),
+        motion_case{"spin140px_1pxpf_0_5rps_y", 140, 2.6, pass, 0.2, 0.5, 'y', procedural, 30},
+        // Since a box held where the difference is shorter than the ball and
+        // a key's displacement bounded by Dif(key, t) (dsp/box_refit.h,
+        // held_axis, bounded_shift).
+        motion_case{"spin140px_1pxpf_1rps_z", 140, 2.6, pass, 0.2, 1.0, 'z', procedural, 30}),
     case_name);
 
 // Held out, round 9: slow spinning balls on other sizes, rates, paths and
@@ -547,25 +555,20 @@ INSTANTIATE_TEST_SUITE_P(
 // frame over teddy is left behind from its second tracked pair (box 8.9,
 // 13.6, 31.3, 56.1 px off, depth 133 % while on the background). A 100 px
 // ball circling over venus keeps a box 3.5 px left of it (mean 3.53, max
-// 4.13; its right rim never in Dif(key, t)). A 160 px ball spinning at
-// 1 rev/s over kodim19 drifts from its box by up to 13.9 px (the key's
-// pattern found on the turning texture). A 140 px ball thrown spinning at
+// 4.13; its right rim never in Dif(key, t)). A 140 px ball thrown spinning at
 // 3 rev/s over teddy: box max 6.50 px in one pair (mean 1.95; after the
 // bounce the box 10 px narrow for two pairs). Detected too
 // late for 30 frames: an 80 px ball at 0.5 px per frame over kodim19 (no
 // start), an 80 px ball circling over teddy (pair 25: 3 pairs scored).
-// Two slow spinning 140 px balls of the SlowSpinning grid (about x at
-// 0.5 rev/s, about z at 1 rev/s); a 125 px ball at 2 px per frame over
-// venus (round 11, 12.2 px: its first key's box 8 px behind the ball, read
-// as not outlining it).
+// The SlowSpinning grid's 140 px ball about x at 0.5 rev/s (2.33 / 9.75
+// px: between keys); a 125 px ball at 2 px per frame over venus (round 11:
+// its first key's box 8 px behind the ball, read as not outlining it).
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
     ::testing::Values(
         // Box off the object.
         motion_case{"heldout2_pass60px_30pxpf_photo4", 60, 2.2, pass, 6.0, 9.0, 'x', photo4, 14},
         motion_case{"heldout6_circle100px_1pxpf_venus", 100, 2.6, circle, 0.125, 0.0, 'x', venus,
-                    30},
-        motion_case{"heldout7_pass160px_1pxpf_1rps_z_photo3", 160, 2.6, pass, 0.2, 1.0, 'z', photo3,
                     30},
         motion_case{"heldout8_throw140px_3rps_x_photo4", 140, 2.6, thrown, 1.0, 3.0, 'x', photo4,
                     30},
@@ -578,8 +581,7 @@ INSTANTIATE_TEST_SUITE_P(
         // poles.
         motion_case{"heldout11_spin125px_2pxpf_0_5rps_y_venus", 125, 2.6, pass, 0.4, 0.5, 'y',
                     venus, 30},
-        motion_case{"spin140px_1pxpf_0_5rps_x", 140, 2.6, pass, 0.2, 0.5, 'x', procedural, 30},
-        motion_case{"spin140px_1pxpf_1rps_z", 140, 2.6, pass, 0.2, 1.0, 'z', procedural, 30}),
+        motion_case{"spin140px_1pxpf_0_5rps_x", 140, 2.6, pass, 0.2, 0.5, 'x', procedural, 30}),
     case_name);
 
 }  // namespace

@@ -83,6 +83,32 @@ TEST(KeyReach, TheFurtherSidePastTheKeysBox) {
 }
 
 // A key of the outline: the hull of Dif(key, t)'s extent and the key's box.
+TEST(HeldAxis, TheLastBoxMovedOnlyToHoldTheDifference) {
+    // The trace of a 140 px ball about z: the last box y 156..294, Dif(t-1,t)
+    // 172..291 inside it: the last box stands.
+    EXPECT_TRUE(is_span(dsp::held_axis(span{172, 119}, span{156, 138}, 138), 156, 138));
+    // The difference 4 px past its end: moved 4 px towards it.
+    EXPECT_TRUE(is_span(dsp::held_axis(span{180, 118}, span{156, 138}, 138), 160, 138));
+    // 3 px past its start: moved 3 px towards it.
+    EXPECT_TRUE(is_span(dsp::held_axis(span{153, 100}, span{156, 138}, 138), 153, 138));
+}
+
+TEST(BoundedShift, AtMostTheDifferenceLessTheKeysBoxPlusOne) {
+    // The trace of a 140 px ball about x: the pattern read 7 px down, Dif(key,
+    // t) 139 px high for the key's 137: at most 3.
+    bool bounded = false;
+    EXPECT_EQ(dsp::bounded_shift(span{155, 139}, span{163, 137}, 7, &bounded), 3);
+    EXPECT_TRUE(bounded);
+    EXPECT_EQ(dsp::bounded_shift(span{155, 139}, span{163, 137}, -7, &bounded), -3);
+    EXPECT_TRUE(bounded);
+    // Within it: as read.
+    EXPECT_EQ(dsp::bounded_shift(span{100, 150}, span{100, 140}, 10, &bounded), 10);
+    EXPECT_FALSE(bounded);
+    // A difference smaller than the key's box leaves 1 px.
+    EXPECT_EQ(dsp::bounded_shift(span{100, 120}, span{100, 140}, 2, &bounded), 1);
+    EXPECT_TRUE(bounded);
+}
+
 TEST(OutlineKeyAxis, AcrossTheMotionTheHull) {
     // The trace of a 140 px ball about y: the key's box missed 6 px at the
     // top, Dif(key, t) 1 (y 156..293 against the key's 161..292).
