@@ -45,9 +45,9 @@ span follow_axis(span previous, span both, int size);
 // object(t) on an axis where Dif(t-1,t)'s extent `both` is shorter than the
 // object (`size`): the last box `last` moved only as far as it must to hold
 // `both`. Such a difference holds the parts that changed, not the rim: on a
-// slow ball lit from above (140 px spinning 1 rev/s about z at 1 px per
-// frame) Dif(t-1,t) was 110-120 px high, its bottom within 3 px of the
-// ball's and its top 17-27 px short; centred in it the box stood 8 px low.
+// slow ball (140 px spinning 1 rev/s about z at 1 px per frame) Dif(t-1,t)
+// was 110-120 px high, its bottom within 3 px of the ball's and its top
+// 17-27 px short; centred in it the box stood 8 px low.
 span held_axis(span both, span last, int size);
 
 // Dif(t-1,t)'s extent `both` under half the last box `last` on an axis: a

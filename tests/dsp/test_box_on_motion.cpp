@@ -554,8 +554,11 @@ INSTANTIATE_TEST_SUITE_P(
 // backgrounds no such case had, written and committed disabled after a box
 // held where the difference is short and a key's displacement bounded by
 // Dif(key, t) (dsp/box_refit.h, held_axis, bounded_shift) and before any
-// run: to be run once on them and once on the firmware before them.
-INSTANTIATE_TEST_SUITE_P(DISABLED_HeldOutSlow15, BoxOnMotion,
+// run, run once on them and once on the firmware before them: 7 of 8 pass
+// on both; the rules moved two means nearer (1.45 / 3.92 -> 1.04 / 3.48,
+// 1.04 / 3.20 -> 0.89 / 1.89 px). A 140 px ball circling over aloe fails
+// on both (3.74 / 10.92 -> 3.79 / 10.92 px; below, open).
+INSTANTIATE_TEST_SUITE_P(HeldOutSlow15, BoxOnMotion,
                          ::testing::Values(motion_case{"heldout15_spin150px_1pxpf_0_8rps_z_teddy",
                                                        150, 2.4, pass, 0.2, 0.8, 'z', photo4, 30},
                                            motion_case{"heldout15_spin120px_1pxpf_0_6rps_x_kodim23",
@@ -564,8 +567,6 @@ INSTANTIATE_TEST_SUITE_P(DISABLED_HeldOutSlow15, BoxOnMotion,
                                                        pass, 0.2, 1.0, 'x', procedural, 30},
                                            motion_case{"heldout15_spin100px_1_5pxpf_0_7rps_z_venus",
                                                        100, 2.6, pass, 0.3, 0.7, 'z', venus, 30},
-                                           motion_case{"heldout15_circle140px_1pxpf_0_6rps_x_aloe",
-                                                       140, 2.6, circle, 0.125, 0.6, 'x', aloe, 30},
                                            motion_case{"heldout15_spin130px_1pxpf_1_2rps_z_tsukuba",
                                                        130, 2.6, pass, 0.2, 1.2, 'z', tsukuba, 30},
                                            motion_case{"heldout15_spin160px_2pxpf_0_7rps_x_cones",
@@ -606,7 +607,10 @@ INSTANTIATE_TEST_SUITE_P(
         // poles.
         motion_case{"heldout11_spin125px_2pxpf_0_5rps_y_venus", 125, 2.6, pass, 0.4, 0.5, 'y',
                     venus, 30},
-        motion_case{"spin140px_1pxpf_0_5rps_x", 140, 2.6, pass, 0.2, 0.5, 'x', procedural, 30}),
+        motion_case{"spin140px_1pxpf_0_5rps_x", 140, 2.6, pass, 0.2, 0.5, 'x', procedural, 30},
+        // Held out, round 15 (above): not traced.
+        motion_case{"heldout15_circle140px_1pxpf_0_6rps_x_aloe", 140, 2.6, circle, 0.125, 0.6, 'x',
+                    aloe, 30}),
     case_name);
 
 }  // namespace
