@@ -88,6 +88,7 @@ bool difference_shift(span both, span key, int* shift);
 
 // How far `both` reaches past the key's box on its further side.
 int key_reach(span both, span key);
+
 // The displacement since the key `shift` on one axis, at most Dif(key, t)'s
 // extent `both` less the key's box `key` in size, + 1 px: that extent holds
 // object(key) and object(t), so it is larger than the object by the motion.
@@ -96,6 +97,7 @@ int key_reach(span both, span key);
 // that had not moved in y, its Dif(key, t) 2 px higher than the key's box).
 // `bounded` is set when `shift` was more.
 int bounded_shift(span both, span key, int shift, bool* bounded);
+
 // object(t) on one axis for a key whose pattern does not follow its object
 // (a texture that outruns it: a 140 px ball at 1 px per frame spinning
 // 1 rev/s about y had its SAD pattern found 7 px a pair off a silhouette that
