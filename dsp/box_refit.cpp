@@ -21,10 +21,12 @@ span previous_axis(span before, span after, int size) {
     return span{start, max_int(0, min_int(before.end(), after.end()) - start)};
 }
 
-span follow_axis(span previous, span both, int size) {
+span follow_axis(span previous, span both, span last, int size) {
+    if (both.size < size)
+        return span{max_int(min_int(last.start, both.start), both.end() - size), size};
     const int past_end = both.end() - previous.end();
     const int past_start = previous.start - both.start;
-    const int motion = max_int(0, both.size - size);
+    const int motion = both.size - size;
     // Centres in Q1 as start + end (twice the centre, pixel edges).
     int centre2 = both.start + both.end();
     if (past_end > past_start) {
@@ -33,11 +35,6 @@ span follow_axis(span previous, span both, int size) {
         centre2 -= motion;
     }
     return span{(centre2 - size) >> 1, size};  // floor, also below 0
-}
-
-span held_axis(span both, span last, int size) {
-    const int start = max_int(min_int(last.start, both.start), both.end() - size);
-    return span{start, size};
 }
 
 bool is_part(span both, span last) {

@@ -35,20 +35,17 @@ struct span {
 // Edges within 1 px count as shared.
 span previous_axis(span before, span after, int size);
 
-// object(t) on one axis, `size` wide, from object(t-1)'s extent `previous`
-// and Dif(t-1,t)'s extent `both`. The object moved towards the side where
-// `both` reaches further past `previous`; by |both| - size (the motion along
-// the axis, 0 if `both` is narrower than the object). With no side further,
-// object(t) is centred in `both`.
-span follow_axis(span previous, span both, int size);
-
-// object(t) on an axis where Dif(t-1,t)'s extent `both` is shorter than the
-// object (`size`): the last box `last` moved only as far as it must to hold
-// `both`. Such a difference holds the parts that changed, not the rim: on a
-// slow ball (140 px spinning 1 rev/s about z at 1 px per frame) Dif(t-1,t)
-// was 110-120 px high, its bottom within 3 px of the ball's and its top
-// 17-27 px short; centred in it the box stood 8 px low.
-span held_axis(span both, span last, int size);
+// object(t) on one axis, `size` wide, from object(t-1)'s extent `previous`,
+// Dif(t-1,t)'s extent `both` and the last box `last`. The object moved
+// towards the side where `both` reaches further past `previous`, by
+// |both| - size (the motion along the axis). With no side further, object(t)
+// is centred in `both`. Where `both` is narrower than the object, the last
+// box moved only as far as it must to hold `both`: such a difference holds
+// the parts that changed, not the rim (on a slow ball, 140 px spinning
+// 1 rev/s about z at 1 px per frame, Dif(t-1,t) was 110-120 px high, its
+// bottom within 3 px of the ball's and its top 17-27 px short; centred in it
+// the box stood 8 px low).
+span follow_axis(span previous, span both, span last, int size);
 
 // Dif(t-1,t)'s extent `both` under half the last box `last` on an axis: a
 // part of the object, not its outline (a slow ball whose other parts change

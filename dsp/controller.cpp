@@ -116,12 +116,6 @@ box intersection(box a, box b) {
     return box{x0, y0, x1 - x0, y1 - y0};
 }
 
-// object(t) on one axis: from Dif(t-1,t)'s extent where it holds the object,
-// else the last box's place holding it (dsp/box_refit.h, held_axis).
-span object_axis(span previous, span both, span last, int size) {
-    return both.size < size ? held_axis(both, last, size) : follow_axis(previous, both, size);
-}
-
 bool near_size(int measured, int size, int tolerance) {
     return measured >= size - tolerance && measured <= size + tolerance;
 }
@@ -1025,9 +1019,9 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
     if (motion.both.width - w > reach || motion.both.height - h > reach) return false;
     const box b =
         from_spans(part_x ? part_axis(x_span(motion.both), x_span(last))
-                          : object_axis(previous_x, x_span(motion.both), x_span(last), w),
+                          : follow_axis(previous_x, x_span(motion.both), x_span(last), w),
                    part_y ? part_axis(y_span(motion.both), y_span(last))
-                          : object_axis(previous_y, y_span(motion.both), y_span(last), h));
+                          : follow_axis(previous_y, y_span(motion.both), y_span(last), h));
     if (at_border(b)) return false;
     *followed = b;
     return true;

@@ -380,7 +380,7 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"spin140px_1pxpf_0_5rps_y", 140, 2.6, pass, 0.2, 0.5, 'y', procedural, 30},
         // Since a box held where the difference is shorter than the ball and
         // a key's displacement bounded by Dif(key, t) (dsp/box_refit.h,
-        // held_axis, bounded_shift).
+        // follow_axis, bounded_shift).
         motion_case{"spin140px_1pxpf_1rps_z", 140, 2.6, pass, 0.2, 1.0, 'z', procedural, 30}),
     case_name);
 
@@ -553,7 +553,7 @@ INSTANTIATE_TEST_SUITE_P(
 // across the motion or in the image plane) at 0.5-1.2 rev/s, on sizes and
 // backgrounds no such case had, written and committed disabled after a box
 // held where the difference is short and a key's displacement bounded by
-// Dif(key, t) (dsp/box_refit.h, held_axis, bounded_shift) and before any
+// Dif(key, t) (dsp/box_refit.h, follow_axis, bounded_shift) and before any
 // run, run once on them and once on the firmware before them: 7 of 8 pass
 // on both; the rules moved two means nearer (1.45 / 3.92 -> 1.04 / 3.48,
 // 1.04 / 3.20 -> 0.89 / 1.89 px). A 140 px ball circling over aloe fails

@@ -20,20 +20,22 @@ using dsp::span;
 
 TEST(FollowAxis, ObjectTEndsWhereTheDifferenceReachesPastObjectTMinus1) {
     // object(t-1) [100, 160); Dif(t-1,t) [100, 180): moved 20 px towards the end.
-    EXPECT_TRUE(is_span(dsp::follow_axis(span{100, 60}, span{100, 80}, 60), 120, 60));
+    EXPECT_TRUE(
+        is_span(dsp::follow_axis(span{100, 60}, span{100, 80}, span{100, 60}, 60), 120, 60));
     // Dif(t-1,t) [75, 160): moved 25 px towards the start.
-    EXPECT_TRUE(is_span(dsp::follow_axis(span{100, 60}, span{75, 85}, 60), 75, 60));
+    EXPECT_TRUE(is_span(dsp::follow_axis(span{100, 60}, span{75, 85}, span{100, 60}, 60), 75, 60));
     // A 10 px object 30 px further on, apart from where it was: [100, 110)
     // and [130, 140) joined as [100, 140).
-    EXPECT_TRUE(is_span(dsp::follow_axis(span{100, 10}, span{100, 40}, 10), 130, 10));
+    EXPECT_TRUE(
+        is_span(dsp::follow_axis(span{100, 10}, span{100, 40}, span{100, 10}, 10), 130, 10));
 }
 
 TEST(FollowAxis, NoSideFurtherIsTheCentreOfTheDifference) {
-    EXPECT_TRUE(is_span(dsp::follow_axis(span{100, 60}, span{100, 60}, 60), 100, 60));
-    // Dif(t-1,t) [101, 159) narrower than the object: no motion, centred.
-    EXPECT_TRUE(is_span(dsp::follow_axis(span{100, 60}, span{101, 58}, 60), 100, 60));
+    EXPECT_TRUE(
+        is_span(dsp::follow_axis(span{100, 60}, span{100, 60}, span{100, 60}, 60), 100, 60));
     // An odd excess: centre2 = 100 + 161 = 261 -> start floor((261 - 60) / 2) = 100.
-    EXPECT_TRUE(is_span(dsp::follow_axis(span{100, 61}, span{100, 61}, 60), 100, 60));
+    EXPECT_TRUE(
+        is_span(dsp::follow_axis(span{100, 61}, span{100, 61}, span{100, 60}, 60), 100, 60));
 }
 
 // The extents traced on a 130 px ball at 1 px per frame spinning about x
@@ -83,14 +85,20 @@ TEST(KeyReach, TheFurtherSidePastTheKeysBox) {
 }
 
 // A key of the outline: the hull of Dif(key, t)'s extent and the key's box.
-TEST(HeldAxis, TheLastBoxMovedOnlyToHoldTheDifference) {
+TEST(FollowAxis, NarrowerThanTheObjectTheLastBoxMovedOnlyToHoldIt) {
     // The trace of a 140 px ball about z: the last box y 156..294, Dif(t-1,t)
-    // 172..291 inside it: the last box stands.
-    EXPECT_TRUE(is_span(dsp::held_axis(span{172, 119}, span{156, 138}, 138), 156, 138));
+    // 172..291 inside it (object(t-1) 181..291): the last box stands.
+    EXPECT_TRUE(
+        is_span(dsp::follow_axis(span{181, 110}, span{172, 119}, span{156, 138}, 138), 156, 138));
     // The difference 4 px past its end: moved 4 px towards it.
-    EXPECT_TRUE(is_span(dsp::held_axis(span{180, 118}, span{156, 138}, 138), 160, 138));
+    EXPECT_TRUE(
+        is_span(dsp::follow_axis(span{181, 110}, span{180, 118}, span{156, 138}, 138), 160, 138));
     // 3 px past its start: moved 3 px towards it.
-    EXPECT_TRUE(is_span(dsp::held_axis(span{153, 100}, span{156, 138}, 138), 153, 138));
+    EXPECT_TRUE(
+        is_span(dsp::follow_axis(span{160, 90}, span{153, 100}, span{156, 138}, 138), 153, 138));
+    // Dif(t-1,t) [101, 159) inside the last box [100, 160): no motion.
+    EXPECT_TRUE(
+        is_span(dsp::follow_axis(span{100, 60}, span{101, 58}, span{100, 60}, 60), 100, 60));
 }
 
 TEST(BoundedShift, AtMostTheDifferenceLessTheKeysBoxPlusOne) {
@@ -158,9 +166,9 @@ TEST(PreviousAxis, OneSharedEdgeIsAReversalAndObjectTMinus1IsSizeFromIt) {
     // The same at the start: Dif(t-2,t-1) [100, 170), Dif(t-1,t) [100, 185).
     EXPECT_TRUE(is_span(dsp::previous_axis(span{100, 70}, span{100, 85}, 60), 100, 60));
     // Then object(t) follows from it: Dif(t-1,t) reaches 25 px past its start.
-    EXPECT_TRUE(is_span(
-        dsp::follow_axis(dsp::previous_axis(span{90, 70}, span{75, 85}, 60), span{75, 85}, 60), 75,
-        60));
+    EXPECT_TRUE(is_span(dsp::follow_axis(dsp::previous_axis(span{90, 70}, span{75, 85}, 60),
+                                         span{75, 85}, span{100, 60}, 60),
+                        75, 60));
 }
 
 TEST(StepSize, AtMostAnEighthOfTheLargerSizePerFrame) {
