@@ -64,7 +64,10 @@ int key_reach(span both, span key) {
 
 int bounded_shift(span both, span key, int shift, bool* bounded) {
     const int limit = max_int(0, both.size - key.size) + 1;
-    *bounded = shift > limit || shift < -limit;
+    // A part of the outline (Dif(key, t) short of the key's box, as at a
+    // key's first pair) bounds the shift but cannot stand for the object.
+    const bool whole = both.size + 2 >= key.size;
+    *bounded = whole && (shift > limit || shift < -limit);
     return max_int(-limit, min_int(limit, shift));
 }
 

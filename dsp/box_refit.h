@@ -92,7 +92,11 @@ int key_reach(span both, span key);
 // A pattern that follows a turning texture reads more (a 140 px ball moving
 // 1 px a pair along x, spinning 0.5 rev/s about x: 7-8 px down for a ball
 // that had not moved in y, its Dif(key, t) 2 px higher than the key's box).
-// `bounded` is set when `shift` was more.
+// `bounded` is set when `shift` was more and `both` is at least the key's box
+// less 2 px (the whole outline; the key's box may be 2 px wide of it): the
+// caller then takes that axis from `both`. A shorter extent is a part (a
+// key's first pair, Dif(key, t) = Dif(t-1, t): 116 px high for a 140 px
+// ball, whose box shrank to it, 9.6 px off).
 int bounded_shift(span both, span key, int shift, bool* bounded);
 
 // object(t) on one axis for a key whose pattern does not follow its object

@@ -112,9 +112,16 @@ TEST(BoundedShift, AtMostTheDifferenceLessTheKeysBoxPlusOne) {
     // Within it: as read.
     EXPECT_EQ(dsp::bounded_shift(span{100, 150}, span{100, 140}, 10, &bounded), 10);
     EXPECT_FALSE(bounded);
-    // A difference smaller than the key's box leaves 1 px.
-    EXPECT_EQ(dsp::bounded_shift(span{100, 120}, span{100, 140}, 2, &bounded), 1);
+    // A difference smaller than the key's box leaves 1 px; being a part of
+    // the outline (the trace's first pair after a key: 116 px high for the
+    // key's 128), it does not stand for the object.
+    EXPECT_EQ(dsp::bounded_shift(span{176, 116}, span{164, 128}, 2, &bounded), 1);
+    EXPECT_FALSE(bounded);
+    // The key's box at most 2 px wider than the extent: still the outline.
+    EXPECT_EQ(dsp::bounded_shift(span{100, 138}, span{100, 140}, 3, &bounded), 1);
     EXPECT_TRUE(bounded);
+    EXPECT_EQ(dsp::bounded_shift(span{100, 137}, span{100, 140}, 3, &bounded), 1);
+    EXPECT_FALSE(bounded);
 }
 
 TEST(OutlineKeyAxis, AcrossTheMotionTheHull) {
