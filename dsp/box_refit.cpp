@@ -1,5 +1,7 @@
 #include "dsp/box_refit.h"
 
+#include "dsp/key_frame.h"
+
 namespace dsp {
 namespace {
 
@@ -60,6 +62,25 @@ bool difference_shift(span both, span key, int* shift) {
 
 int key_reach(span both, span key) {
     return max_int(both.end() - key.end(), key.start - both.start);
+}
+
+bool contradicted_shift(span both, span key, int most, int* shift) {
+    int read = 0;
+    if (both.size + 2 < key.size || !difference_shift(both, key, &read)) return false;
+    if (read > most || read < -most) return false;
+    if (read - *shift <= key_frame::max_step && *shift - read <= key_frame::max_step) return false;
+    *shift = read;
+    return true;
+}
+
+bool first_extent_shift(span both, span* first, int most, int* shift) {
+    int read = 0;
+    if (difference_shift(both, *first, &read) && read <= most && read >= -most) {
+        *shift = read;
+        return true;
+    }
+    *first = both;
+    return false;
 }
 
 int bounded_shift(span both, span key, int shift, bool* bounded) {

@@ -86,6 +86,29 @@ bool difference_shift(span both, span key, int* shift);
 // How far `both` reaches past the key's box on its further side.
 int key_reach(span both, span key);
 
+// A key's pattern the difference contradicts: where Dif(key, t)'s extent
+// `both` holds the key's box `key` (within 2 px) and reads a displacement
+// (difference_shift) of at most `most` px that differs from the pattern's
+// `shift` by more than key_frame::max_step, `shift` becomes the difference's.
+// A texture that turns against its ball can still match within the turned
+// rule: a 125 px ball at 2 px per frame spinning 0.5 rev/s about y, its
+// key's pattern read -1, -3, -4 px in its first pairs while Dif(key, t)
+// reached 2, 4, 7 px past the key's box on the side it went, none on the
+// other.
+bool contradicted_shift(span both, span key, int most, int* shift);
+
+// The displacement on an axis the key's box did not outline, read against
+// `first`, Dif(key, t)'s extent at the key's first pair: that spans
+// object(key) and the next object, so its trailing end stays while the
+// leading end moves with the object (difference_shift with `first` for the
+// key's box). True and `shift` set when that reads at most `most` px;
+// otherwise `first` was a part (the extent since grew past it further than
+// the object could move, or on both sides) and becomes `both`. Traced: a
+// 140 px ball circling upwards at 1 px per frame, spinning 0.6 rev/s about
+// x, its key's box 4 px low; the pattern read the texture 1-3 px down while
+// Dif(key, t)'s top went from y 162 to 156 over 8 pairs, its bottom at 305.
+bool first_extent_shift(span both, span* first, int most, int* shift);
+
 // The displacement since the key `shift` on one axis, at most Dif(key, t)'s
 // extent `both` less the key's box `key` in size, + 1 px: that extent holds
 // object(key) and object(t), so it is larger than the object by the motion.

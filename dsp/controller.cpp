@@ -205,7 +205,14 @@ struct controller::impl {
     key_frame key;                // a slow object's older frame (dsp/key_frame.h), SDRAM
     bool slow_candidate = false;  // DETECT: a slow object's key, waiting for its outline
     int candidate_pairs = 0;      // pairs the candidate has waited
-    bool key_unfit_x = false, key_unfit_y = false;  // the key's box did not outline the object
+    // What Dif(key, t) has said of the key's box on one axis (key_axis_shift).
+    struct key_axis {
+        bool unfit = false;      // the key's box did not outline the object there
+        bool has_first = false;  // `first` holds the object's outline there
+        span first;              // Dif(key, t)'s extent at the key's first pair (or since)
+    };
+    key_axis key_x, key_y;
+    bool key_first_seen = false;   // Dif(key, t) found since the key was taken
     char outline_key_across = 0;   // a key of the outline: 'x' or 'y' across the motion, 0 unknown
     bool box_may_be_part = false;  // a detection's box no silhouette of its size has confirmed
 
@@ -261,8 +268,14 @@ struct controller::impl {
     bool search_key(uint64_t* cycles, sdram_traffic* traffic);
     block_group keyed_extent(uint64_t* cycles, sdram_traffic* traffic);
     bool keyed_object(const block_group& u, int dx, int dy, bool of_part, box* object) const;
-    bool key_displacement(const block_group& u, bool matched, int* dx, int* dy, bool* bounded_x,
-                          bool* bounded_y);
+    // The displacement since the key, and the axes to take from Dif(key, t) now.
+    struct key_reading {
+        int dx = 0, dy = 0;
+        bool outline_x = false, outline_y = false;
+    };
+    bool key_displacement(const block_group& u, bool matched, key_reading* r);
+    bool key_axis_shift(key_axis& axis, span both, span key_box, bool first_pair, int* shift,
+                        bool* outline);
     bool at_border(box b) const {
         const int border = config.detect.close_passes + 1;
         return b.x <= border || b.y <= border || b.right() >= width - border ||
@@ -710,7 +723,8 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
 // (take_key: the key at the tracker's box, its region's copy charged.)
 void controller::impl::take_key(uint64_t* cycles, sdram_traffic* traffic, int grow) {
     key.take(history(0), tracker.position(), tracker.pattern_box(), grow);
-    key_unfit_x = key_unfit_y = false;
+    key_x = key_y = key_axis{};
+    key_first_seen = false;
     const box r = key.region();
     *cycles += cycles_of(cost::pattern_copy_profile(r.width, r.height));
     traffic->bytes_written += static_cast<uint64_t>(r.width) * r.height;
@@ -760,31 +774,55 @@ bool controller::impl::keyed_object(const block_group& u, int dx, int dy, bool o
     return true;
 }
 
-// The displacement since the key (dx, dy): the pattern's, or, on an axis
-// where Dif(key, t) reads one (difference_shift) and the pattern turned, the
-// difference's. An axis where Dif(key, t) reached past the key's box further
-// than a slow object could have moved by then (max_step px a pair, +1) is
-// one the key's box did not outline (its texture's silhouette when taken):
-// there, for the key's life, the pattern's. Either at most what Dif(key, t)'s
-// size leaves for a motion (bounded_shift; `bounded_x`/`bounded_y` when it
-// read more: the pattern followed the texture). False when the pattern was
+// The displacement since the key (dx, dy): the pattern's, or on each axis
+// what Dif(key, t) reads instead (key_axis_shift). False when the pattern was
 // lost and the difference does not read both axes (the key is of no more use).
-bool controller::impl::key_displacement(const block_group& u, bool matched, int* dx, int* dy,
-                                        bool* bounded_x, bool* bounded_y) {
+bool controller::impl::key_displacement(const block_group& u, bool matched, key_reading* r) {
     const box k = key.object();
-    *dx = key.dx();
-    *dy = key.dy();
-    bool read_x = false, read_y = false;
-    if (u.found) {
-        const int reach = key_frame::max_step * key.pairs() + 1;
-        key_unfit_x = key_unfit_x || key_reach(x_span(u.bbox), x_span(k)) > reach;
-        key_unfit_y = key_unfit_y || key_reach(y_span(u.bbox), y_span(k)) > reach;
-        if (key.turned() && !key_unfit_x) read_x = difference_shift(x_span(u.bbox), x_span(k), dx);
-        if (key.turned() && !key_unfit_y) read_y = difference_shift(y_span(u.bbox), y_span(k), dy);
-        *dx = bounded_shift(x_span(u.bbox), x_span(k), *dx, bounded_x);
-        *dy = bounded_shift(y_span(u.bbox), y_span(k), *dy, bounded_y);
-    }
+    r->dx = key.dx();
+    r->dy = key.dy();
+    if (!u.found) return matched;
+    const bool first_pair = !key_first_seen;
+    key_first_seen = true;
+    const bool read_x =
+        key_axis_shift(key_x, x_span(u.bbox), x_span(k), first_pair, &r->dx, &r->outline_x);
+    const bool read_y =
+        key_axis_shift(key_y, y_span(u.bbox), y_span(k), first_pair, &r->dy, &r->outline_y);
     return matched || (read_x && read_y);
+}
+
+// One axis, from Dif(key, t)'s extent `both`. Where it reached past the key's
+// box further than a slow object could have moved by then (max_step px a
+// pair, + 1), the key's box did not outline the object there (its texture's
+// silhouette when taken): for the key's life the displacement is read
+// against the extent's first reading (first_extent_shift), that axis then
+// outlined from Dif(key, t), and without one stays the pattern's. Elsewhere
+// a turned pattern's is the difference's (difference_shift), and a pattern
+// the difference contradicts gives way to it (contradicted_shift). Either
+// at most what Dif(key, t)'s size leaves for a motion (bounded_shift: where
+// the pattern read more, the axis is outlined from Dif(key, t)). True when
+// the difference read the displacement.
+bool controller::impl::key_axis_shift(key_axis& axis, span both, span key_box, bool first_pair,
+                                      int* shift, bool* outline) {
+    const int reach = key_frame::max_step * key.pairs() + 1;
+    axis.unfit = axis.unfit || key_reach(both, key_box) > reach;
+    if (first_pair) {
+        axis.has_first = both.size + 2 >= key_box.size;  // not a part of the outline
+        axis.first = both;
+    }
+    bool read = false;
+    if (axis.unfit) {
+        read = axis.has_first &&
+               first_extent_shift(both, &axis.first, reach - key_frame::max_step, shift);
+    } else if (key.turned()) {
+        read = difference_shift(both, key_box, shift);
+    } else {
+        read = contradicted_shift(both, key_box, reach, shift);
+    }
+    bool bounded = false;
+    *shift = bounded_shift(both, key_box, *shift, &bounded);
+    *outline = (axis.unfit && read) || bounded;
+    return read;
 }
 
 void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
@@ -805,23 +843,23 @@ void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
     }
     const box k = key.object();
     const block_group u = keyed_extent(cycles, traffic);
-    int dx = 0, dy = 0;
-    bool bounded_x = false, bounded_y = false;
-    if (!key_displacement(u, matched, &dx, &dy, &bounded_x, &bounded_y)) {
+    key_reading r;
+    if (!key_displacement(u, matched, &r)) {
         key.drop();
         return;
     }
+    const int dx = r.dx, dy = r.dy;
     box b = shifted(k, dx, dy);
     const int moved = max_int(max_int(dx, -dx), max_int(dy, -dy));
-    // Outlined once the object moved min_shift px; an axis whose pattern read
-    // more than Dif(key, t) leaves room for at once (its extent, not the
-    // pattern, holds the object there); an axis the key's box did not outline
-    // as soon as Dif(key, t) holds that box (the whole outline).
+    // Outlined once the object moved min_shift px; an axis key_axis_shift
+    // says to at once (its extent, not the pattern, holds the object there);
+    // an axis the key's box did not outline as soon as Dif(key, t) holds that
+    // box (the whole outline).
     const bool shifted_enough = moved >= key_frame::min_shift;
     const bool outline_x =
-        shifted_enough || bounded_x || (key_unfit_x && covers(x_span(u.bbox), x_span(k)));
+        shifted_enough || r.outline_x || (key_x.unfit && covers(x_span(u.bbox), x_span(k)));
     const bool outline_y =
-        shifted_enough || bounded_y || (key_unfit_y && covers(y_span(u.bbox), y_span(k)));
+        shifted_enough || r.outline_y || (key_y.unfit && covers(y_span(u.bbox), y_span(k)));
     box outlined;
     if ((outline_x || outline_y) && keyed_object(u, dx, dy, false, &outlined)) {
         if (outline_x) b = from_spans(x_span(outlined), y_span(b));

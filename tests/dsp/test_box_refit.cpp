@@ -124,6 +124,57 @@ TEST(BoundedShift, AtMostTheDifferenceLessTheKeysBoxPlusOne) {
     EXPECT_FALSE(bounded);
 }
 
+TEST(ContradictedShift, TheDifferenceWhereItReadsMoreThanAStepOtherwise) {
+    // The trace of a 125 px ball about y (x axis, key's box 230..356): the
+    // pattern read -1, -3, -4 while Dif(key, t) reached 2, 4, 7 px past the
+    // key's box on the right, none on the left.
+    int shift = -1;
+    EXPECT_TRUE(dsp::contradicted_shift(span{230, 128}, span{230, 126}, 3, &shift));
+    EXPECT_EQ(shift, 2);
+    shift = -3;
+    EXPECT_TRUE(dsp::contradicted_shift(span{230, 130}, span{230, 126}, 5, &shift));
+    EXPECT_EQ(shift, 4);
+    shift = -4;
+    EXPECT_TRUE(dsp::contradicted_shift(span{230, 133}, span{230, 126}, 7, &shift));
+    EXPECT_EQ(shift, 7);
+    // Within a step of the pattern's: the pattern's stands.
+    shift = 5;
+    EXPECT_FALSE(dsp::contradicted_shift(span{230, 133}, span{230, 126}, 7, &shift));
+    EXPECT_EQ(shift, 5);
+    // More than a slow object could have moved by then: not read.
+    shift = 0;
+    EXPECT_FALSE(dsp::contradicted_shift(span{230, 133}, span{230, 126}, 5, &shift));
+    EXPECT_EQ(shift, 0);
+    // A part of the outline (the 80 px ball's first pair: 66 px high for the
+    // key's 76) or an extent past the key's box on both sides: not read.
+    EXPECT_FALSE(dsp::contradicted_shift(span{200, 66}, span{185, 76}, 3, &shift));
+    EXPECT_FALSE(dsp::contradicted_shift(span{180, 90}, span{185, 76}, 15, &shift));
+    EXPECT_EQ(shift, 0);
+}
+
+TEST(FirstExtentShift, AgainstTheFirstReadingElseItIsReplaced) {
+    // The trace of a 140 px ball circling upwards over aloe (y axis): the
+    // first extent 162..305, eight pairs later 156..305: 6 px up.
+    dsp::span first{162, 143};
+    int shift = 3;  // the pattern's, following the texture down
+    EXPECT_TRUE(dsp::first_extent_shift(span{156, 149}, &first, 15, &shift));
+    EXPECT_EQ(shift, -6);
+    EXPECT_TRUE(is_span(first, 162, 143));
+    // The trace of a 110 px ball passing along x (y axis): the first extent
+    // 183..281 was a part; a pair later 170..281, 13 px further than a slow
+    // object moves in a pair: not read, and the first becomes the later.
+    first = dsp::span{183, 98};
+    shift = 0;
+    EXPECT_FALSE(dsp::first_extent_shift(span{170, 111}, &first, 3, &shift));
+    EXPECT_EQ(shift, 0);
+    EXPECT_TRUE(is_span(first, 170, 111));
+    EXPECT_TRUE(dsp::first_extent_shift(span{170, 112}, &first, 5, &shift));
+    EXPECT_EQ(shift, 1);
+    // Past it on both sides: a part too.
+    EXPECT_FALSE(dsp::first_extent_shift(span{160, 130}, &first, 15, &shift));
+    EXPECT_TRUE(is_span(first, 160, 130));
+}
+
 TEST(OutlineKeyAxis, AcrossTheMotionTheHull) {
     // The trace of a 140 px ball about y: the key's box missed 6 px at the
     // top, Dif(key, t) 1 (y 156..293 against the key's 161..292).
