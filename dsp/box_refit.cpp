@@ -73,14 +73,11 @@ bool contradicted_shift(span both, span key, int most, int* shift) {
     return true;
 }
 
-bool first_extent_shift(span both, span* first, int most, int* shift) {
+bool first_extent_shift(span both, span first, int most, int* shift) {
     int read = 0;
-    if (difference_shift(both, *first, &read) && read <= most && read >= -most) {
-        *shift = read;
-        return true;
-    }
-    *first = both;
-    return false;
+    if (!difference_shift(both, first, &read) || read > most || read < -most) return false;
+    *shift = read;
+    return true;
 }
 
 int bounded_shift(span both, span key, int shift, bool* bounded) {

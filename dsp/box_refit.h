@@ -101,13 +101,14 @@ bool contradicted_shift(span both, span key, int most, int* shift);
 // `first`, Dif(key, t)'s extent at the key's first pair: that spans
 // object(key) and the next object, so its trailing end stays while the
 // leading end moves with the object (difference_shift with `first` for the
-// key's box). True and `shift` set when that reads at most `most` px;
-// otherwise `first` was a part (the extent since grew past it further than
-// the object could move, or on both sides) and becomes `both`. Traced: a
+// key's box; the first pair's own motion, at most max_step px, is not in
+// it). True and `shift` set when that reads at most `most` px; false when
+// the extent reached past `first` on both sides or further than the object
+// could have moved (`first` was a part, and is of no more use). Traced: a
 // 140 px ball circling upwards at 1 px per frame, spinning 0.6 rev/s about
 // x, its key's box 4 px low; the pattern read the texture 1-3 px down while
 // Dif(key, t)'s top went from y 162 to 156 over 8 pairs, its bottom at 305.
-bool first_extent_shift(span both, span* first, int most, int* shift);
+bool first_extent_shift(span both, span first, int most, int* shift);
 
 // The displacement since the key `shift` on one axis, at most Dif(key, t)'s
 // extent `both` less the key's box `key` in size, + 1 px: that extent holds

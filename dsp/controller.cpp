@@ -209,7 +209,7 @@ struct controller::impl {
     struct key_axis {
         bool unfit = false;      // the key's box did not outline the object there
         bool has_first = false;  // `first` holds the object's outline there
-        span first;              // Dif(key, t)'s extent at the key's first pair (or since)
+        span first;              // Dif(key, t)'s extent at the key's first pair
     };
     key_axis key_x, key_y;
     bool key_first_seen = false;   // Dif(key, t) found since the key was taken
@@ -795,8 +795,12 @@ bool controller::impl::key_displacement(const block_group& u, bool matched, key_
 // box further than a slow object could have moved by then (max_step px a
 // pair, + 1), the key's box did not outline the object there (its texture's
 // silhouette when taken): for the key's life the displacement is read
-// against the extent's first reading (first_extent_shift), that axis then
-// outlined from Dif(key, t), and without one stays the pattern's. Elsewhere
+// against the extent's first reading while that reads one
+// (first_extent_shift; once not, the first reading was a part and is
+// dropped), that axis then outlined from Dif(key, t); without one it stays
+// the pattern's (a ball moving 2 px a pair, its extent 1 px further by
+// noise, was read as unfit at its fifth pair: a first reading replaced there
+// lost the 10 px moved, and the box fell 6 px behind). Elsewhere
 // a turned pattern's is the difference's (difference_shift), and a pattern
 // the difference contradicts gives way to it (contradicted_shift). Either
 // at most what Dif(key, t)'s size leaves for a motion (bounded_shift: where
@@ -812,8 +816,8 @@ bool controller::impl::key_axis_shift(key_axis& axis, span both, span key_box, b
     }
     bool read = false;
     if (axis.unfit) {
-        read = axis.has_first &&
-               first_extent_shift(both, &axis.first, reach - key_frame::max_step, shift);
+        read = axis.has_first && first_extent_shift(both, axis.first, reach, shift);
+        axis.has_first = read;
     } else if (key.turned()) {
         read = difference_shift(both, key_box, shift);
     } else {

@@ -71,8 +71,8 @@ TEST(MotionScenarios, DISABLED_SlowSmallBall) {
 }
 
 // The spinning throw slowed to a fifth of its speed, its ball turning once
-// a second about y: box max 4.30 px from the third tracked pair, |depth|
-// 0.70 %.
+// a second about y: box mean 1.05 px, max 1.66 px from the third tracked
+// pair, |depth| max 0.84 %.
 TEST(MotionScenarios, SlowSpinningBallAboutY) {
     const json report = scenario_test::run(
         "spinning",
@@ -81,10 +81,9 @@ TEST(MotionScenarios, SlowSpinningBallAboutY) {
     expect_tracked_in_budget(report, "spinning at 1 rev/s about y, a fifth of its speed");
 }
 
-// Open: the same about x (docs/firmware.md, "Open": the grid of slow
-// spinning balls in tests/dsp/test_box_on_motion.cpp fails on such balls;
-// this run's cause not traced): detected 6 frames after the motion began,
-// box mean 5.44 px, max 16.4 px, |depth| max 1.17 %.
+// Open: the same about x (docs/firmware.md, "Open"): detected 6 frames
+// after the motion began (19 pairs after it); from the third tracked pair
+// box mean 1.23 px, max 2.82 px, but |depth| 1.17 % in one pair.
 TEST(MotionScenarios, DISABLED_SlowSpinningBallAboutX) {
     const json report = scenario_test::run(
         "spinning",

@@ -152,27 +152,24 @@ TEST(ContradictedShift, TheDifferenceWhereItReadsMoreThanAStepOtherwise) {
     EXPECT_EQ(shift, 0);
 }
 
-TEST(FirstExtentShift, AgainstTheFirstReadingElseItIsReplaced) {
+TEST(FirstExtentShift, AgainstTheFirstReadingWithinASlowObjectsReach) {
     // The trace of a 140 px ball circling upwards over aloe (y axis): the
     // first extent 162..305, eight pairs later 156..305: 6 px up.
-    dsp::span first{162, 143};
     int shift = 3;  // the pattern's, following the texture down
-    EXPECT_TRUE(dsp::first_extent_shift(span{156, 149}, &first, 15, &shift));
+    EXPECT_TRUE(dsp::first_extent_shift(span{156, 149}, span{162, 143}, 17, &shift));
     EXPECT_EQ(shift, -6);
-    EXPECT_TRUE(is_span(first, 162, 143));
+    // The co-simulated ball moving 2 px a pair: 11 px at its sixth pair.
+    EXPECT_TRUE(dsp::first_extent_shift(span{171, 74}, span{182, 63}, 13, &shift));
+    EXPECT_EQ(shift, -11);
     // The trace of a 110 px ball passing along x (y axis): the first extent
-    // 183..281 was a part; a pair later 170..281, 13 px further than a slow
-    // object moves in a pair: not read, and the first becomes the later.
-    first = dsp::span{183, 98};
+    // 183..281 was a part; a pair later 170..281, 13 px, further than a slow
+    // object moves in two pairs: not read.
     shift = 0;
-    EXPECT_FALSE(dsp::first_extent_shift(span{170, 111}, &first, 3, &shift));
+    EXPECT_FALSE(dsp::first_extent_shift(span{170, 111}, span{183, 98}, 5, &shift));
     EXPECT_EQ(shift, 0);
-    EXPECT_TRUE(is_span(first, 170, 111));
-    EXPECT_TRUE(dsp::first_extent_shift(span{170, 112}, &first, 5, &shift));
-    EXPECT_EQ(shift, 1);
     // Past it on both sides: a part too.
-    EXPECT_FALSE(dsp::first_extent_shift(span{160, 130}, &first, 15, &shift));
-    EXPECT_TRUE(is_span(first, 160, 130));
+    EXPECT_FALSE(dsp::first_extent_shift(span{160, 130}, span{170, 111}, 15, &shift));
+    EXPECT_EQ(shift, 0);
 }
 
 TEST(OutlineKeyAxis, AcrossTheMotionTheHull) {
