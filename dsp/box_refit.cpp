@@ -39,6 +39,10 @@ span follow_axis(span previous, span both, span last, int size) {
     return span{(centre2 - size) >> 1, size};  // floor, also below 0
 }
 
+bool across_motion(int moved, int moved_other) {
+    return moved_other >= key_frame::min_shift && 4 * moved <= moved_other;
+}
+
 bool is_part(span both, span last) {
     return 2 * both.size < last.size;
 }

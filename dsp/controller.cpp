@@ -1059,11 +1059,16 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
                       : max_int(p.min_size, min_int(height, previous_y.size));
     const int reach = 2 * p.search_radius;
     if (motion.both.width - w > reach || motion.both.height - h > reach) return false;
+    // Across the motion a size the differences measured short is not taken.
+    const int moved_x = motion.both.width - previous_x.size;
+    const int moved_y = motion.both.height - previous_y.size;
+    const int size_x = across_motion(moved_x, moved_y) ? max_int(w, last.width) : w;
+    const int size_y = across_motion(moved_y, moved_x) ? max_int(h, last.height) : h;
     const box b =
         from_spans(part_x ? part_axis(x_span(motion.both), x_span(last))
-                          : follow_axis(previous_x, x_span(motion.both), x_span(last), w),
+                          : follow_axis(previous_x, x_span(motion.both), x_span(last), size_x),
                    part_y ? part_axis(y_span(motion.both), y_span(last))
-                          : follow_axis(previous_y, y_span(motion.both), y_span(last), h));
+                          : follow_axis(previous_y, y_span(motion.both), y_span(last), size_y));
     if (at_border(b)) return false;
     *followed = b;
     return true;

@@ -124,6 +124,16 @@ TEST(BoundedShift, AtMostTheDifferenceLessTheKeysBoxPlusOne) {
     EXPECT_FALSE(bounded);
 }
 
+TEST(AcrossMotion, AnAxisTheDifferenceReachedAQuarterAsFarOnAtLeastMinShift) {
+    // The trace of the 155 px ball after its bounce: Dif(t-1,t) 147 x 166 px
+    // past object(t-1)'s 145 x 154: 2 px across (x), 12 px along (y).
+    EXPECT_TRUE(dsp::across_motion(2, 12));
+    EXPECT_FALSE(dsp::across_motion(12, 2));
+    EXPECT_TRUE(dsp::across_motion(1, 4));
+    EXPECT_FALSE(dsp::across_motion(2, 7));  // under four times as far
+    EXPECT_FALSE(dsp::across_motion(0, 3));  // under min_shift: no motion to be across
+}
+
 TEST(ContradictedShift, TheDifferenceWhereItReadsMoreThanAStepOtherwise) {
     // The trace of a 125 px ball about y (x axis, key's box 230..356): the
     // pattern read -1, -3, -4 while Dif(key, t) reached 2, 4, 7 px past the
