@@ -156,10 +156,15 @@ TEST(ContradictedShift, TheDifferenceWhereItReadsMoreThanAStepOtherwise) {
     EXPECT_FALSE(dsp::contradicted_shift(span{230, 133}, span{230, 126}, 5, &shift));
     EXPECT_EQ(shift, 0);
     // A part of the outline (the 80 px ball's first pair: 66 px high for the
-    // key's 76) or an extent past the key's box on both sides: not read.
-    EXPECT_FALSE(dsp::contradicted_shift(span{200, 66}, span{185, 76}, 3, &shift));
+    // key's 76, 5 px past its end) or an extent past the key's box on both
+    // sides: not read, however far a slow object could have moved.
+    EXPECT_FALSE(dsp::contradicted_shift(span{200, 66}, span{185, 76}, 15, &shift));
     EXPECT_FALSE(dsp::contradicted_shift(span{180, 90}, span{185, 76}, 15, &shift));
     EXPECT_EQ(shift, 0);
+    // The key's box 2 px wider than the extent is still its outline.
+    shift = -3;
+    EXPECT_TRUE(dsp::contradicted_shift(span{189, 74}, span{185, 76}, 15, &shift));
+    EXPECT_EQ(shift, 2);
 }
 
 TEST(FirstExtentShift, AgainstTheFirstReadingWithinASlowObjectsReach) {
