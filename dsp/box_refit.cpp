@@ -77,9 +77,13 @@ bool contradicted_shift(span both, span key, int most, int* shift) {
     return true;
 }
 
-bool first_extent_shift(span both, span first, int most, int* shift) {
+bool first_extent_shift(span both, span first, int most, bool* usable, int* shift) {
     int read = 0;
-    if (!difference_shift(both, first, &read) || read > most || read < -most) return false;
+    if (!*usable) return false;
+    if (!difference_shift(both, first, &read) || read > most || read < -most) {
+        *usable = false;
+        return false;
+    }
     *shift = read;
     return true;
 }

@@ -112,13 +112,14 @@ bool contradicted_shift(span both, span key, int most, int* shift);
 // object(key) and the next object, so its trailing end stays while the
 // leading end moves with the object (difference_shift with `first` for the
 // key's box; the first pair's own motion, at most max_step px, is not in
-// it). True and `shift` set when that reads at most `most` px; false when
-// the extent reached past `first` on both sides or further than the object
-// could have moved (`first` was a part, and is of no more use). Traced: a
+// it). True and `shift` set when that reads at most `most` px while
+// `usable`; false when the extent reached past `first` on both sides or
+// further than the object could have moved (`first` was a part: `usable`
+// cleared, for the key's life). Traced: a
 // 140 px ball circling upwards at 1 px per frame, spinning 0.6 rev/s about
 // x, its key's box 4 px low; the pattern read the texture 1-3 px down while
 // Dif(key, t)'s top went from y 162 to 156 over 8 pairs, its bottom at 305.
-bool first_extent_shift(span both, span first, int most, int* shift);
+bool first_extent_shift(span both, span first, int most, bool* usable, int* shift);
 
 // The displacement since the key `shift` on one axis, at most Dif(key, t)'s
 // extent `both` less the key's box `key` in size, + 1 px: that extent holds

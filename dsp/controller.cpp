@@ -816,8 +816,7 @@ bool controller::impl::key_axis_shift(key_axis& axis, span both, span key_box, b
     }
     bool read = false;
     if (axis.unfit) {
-        read = axis.has_first && first_extent_shift(both, axis.first, reach, shift);
-        axis.has_first = read;
+        read = first_extent_shift(both, axis.first, reach, &axis.has_first, shift);
     } else if (key.turned()) {
         read = difference_shift(both, key_box, shift);
     } else {

@@ -170,20 +170,36 @@ TEST(ContradictedShift, TheDifferenceWhereItReadsMoreThanAStepOtherwise) {
 TEST(FirstExtentShift, AgainstTheFirstReadingWithinASlowObjectsReach) {
     // The trace of a 140 px ball circling upwards over aloe (y axis): the
     // first extent 162..305, eight pairs later 156..305: 6 px up.
+    bool usable = true;
     int shift = 3;  // the pattern's, following the texture down
-    EXPECT_TRUE(dsp::first_extent_shift(span{156, 149}, span{162, 143}, 17, &shift));
+    EXPECT_TRUE(dsp::first_extent_shift(span{156, 149}, span{162, 143}, 17, &usable, &shift));
     EXPECT_EQ(shift, -6);
+    EXPECT_TRUE(usable);
     // The co-simulated ball moving 2 px a pair: 11 px at its sixth pair.
-    EXPECT_TRUE(dsp::first_extent_shift(span{171, 74}, span{182, 63}, 13, &shift));
+    EXPECT_TRUE(dsp::first_extent_shift(span{171, 74}, span{182, 63}, 13, &usable, &shift));
     EXPECT_EQ(shift, -11);
+    // Not usable: nothing read.
+    usable = false;
+    shift = 0;
+    EXPECT_FALSE(dsp::first_extent_shift(span{156, 149}, span{162, 143}, 17, &usable, &shift));
+    EXPECT_EQ(shift, 0);
+}
+
+TEST(FirstExtentShift, APartIsOfNoMoreUse) {
     // The trace of a 110 px ball passing along x (y axis): the first extent
     // 183..281 was a part; a pair later 170..281, 13 px, further than a slow
-    // object moves in two pairs: not read.
-    shift = 0;
-    EXPECT_FALSE(dsp::first_extent_shift(span{170, 111}, span{183, 98}, 5, &shift));
+    // object moves in two pairs: not read, and not read against again, even
+    // once a slow object could have moved that far (the sixth pair).
+    bool usable = true;
+    int shift = 0;
+    EXPECT_FALSE(dsp::first_extent_shift(span{170, 111}, span{183, 98}, 5, &usable, &shift));
+    EXPECT_FALSE(usable);
+    EXPECT_FALSE(dsp::first_extent_shift(span{170, 112}, span{183, 98}, 13, &usable, &shift));
     EXPECT_EQ(shift, 0);
     // Past it on both sides: a part too.
-    EXPECT_FALSE(dsp::first_extent_shift(span{160, 130}, span{170, 111}, 15, &shift));
+    usable = true;
+    EXPECT_FALSE(dsp::first_extent_shift(span{160, 130}, span{170, 111}, 15, &usable, &shift));
+    EXPECT_FALSE(usable);
     EXPECT_EQ(shift, 0);
 }
 
