@@ -68,9 +68,13 @@ int key_reach(span both, span key) {
     return max_int(both.end() - key.end(), key.start - both.start);
 }
 
+bool holds_key_box(span both, span key) {
+    return both.size + 2 >= key.size;
+}
+
 bool contradicted_shift(span both, span key, int most, int* shift) {
     int read = 0;
-    if (both.size + 2 < key.size || !difference_shift(both, key, &read)) return false;
+    if (!holds_key_box(both, key) || !difference_shift(both, key, &read)) return false;
     if (read > most || read < -most) return false;
     if (read - *shift <= key_frame::max_step && *shift - read <= key_frame::max_step) return false;
     *shift = read;
@@ -90,10 +94,8 @@ bool first_extent_shift(span both, span first, int most, bool* usable, int* shif
 
 int bounded_shift(span both, span key, int shift, bool* bounded) {
     const int limit = max_int(0, both.size - key.size) + 1;
-    // A part of the outline (Dif(key, t) short of the key's box, as at a
-    // key's first pair) bounds the shift but cannot stand for the object.
-    const bool whole = both.size + 2 >= key.size;
-    *bounded = whole && (shift > limit || shift < -limit);
+    // A part of the outline bounds the shift but cannot stand for the object.
+    *bounded = holds_key_box(both, key) && (shift > limit || shift < -limit);
     return max_int(-limit, min_int(limit, shift));
 }
 

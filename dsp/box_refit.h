@@ -96,6 +96,12 @@ bool difference_shift(span both, span key, int* shift);
 // How far `both` reaches past the key's box on its further side.
 int key_reach(span both, span key);
 
+// Dif(key, t)'s extent `both` holds the key's box `key` on this axis, within
+// 2 px (the key's box may be that much wider than the outline): the whole
+// outline, not a part of it (as at a key's first pair, where Dif(key, t) is
+// Dif(t-1,t)).
+bool holds_key_box(span both, span key);
+
 // A key's pattern the difference contradicts: where Dif(key, t)'s extent
 // `both` holds the key's box `key` (within 2 px) and reads a displacement
 // (difference_shift) of at most `most` px that differs from the pattern's

@@ -811,7 +811,7 @@ bool controller::impl::key_axis_shift(key_axis& axis, span both, span key_box, b
     const int reach = key_frame::max_step * key.pairs() + 1;
     axis.unfit = axis.unfit || key_reach(both, key_box) > reach;
     if (first_pair) {
-        axis.has_first = both.size + 2 >= key_box.size;  // not a part of the outline
+        axis.has_first = holds_key_box(both, key_box);
         axis.first = both;
     }
     bool read = false;
