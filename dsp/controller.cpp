@@ -6,6 +6,7 @@
 #include "dsp/kernel_costs.h"
 #include "dsp/key_frame.h"
 #include "dsp/sobel.h"
+#include "dsp/stride_history.h"
 
 namespace dsp {
 
@@ -202,7 +203,8 @@ struct controller::impl {
 
     motion_detector detector;
     sad_tracker tracker;
-    key_frame key;                // a slow object's older frame (dsp/key_frame.h), SDRAM
+    key_frame key;          // a slow object's older frame (dsp/key_frame.h), SDRAM
+    stride_history stride;  // DETECT: frames a stride apart (dsp/stride_history.h), in left_gray
     bool slow_candidate = false;  // DETECT: a slow object's key, waiting for its outline
     int candidate_pairs = 0;      // pairs the candidate has waited
     // What Dif(key, t) has said of the key's box on one axis (key_axis_shift).
@@ -223,6 +225,7 @@ struct controller::impl {
     int frames_in_history = 0;  // right frames seen, at most 3
     int lost_pairs = 0;
     uint32_t frame_index = 0;
+    bool left_made = false;  // left_gray holds this pair's left image
 
     ~impl() {
         delete[] line_scratch;
@@ -241,6 +244,8 @@ struct controller::impl {
 
     void preprocess(gray_cplane raw_left, gray_cplane raw_right, tracker_state state,
                     frame_output& out);
+    uint64_t preprocess_cost(sdram_traffic* traffic) const;
+    void preprocess_left(gray_cplane raw_left, uint16_t gain_q8);
     // Dif(t-1,t) into the packed mask for the next pair (not in DETECT,
     // whose three-frame pass makes it).
     void update_motion_mask(uint64_t* cycles, sdram_traffic* traffic);
@@ -264,6 +269,9 @@ struct controller::impl {
     bool start_detection(const detection& found, frame_output& out, uint64_t* cycles,
                          sdram_traffic* traffic);
     bool start_track(box detected, uint64_t* cycles, sdram_traffic* traffic);
+    void detect_over_stride(frame_output& out, uint64_t* cycles, sdram_traffic* traffic);
+    bool start_slow_candidate(box detected, gray_cplane middle, uint64_t* cycles,
+                              sdram_traffic* traffic);
     bool confirm_slow_object(uint64_t* cycles, sdram_traffic* traffic);
     bool search_key(uint64_t* cycles, sdram_traffic* traffic);
     block_group keyed_extent(uint64_t* cycles, sdram_traffic* traffic);
@@ -356,6 +364,7 @@ void controller::init(const controller_config& config, hal& hardware) {
     s.detector.init(config.max_width, config.max_height, config.max_motion_labels, false);
     s.tracker.init(config.track);
     s.key.init(config.max_width, config.max_height);
+    s.stride.init(s.left_gray, frame_pixels);
 
     if (config.disparity_from_rig) {
         const int64_t near_q8 = disparity_q8_at_depth(config.rig, config.min_depth_mm);
@@ -414,6 +423,7 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
         s.height = h;
         s.frames_in_history = 0;
         s.slow_candidate = false;
+        s.stride.reset();
         m_state = tracker_state::detect;
     }
 
@@ -444,6 +454,13 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
     if (!has_object) return out;
 
     out.has_object = true;
+    if (!s.left_made) {  // a DETECT pair's left image, left for a detection
+        stage_scope scope(*s.hardware, stage::preprocess, out);
+        s.preprocess_left(raw_left, out.gain_q8);
+        sdram_traffic traffic;
+        scope.charge(s.preprocess_cost(&traffic), traffic);
+        s.left_made = true;
+    }
     out.box_right = s.tracker.position();
     s.stereo_sad(out.box_right, outlined, out);
     s.stereo_edge(out.box_right, out);
@@ -465,25 +482,18 @@ void controller::impl::preprocess(gray_cplane raw_left, gray_cplane raw_right, t
     out.gain_q8 = preprocess_raw_to_gray(raw_right, config.cfa, config.brightness, line_scratch,
                                          frame_plane(right_gray[newest]))
                       .gain_q8;
-    // The left image takes the right one's gain. Each image's own mean
-    // differs with what the other view sees around the object (a 1 % gain
-    // step moved the matches of a smooth, shaded ball by 1-3 px); a light
-    // change reaches both sensors alike, so one gain still cancels it.
-    brightness_params ungained = config.brightness;
-    ungained.enabled = false;
-    preprocess_raw_to_gray(raw_left, config.cfa, ungained, line_scratch, frame_plane(left_gray));
-    if (config.brightness.enabled) apply_gain(frame_plane(left_gray), out.gain_q8);
     if (frames_in_history < history_frames) ++frames_in_history;
-    uint64_t per_image = cycles_of(
-        cost::demosaic_gray_profile(width, height, config.frame_memory, config.raw_memory));
-    sdram_traffic traffic =
-        cost::demosaic_gray_traffic(width, height, config.frame_memory, config.raw_memory);
-    if (config.brightness.enabled) {
-        per_image += cycles_of(cost::brightness_profile(width, height, config.frame_memory));
-        traffic += cost::brightness_traffic(width, height, config.frame_memory);
+    sdram_traffic traffic;
+    const uint64_t per_image = preprocess_cost(&traffic);
+    scope.charge(per_image, traffic);
+    // The left image is for stereo: a DETECT pair whose left buffer holds
+    // the strided history (dsp/stride_history.h) makes it only once it has
+    // an object (process_pair).
+    left_made = !(state == tracker_state::detect && stride.has_frame());
+    if (left_made) {
+        preprocess_left(raw_left, out.gain_q8);
+        scope.charge(per_image, traffic);
     }
-    traffic += traffic;  // both images
-    scope.charge(2 * per_image, traffic);
 
     const bool detect_makes_it = state == tracker_state::detect && frames_in_history >= 3;
     if (state != tracker_state::track && !detect_makes_it) {
@@ -492,6 +502,32 @@ void controller::impl::preprocess(gray_cplane raw_left, gray_cplane raw_right, t
         update_motion_mask(&cycles, &mask_traffic);
         scope.charge(cycles, mask_traffic);
     }
+}
+
+// One image's preprocess cost (demosaic, gray, gain), its SDRAM traffic
+// into `traffic`.
+uint64_t controller::impl::preprocess_cost(sdram_traffic* traffic) const {
+    uint64_t cycles = cycles_of(
+        cost::demosaic_gray_profile(width, height, config.frame_memory, config.raw_memory));
+    *traffic = cost::demosaic_gray_traffic(width, height, config.frame_memory, config.raw_memory);
+    if (config.brightness.enabled) {
+        cycles += cycles_of(cost::brightness_profile(width, height, config.frame_memory));
+        *traffic += cost::brightness_traffic(width, height, config.frame_memory);
+    }
+    return cycles;
+}
+
+// The left image takes the right one's gain. Each image's own mean differs
+// with what the other view sees around the object (a 1 % gain step moved
+// the matches of a smooth, shaded ball by 1-3 px); a light change reaches
+// both sensors alike, so one gain still cancels it. Its buffer is the
+// strided history's while DETECT finds nothing: that is over.
+void controller::impl::preprocess_left(gray_cplane raw_left, uint16_t gain_q8) {
+    brightness_params ungained = config.brightness;
+    ungained.enabled = false;
+    preprocess_raw_to_gray(raw_left, config.cfa, ungained, line_scratch, frame_plane(left_gray));
+    if (config.brightness.enabled) apply_gain(frame_plane(left_gray), gain_q8);
+    stride.reset();
 }
 
 void controller::impl::update_motion_mask(uint64_t* cycles, sdram_traffic* traffic) {
@@ -528,8 +564,75 @@ bool controller::impl::detect(frame_output& out) {
     out.detected = found.object_found && start_detection(found, out, &cycles, &traffic);
     if (!out.detected && waiting && slow_candidate)
         out.detected = confirm_slow_object(&cycles, &traffic);
+    else if (!out.detected && !slow_candidate)
+        detect_over_stride(out, &cycles, &traffic);
+    // The strided history starts again once nothing waits.
+    if (out.detected || slow_candidate) stride.reset();
     scope.charge(cycles, traffic);
     return out.detected;
+}
+
+// When one pair's differences found nothing: on the stride's due pairs the
+// three-frame pass over frames a stride apart (dsp/stride_history.h),
+// whose object(t-s) is keyed as a slow candidate (confirm_slow_object);
+// the pair's frame is then kept. Both passes are charged as the packed
+// three-frame kernel, whose operations per 8 pixels they repeat (2 loads,
+// 2 SUBABS4, 2 CMPGTU4, the bit masks, 1 store).
+void controller::impl::detect_over_stride(frame_output& out, uint64_t* cycles,
+                                          sdram_traffic* traffic) {
+    if (!stride.due()) return;
+    const c64x::kernel_profile pass =
+        cost::three_frame_difference_packed_profile(width, height, config.frame_memory);
+    if (stride.ready()) {
+        struct rows {
+            const stride_history* history;
+            gray_cplane f_t;
+            uint8_t threshold;
+        } source_rows{&stride, history(0), config.detect.threshold};
+        auto source = [](void* context, int y, uint8_t* object_row) {
+            const auto& r = *static_cast<const rows*>(context);
+            r.history->three_frame_row(r.f_t.row(y), y, r.threshold, object_row);
+        };
+        const detection found =
+            detector.detect_rows(width, height, config.detect, source, &source_rows);
+        const int passes = 2 * (config.detect.open_passes + config.detect.close_passes);
+        *cycles += cycles_of(pass) + cycles_of(cost::morphology_profile(width, height, passes)) +
+                   cycles_of(cost::connected_components_profile(
+                       width, height, detector.last_foreground_pixels())) +
+                   cycles_of(cost::motion_blocks_profile(width, height));
+        *traffic += cost::sdram_traffic_of(pass);
+        if (found.object_found && !out.motion_found) {
+            out.motion_found = true;
+            out.motion_box = found.object_box;
+        }
+        if (found.object_found && !at_border(found.object_box) &&
+            start_slow_candidate(found.object_box, stride.kept(), cycles, traffic))
+            return;
+    }
+    stride.keep(history(0), config.detect.threshold);
+    *cycles += cycles_of(pass);
+    *traffic += cost::sdram_traffic_of(pass);
+}
+
+// A strided detection's object(t-s) in `middle`: its pattern searched in
+// f(t) (it moved a stride's worth), and keyed there as a slow candidate, its
+// region grown as a one-pair slow detection's (start_track).
+bool controller::impl::start_slow_candidate(box detected, gray_cplane middle, uint64_t* cycles,
+                                            sdram_traffic* traffic) {
+    tracker.start(middle, detected);
+    const box pattern = tracker.pattern_box();
+    *cycles += cycles_of(cost::pattern_copy_profile(pattern.width, pattern.height));
+    traffic->bytes_read += static_cast<uint64_t>(pattern.width) * pattern.height;
+    const track_status status = tracker.update(history(0));
+    *cycles += cycles_of(
+        cost::sad_search_profile(pattern.width, pattern.height, tracker.last_match().positions));
+    if (status != track_status::tracking) return false;
+    take_key(
+        cycles, traffic,
+        2 * max_int(detected.width, detected.height) + key_frame::max_shift + key_frame::margin);
+    slow_candidate = key.valid();
+    candidate_pairs = 0;
+    return slow_candidate;
 }
 
 bool controller::impl::start_detection(const detection& found, frame_output& out, uint64_t* cycles,

@@ -7,7 +7,10 @@
 // kernel it runs to the HAL, stage by stage.
 //
 // Per pair, by state at the start of the pair:
-//   all states: preprocess both images (stage preprocess). The right gray
+//   all states: preprocess both images (stage preprocess; in a DETECT pair
+//     while the strided history below holds the left buffer, the left image
+//     only once the pair has an object, in a second preprocess entry after
+//     stage detect: it is needed only for stereo). The right gray
 //     image goes into the older of the two right gray buffers (f(t-2)'s
 //     place: the buffers swap roles, no copy). f(t-2) itself is not kept:
 //     eq. 4 needs it only through Dif(t-2,t-1), which the previous pair left
@@ -27,6 +30,10 @@
 //     Both are charged to stage detect. Success -> TRACK on this very pair.
 //     A zone touching the image border (within close_passes + 1 px) is not
 //     started: an object entering the view is taken once wholly inside.
+//     When one pair's differences find nothing, the same three-frame pass
+//     runs every 4 pairs on frames 4 pairs apart (dsp/stride_history.h: an
+//     object at 0.5-1 px per frame that one pair's miss), kept in the left
+//     gray buffer; what it finds is keyed as a slow candidate.
 //   TRACK: the two differences around the LAST box (where the object was
 //     at t-1) give object(t-1) and, where Dif(t-1,t) reaches past it,
 //     object(t) (dsp/box_refit.h); the SAD search (paper eq. 5) on the
@@ -68,7 +75,7 @@
 //
 //   buffer                                  bytes              VGA (640 x 480)
 //   right gray f(t), f(t-1)                 2 W H                  614,400
-//   left gray                               W H                    307,200
+//   left gray (DETECT: the strided history) W H                    307,200
 //   packed Dif(t-2,t-1)                     W H / 8                 38,400
 //   demosaic line (one RGB row)             3 W                      1,920
 //   detector: 8 pass rings + 1 row, 2 label motion_detector::       37,880

@@ -532,6 +532,14 @@ detection motion_detector::detect_packed(gray_cplane f_tm1, gray_cplane f_t, uin
     return run(f_tm1.width, f_tm1.height, params, source, &frames);
 }
 
+detection motion_detector::detect_rows(int width, int height, const detect_params& params,
+                                       row_source source, void* context) {
+    m_last_width = m_last_height = m_last_foreground = m_last_components = 0;
+    if (m_rings == nullptr || size_refused(width, height, m_max_width, m_max_height, params))
+        return detection{};
+    return run(width, height, params, source, context);
+}
+
 gray_cplane motion_detector::last_mask() const {
     if (m_mask == nullptr) return gray_cplane{};
     return gray_cplane{m_mask, m_last_width, m_last_height, m_last_width};

@@ -228,6 +228,13 @@ class motion_detector {
     detection detect_packed(gray_cplane f_tm1, gray_cplane f_t, uint8_t* packed,
                             const detect_params& params);
 
+    // The same pipeline on object rows made by `source` (row y of the raw
+    // object mask, 0/255, into `out`, width bytes), in row order: for a
+    // difference kept in another form (dsp/stride_history.h).
+    using row_source = void (*)(void* context, int y, uint8_t* out);
+    detection detect_rows(int width, int height, const detect_params& params, row_source source,
+                          void* context);
+
     // The cleaned mask of the last detect() call (for tests and waveforms);
     // empty unless init's keep_mask.
     gray_cplane last_mask() const;
@@ -247,7 +254,6 @@ class motion_detector {
 
   private:
     // Makes object row y into out (width bytes).
-    using row_source = void (*)(void* context, int y, uint8_t* out);
     detection run(int width, int height, const detect_params& params, row_source source,
                   void* context);
     uint8_t* ring_row(int pass, int y) const;

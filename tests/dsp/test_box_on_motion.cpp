@@ -593,6 +593,41 @@ INSTANTIATE_TEST_SUITE_P(HeldOutSlow15, BoxOnMotion,
                                                        30}),
                          case_name);
 
+// Held-out round 16: slow balls at 0.5-1 px per frame, written after the
+// strided detection (dsp/stride_history.h) and before it was run on them,
+// run once on it and once without it.
+INSTANTIATE_TEST_SUITE_P(HeldOutSlow16, BoxOnMotion,
+                         ::testing::Values(motion_case{"heldout16_pass60px_halfpxpf_cones", 60, 2.6,
+                                                       pass, 0.1, 0.0, 'x', photo, 30},
+                                           motion_case{"heldout16_pass120px_halfpxpf_kodim23", 120,
+                                                       2.6, pass, 0.1, 0.0, 'x', photo2, 30},
+                                           motion_case{"heldout16_circle100px_halfpxpf_tsukuba",
+                                                       100, 2.6, circle, 0.0625, 0.0, 'x', tsukuba,
+                                                       30},
+                                           motion_case{"heldout16_pass40px_0_75pxpf_aloe", 40, 2.6,
+                                                       pass, 0.15, 0.0, 'x', aloe, 30},
+                                           motion_case{"heldout16_circle70px_1pxpf_venus", 70, 2.6,
+                                                       circle, 0.125, 0.0, 'x', venus, 30},
+                                           motion_case{"heldout16_pass90px_halfpxpf_1rps_y", 90,
+                                                       2.6, pass, 0.1, 1.0, 'y', procedural, 30}),
+                         case_name);
+
+// Held-out round 17: small balls and weakly textured passes at 0.5-1 px
+// per frame, written after round 16 (whose balls one pair's differences
+// detected, as early, without the stride) and run as round 16.
+INSTANTIATE_TEST_SUITE_P(HeldOutSlow17, BoxOnMotion,
+                         ::testing::Values(motion_case{"heldout17_pass12px_1pxpf", 12, 2.6, pass,
+                                                       0.2, 0.0, 'x', procedural, 30},
+                                           motion_case{"heldout17_pass20px_halfpxpf_kodim19", 20,
+                                                       2.6, pass, 0.1, 0.0, 'x', photo3, 30},
+                                           motion_case{"heldout17_circle60px_halfpxpf_teddy", 60,
+                                                       2.6, circle, 0.0625, 0.0, 'x', photo4, 30},
+                                           motion_case{"heldout17_pass16px_1pxpf_aloe", 16, 2.6,
+                                                       pass, 0.2, 0.0, 'x', aloe, 30},
+                                           motion_case{"heldout17_circle30px_1pxpf_tsukuba", 30,
+                                                       2.6, circle, 0.125, 0.0, 'x', tsukuba, 30}),
+                         case_name);
+
 // Open: the issue of the box on fast, large and spinning objects stays open
 // on these (docs/firmware.md, "Open"; run with
 // --gtest_also_run_disabled_tests, all fail). The 60 px ball at 30 px per
