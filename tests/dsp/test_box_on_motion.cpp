@@ -628,28 +628,32 @@ INSTANTIATE_TEST_SUITE_P(HeldOutSlow17, BoxOnMotion,
                                                        2.6, circle, 0.125, 0.0, 'x', tsukuba, 30}),
                          case_name);
 
+// Detected too late for 30 frames until the strided detection
+// (dsp/stride_history.h; one pair's differences found nothing in pairs
+// 3-21 of the second): an 80 px ball at 0.5 px per frame over kodim19 (no
+// start: box 2.40 / 3.26 px since, detected in pair 17), an 80 px ball
+// circling over teddy (pair 25, 3 pairs scored: now pair 14, 0.49 / 0.81 px).
+INSTANTIATE_TEST_SUITE_P(SlowDetection, BoxOnMotion,
+                         ::testing::Values(motion_case{"heldout3_pass80px_halfpxpf_photo3", 80, 2.6,
+                                                       pass, 0.1, 0.0, 'x', photo3, 30},
+                                           motion_case{"heldout7_circle80px_1pxpf_photo4", 80, 2.6,
+                                                       circle, 0.125, 0.0, 'x', photo4, 30}),
+                         case_name);
+
 // Open: the issue of the box on fast, large and spinning objects stays open
 // on these (docs/firmware.md, "Open"; run with
-// --gtest_also_run_disabled_tests, all fail). The 60 px ball at 30 px per
+// --gtest_also_run_disabled_tests, both fail). The 60 px ball at 30 px per
 // frame over teddy is left behind from its second tracked pair (box 8.9,
 // 13.6, 31.3, 56.1 px off, depth 133 % while on the background). A 100 px
 // ball circling over venus keeps a box 3.5 px left of it (mean 3.53, max
 // 4.13; its right rim never in Dif(key, t): from 35 px above its centre down
 // to its bottom the shaded limb is 0-18 grey levels off venus's dark frame,
-// under the threshold of 20). Detected too late for 30 frames: an 80 px
-// ball at 0.5 px per frame over kodim19 (no start), an 80 px ball circling
-// over teddy (pair 25: 3 pairs scored).
-INSTANTIATE_TEST_SUITE_P(
-    DISABLED_Open, BoxOnMotion,
-    ::testing::Values(
-        // Box off the object.
-        motion_case{"heldout2_pass60px_30pxpf_photo4", 60, 2.2, pass, 6.0, 9.0, 'x', photo4, 14},
-        motion_case{"heldout6_circle100px_1pxpf_venus", 100, 2.6, circle, 0.125, 0.0, 'x', venus,
-                    30},
-        // Detected too late.
-        motion_case{"heldout3_pass80px_halfpxpf_photo3", 80, 2.6, pass, 0.1, 0.0, 'x', photo3, 30},
-        motion_case{"heldout7_circle80px_1pxpf_photo4", 80, 2.6, circle, 0.125, 0.0, 'x', photo4,
-                    30}),
-    case_name);
+// under the threshold of 20).
+INSTANTIATE_TEST_SUITE_P(DISABLED_Open, BoxOnMotion,
+                         ::testing::Values(motion_case{"heldout2_pass60px_30pxpf_photo4", 60, 2.2,
+                                                       pass, 6.0, 9.0, 'x', photo4, 14},
+                                           motion_case{"heldout6_circle100px_1pxpf_venus", 100, 2.6,
+                                                       circle, 0.125, 0.0, 'x', venus, 30}),
+                         case_name);
 
 }  // namespace
