@@ -169,6 +169,7 @@ TEST(trajectory_timeline, plot_and_trace_of_a_tracked_run) {
     EXPECT_EQ(threads[3], "card");
     int matched = 0;
     double worst = 0.0;
+    int late_left_pairs = 0;
     for (const json& f : report.at("frames")) {
         if (f.at("pair").is_null() || !f.at("pair").at("processed").get<bool>()) continue;
         const int pair = f.at("pair").at("number");
@@ -180,7 +181,16 @@ TEST(trajectory_timeline, plot_and_trace_of_a_tracked_run) {
                 continue;
             }
             ASSERT_EQ(stage_events.count(key), 1u) << s.key() << " of pair " << pair;
-            EXPECT_EQ(stage_events[key], 1) << s.key() << " ran once for pair " << pair;
+            // Once per pair; preprocess twice where a DETECT pair that kept the
+            // strided history in its left buffer detected and only then made
+            // its left image (docs/firmware.md, "Slow detection").
+            const json& stages = f.at("stage_ms");
+            const bool late_left = s.key() == "preprocess" && stage_events[key] == 2 &&
+                                   stages.at("detect").get<double>() > 0.0 &&
+                                   stages.at("stereo_sad").get<double>() > 0.0;
+            late_left_pairs += late_left;
+            EXPECT_EQ(stage_events[key], late_left ? 2 : 1)
+                << s.key() << " ran once for pair " << pair;
             EXPECT_NEAR(stage_ms[key], ms, 1e-4) << s.key() << " of pair " << pair;
             worst = std::max(worst, std::fabs(stage_ms[key] - ms));
             ++matched;
@@ -192,8 +202,9 @@ TEST(trajectory_timeline, plot_and_trace_of_a_tracked_run) {
     }
     std::printf(
         "timeline.json: %zu events, %d stage events matched report.json (worst %.2e ms), "
-        "%zu capture chains, %d interrupt instants\n",
-        trace.at("traceEvents").size(), matched, worst, capture_ms.size(), interrupts);
+        "%zu capture chains, %d interrupt instants, %d pairs with a late left image\n",
+        trace.at("traceEvents").size(), matched, worst, capture_ms.size(), interrupts,
+        late_left_pairs);
     EXPECT_GE(matched, 10);
     EXPECT_GE(interrupts, 3);
 }
