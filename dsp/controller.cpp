@@ -566,7 +566,7 @@ bool controller::impl::detect(frame_output& out) {
         out.detected = confirm_slow_object(&cycles, &traffic);
     else if (!out.detected && !slow_candidate)
         detect_over_stride(out, &cycles, &traffic);
-    // The strided history starts again once nothing waits.
+    // A track or a candidate ends the strided history (it restarts after).
     if (out.detected || slow_candidate) stride.reset();
     scope.charge(cycles, traffic);
     return out.detected;
