@@ -521,13 +521,13 @@ uint64_t controller::impl::preprocess_cost(sdram_traffic* traffic) const {
 // with what the other view sees around the object (a 1 % gain step moved
 // the matches of a smooth, shaded ball by 1-3 px); a light change reaches
 // both sensors alike, so one gain still cancels it. Its buffer is the
-// strided history's while DETECT finds nothing: that is over.
+// strided history's while DETECT finds nothing; a pair that makes it after
+// its detection ended that history (detect), as every way out of DETECT does.
 void controller::impl::preprocess_left(gray_cplane raw_left, uint16_t gain_q8) {
     brightness_params ungained = config.brightness;
     ungained.enabled = false;
     preprocess_raw_to_gray(raw_left, config.cfa, ungained, line_scratch, frame_plane(left_gray));
     if (config.brightness.enabled) apply_gain(frame_plane(left_gray), gain_q8);
-    stride.reset();
 }
 
 void controller::impl::update_motion_mask(uint64_t* cycles, sdram_traffic* traffic) {
