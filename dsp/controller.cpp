@@ -269,6 +269,7 @@ struct controller::impl {
     bool start_detection(const detection& found, frame_output& out, uint64_t* cycles,
                          sdram_traffic* traffic);
     bool start_track(box detected, uint64_t* cycles, sdram_traffic* traffic);
+    uint64_t detection_pass_cycles() const;
     void detect_over_stride(frame_output& out, uint64_t* cycles, sdram_traffic* traffic);
     bool start_slow_candidate(box detected, gray_cplane middle, uint64_t* cycles,
                               sdram_traffic* traffic);
@@ -545,17 +546,8 @@ bool controller::impl::detect(frame_output& out) {
     stage_scope scope(*hardware, stage::detect, out);
     const detection found =
         detector.detect_packed(history(1), history(0), motion_mask, config.detect);
-    const int morphology_passes = 2 * (config.detect.open_passes + config.detect.close_passes);
-    scope.charge(
-        cycles_of(cost::three_frame_difference_packed_profile(width, height, config.frame_memory)) +
-            cycles_of(cost::morphology_profile(width, height, morphology_passes)) +
-            cycles_of(cost::connected_components_profile(width, height,
-                                                         detector.last_foreground_pixels())),
-        cost::three_frame_difference_packed_traffic(width, height, config.frame_memory));
-    // The object's extent: the largest component joined with the raw mask's
-    // block group around it (dsp/motion_blocks.h), or that group alone when
-    // the opening left no component (an object much wider than its motion).
-    scope.charge(cycles_of(cost::motion_blocks_profile(width, height)));
+    scope.charge(detection_pass_cycles(),
+                 cost::three_frame_difference_packed_traffic(width, height, config.frame_memory));
     // A slow candidate waiting from an earlier pair (start_track) goes on
     // after this pair's detection, which may start a faster object instead.
     const bool waiting = slow_candidate;
@@ -570,6 +562,20 @@ bool controller::impl::detect(frame_output& out) {
     if (out.detected || slow_candidate) stride.reset();
     scope.charge(cycles, traffic);
     return out.detected;
+}
+
+// The detector's last pass: the packed three-frame difference, the opening,
+// closing and labelling, and the object's extent (the largest component
+// joined with the raw mask's block group around it, dsp/motion_blocks.h, or
+// that group alone when the opening left no component).
+uint64_t controller::impl::detection_pass_cycles() const {
+    const int passes = 2 * (config.detect.open_passes + config.detect.close_passes);
+    return cycles_of(
+               cost::three_frame_difference_packed_profile(width, height, config.frame_memory)) +
+           cycles_of(cost::morphology_profile(width, height, passes)) +
+           cycles_of(cost::connected_components_profile(width, height,
+                                                        detector.last_foreground_pixels())) +
+           cycles_of(cost::motion_blocks_profile(width, height));
 }
 
 // When one pair's differences found nothing: on the stride's due pairs the
@@ -595,11 +601,7 @@ void controller::impl::detect_over_stride(frame_output& out, uint64_t* cycles,
         };
         const detection found =
             detector.detect_rows(width, height, config.detect, source, &source_rows);
-        const int passes = 2 * (config.detect.open_passes + config.detect.close_passes);
-        *cycles += cycles_of(pass) + cycles_of(cost::morphology_profile(width, height, passes)) +
-                   cycles_of(cost::connected_components_profile(
-                       width, height, detector.last_foreground_pixels())) +
-                   cycles_of(cost::motion_blocks_profile(width, height));
+        *cycles += detection_pass_cycles();
         *traffic += cost::sdram_traffic_of(pass);
         if (found.object_found && !out.motion_found) {
             out.motion_found = true;
