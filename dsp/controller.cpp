@@ -300,7 +300,7 @@ struct controller::impl {
     };
     motion_extents measure_motion(box last, const box* detected, uint64_t* cycles,
                                   sdram_traffic* traffic);
-    bool follow_object(const motion_extents& motion, box last, bool may_be_part,
+    bool follow_object(const motion_extents& motion, box last, bool may_be_part, bool keyed,
                        box* followed) const;
     box pull_box(const motion_extents& motion, box last, box found) const;
     void stereo_sad(box object, bool outlined, frame_output& out);
@@ -334,7 +334,8 @@ memory_plan plan_memory(const controller_config& config) {
         plan.edge_bands = bands;
     }
     plan.raw_pair_sdram = 2 * frame;
-    plan.key_sdram = key_frame::sdram_bytes(config.max_width, config.max_height);
+    plan.key_sdram =
+        key_frame::sdram_bytes(config.max_width, config.max_height, config.track.max_size);
     return plan;
 }
 
@@ -364,7 +365,7 @@ void controller::init(const controller_config& config, hal& hardware) {
 
     s.detector.init(config.max_width, config.max_height, config.max_motion_labels, false);
     s.tracker.init(config.track);
-    s.key.init(config.max_width, config.max_height);
+    s.key.init(config.max_width, config.max_height, config.track.max_size);
     s.stride.init(s.left_gray, frame_pixels);
 
     if (config.disparity_from_rig) {
@@ -691,7 +692,7 @@ bool controller::impl::start_track(box detected, uint64_t* cycles, sdram_traffic
     // Read only for an object that is started: not in a slow candidate's pairs.
     const motion_extents motion = measure_motion(detected, &detected, cycles, traffic);
     box followed;
-    const bool follows = motion.found && follow_object(motion, detected, false, &followed);
+    const bool follows = motion.found && follow_object(motion, detected, false, false, &followed);
     if (!follows && status != track_status::tracking) return false;
     key.drop();
     slow_candidate = false;
@@ -772,7 +773,9 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
     const box pattern = tracker.pattern_box();
     const motion_extents motion = measure_motion(last, nullptr, cycles, traffic);
     box followed;
-    const bool follows = motion.found && follow_object(motion, last, box_may_be_part, &followed);
+    const bool keyed = key.valid() && !key.outline_only();
+    const bool follows =
+        motion.found && follow_object(motion, last, box_may_be_part, keyed, &followed);
     const track_status status =
         follows ? tracker.update_near(history(0), followed) : tracker.update(history(0));
     *cycles += cycles_of(
@@ -825,14 +828,16 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
 // where the silhouette still moved at most max_step px a key of the outline
 // is taken (follow_outline_key).
 // Runs after update_motion_mask: f(t-1)'s buffer is scratch by then.
-// (take_key: the key at the tracker's box, its region's copy charged.)
+// (take_key: the key at the tracker's box, its ring's and pattern's copy charged.)
 void controller::impl::take_key(uint64_t* cycles, sdram_traffic* traffic, int grow) {
     key.take(history(0), tracker.position(), tracker.pattern_box(), grow);
     key_x = key_y = key_axis{};
     key_first_seen = false;
-    const box r = key.region();
-    *cycles += cycles_of(cost::pattern_copy_profile(r.width, r.height));
-    traffic->bytes_written += static_cast<uint64_t>(r.width) * r.height;
+    const box r = key.region(), hole = key.hole(), kp = key.pattern();
+    *cycles += cycles_of(cost::pattern_copy_profile(r.width, r.height - hole.height)) +
+               cycles_of(cost::pattern_copy_profile(r.width - hole.width, hole.height)) +
+               cycles_of(cost::pattern_copy_profile(kp.width, kp.height));
+    traffic->bytes_written += key.stored_bytes();
 }
 
 // The key's pattern searched in f(t) (key_frame::displacement), charged:
@@ -853,10 +858,11 @@ bool controller::impl::search_key(uint64_t* cycles, sdram_traffic* traffic) {
 block_group controller::impl::keyed_extent(uint64_t* cycles, sdram_traffic* traffic) {
     const block_group u =
         key.moved_extent(history(0), config.detect.threshold, later_blocks, refit_rows);
-    const box r = key.region();
-    *cycles += cycles_of(cost::difference_packed_profile(r.width, r.height, cost::memory::sdram)) +
-               cycles_of(cost::motion_blocks_profile(r.width, r.height));
-    *traffic += cost::difference_packed_traffic(r.width, r.height, cost::memory::sdram);
+    const box r = key.region(), hole = key.hole();
+    const c64x::kernel_profile difference =
+        cost::key_difference_profile(r.width, r.height, hole.width, hole.height);
+    *cycles += cycles_of(difference) + cycles_of(cost::motion_blocks_profile(r.width, r.height));
+    *traffic += cost::sdram_traffic_of(difference);
     return u;
 }
 
@@ -1127,7 +1133,7 @@ controller::impl::motion_extents controller::impl::measure_motion(box last, cons
 // later in a track (at a bounce the common part holds the ball and where it was and will be), nor
 // for a fast object (a throw's first common part is over an eighth larger than its detection).
 bool controller::impl::follow_object(const motion_extents& motion, box last, bool may_be_part,
-                                     box* followed) const {
+                                     bool keyed, box* followed) const {
     const track_params& p = config.track;
     const bool part_x = is_part(x_span(motion.both), x_span(last));
     const bool part_y = is_part(y_span(motion.both), y_span(last));
@@ -1166,8 +1172,9 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
     // Across the motion a size the differences measured short is not taken.
     const int moved_x = motion.both.width - previous_x.size;
     const int moved_y = motion.both.height - previous_y.size;
-    const int size_x = across_motion(moved_x, moved_y) ? max_int(w, last.width) : w;
-    const int size_y = across_motion(moved_y, moved_x) ? max_int(h, last.height) : h;
+    const bool unmoved = keyed && moved_x < slow && moved_y < slow;
+    const int size_x = unmoved || across_motion(moved_x, moved_y) ? max_int(w, last.width) : w;
+    const int size_y = unmoved || across_motion(moved_y, moved_x) ? max_int(h, last.height) : h;
     const box b =
         from_spans(part_x ? part_axis(x_span(motion.both), x_span(last))
                           : follow_axis(previous_x, x_span(motion.both), x_span(last), size_x),

@@ -90,9 +90,9 @@
 // the raw reads (plan_memory computes it; tests/dsp/test_memory_plan.cpp
 // checks it). SDRAM per pair: the raw pair, 2 W H = 614,400 bytes read =
 // 4,800 L2 lines of 128 bytes, nothing else frame-scale. A slow object's
-// key region (dsp/key_frame.h) is in SDRAM too (at most W H bytes): written
-// when a key is taken, read (the region and the key's pattern) each pair
-// while it is used.
+// key (dsp/key_frame.h: its region less a hole inside the object, then its
+// pattern; at most W H + max_size^2 bytes) is in SDRAM too: written when a
+// key is taken, read (the ring and the pattern) each pair while it is used.
 #pragma once
 
 #include <cstdint>
@@ -169,7 +169,7 @@ struct memory_plan {
     size_t edge_bands = 0;           // own Sobel bands (0 when they overlay f(t-1))
     size_t edge_bands_overlaid = 0;  // band bytes placed inside f(t-1)'s buffer
     size_t raw_pair_sdram = 0;       // one raw Bayer pair, in SDRAM: 2 W H
-    size_t key_sdram = 0;            // a slow object's key region (dsp/key_frame.h), SDRAM
+    size_t key_sdram = 0;            // a slow object's key (dsp/key_frame.h), SDRAM
 
     size_t l2_bytes() const {
         return right_gray + left_gray + motion_mask + line_scratch + detector + tracker + refit +

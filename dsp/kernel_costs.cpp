@@ -6,6 +6,8 @@
 // ride in the load/store addressing modes and cost nothing.
 #include "dsp/kernel_costs.h"
 
+#include <algorithm>
+
 namespace dsp::cost {
 
 namespace {
@@ -175,6 +177,27 @@ kernel_profile difference_packed_profile(int width, int height, memory where) {
     p.add(loop("8 pixels", op_mix{/*l*/ 2, /*s*/ 4, /*m*/ 0, /*d*/ 3, /*ls*/ 0, /*lsd*/ 2},
                ceil_div(w, 8), latency_load + 3 * latency_alu + latency_store, h));
     p.add(stream(2 * w * h, packed, placed(where)));
+    return p;
+}
+
+kernel_profile key_difference_profile(int width, int height, int hole_width, int hole_height) {
+    // Dif(key, t) over a key's ring (dsp/key_frame.h moved_extent): the loop
+    // of difference_packed over the held pixels (a row beside the hole: its
+    // two segments); the key's bytes come from SDRAM, f(t)'s from L2, and
+    // each row's bits go straight into the block counts (the row stays in
+    // L1D): the ring read over the EMIF once, nothing written.
+    const uint64_t w = non_negative(width), h = non_negative(height);
+    const uint64_t hw = std::min(non_negative(hole_width), w);
+    const uint64_t hh = std::min(non_negative(hole_height), h);
+    const uint64_t ring = w * h - hw * hh;
+    const op_mix eight{/*l*/ 2, /*s*/ 4, /*m*/ 0, /*d*/ 3, /*ls*/ 0, /*lsd*/ 2};
+    const uint64_t latency = latency_load + 3 * latency_alu + latency_store;
+    kernel_profile p("key_difference");
+    p.add(loop("8 pixels", eight, ceil_div(w, 8), latency, h - hh));
+    if (hh > 0)
+        p.add(loop("8 pixels beside the hole", eight, ceil_div(w - hw, 8) + 1, latency, hh));
+    p.add(stream(ring, 0, placement::sdram));
+    p.add(stream(ring, 0, placement::l2));
     return p;
 }
 

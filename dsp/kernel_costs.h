@@ -93,6 +93,10 @@ c64x::kernel_profile three_frame_difference_profile(int width, int height,
 c64x::kernel_profile three_frame_difference_packed_profile(int width, int height,
                                                            memory where = memory::l2);
 c64x::kernel_profile difference_packed_profile(int width, int height, memory where = memory::l2);
+// Dif(key, t) over a key region less its hole (dsp/key_frame.h): the key in
+// SDRAM, f(t) in L2, no mask written.
+c64x::kernel_profile key_difference_profile(int width, int height, int hole_width = 0,
+                                            int hole_height = 0);
 c64x::kernel_profile morphology_profile(int width, int height, int passes);
 c64x::kernel_profile motion_blocks_profile(int width, int height);
 c64x::kernel_profile connected_components_profile(int width, int height, int foreground);

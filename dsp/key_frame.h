@@ -26,8 +26,19 @@
 // outline; object(t) is that extent less the displacement, on the side the
 // object moved to (dsp/box_refit.h, keyed_axis).
 //
-// Memory: the key region in SDRAM (at most W H bytes); the key's pattern is
-// copied for each search into a scratch the caller gives (L2).
+// Memory: the key in SDRAM, its pattern copied for each search into a
+// scratch the caller gives (L2). Of the region only a ring is kept: its
+// rows outside the object box shrunk by hole_inset px each side (the hole),
+// stored back to back, then the pattern. Dif(key, t) is an extent, made at
+// the outline: within max_shift px of the key's box it moves, margin px
+// more for that box's error, and inside that band the object's own pixels
+// only change with its texture. The hole counts as changed (it is the
+// object's, and joins the outline's crescents into one group, as a
+// textured interior did), so an extent that is the hole alone is none. Every byte of the key
+// crosses the EMIF when it is taken and each pair it is read, and capture alone keeps the EMIF
+// busy 23.5-23.7 ms of the 24.5 ms period: the whole region of a ball half
+// the image wide (370 x 367 px) read each pair, and written at each new
+// key, dropped pairs (docs/firmware.md, "the key's ring").
 // Costs: dsp::cost kernels, charged by the controller (stage track).
 #pragma once
 
@@ -48,14 +59,16 @@ class key_frame {
     static constexpr int max_step = 2;    // px per pair, at most, for an object to count as slow
     static constexpr int margin = 8;      // px of the region beyond max_shift around the object
     static constexpr uint32_t turned_mean_sad = 8;  // mean |difference| per pixel: a turned pattern
+    static constexpr int hole_inset = max_shift + margin;  // px of the object's edge kept inside it
 
     key_frame() = default;
     ~key_frame();
     key_frame(const key_frame&) = delete;
     key_frame& operator=(const key_frame&) = delete;
 
-    static size_t sdram_bytes(int max_width, int max_height);
-    void init(int max_width, int max_height);
+    // `max_pattern_side`: the largest pattern's side (the tracker's max_size).
+    static size_t sdram_bytes(int max_width, int max_height, int max_pattern_side);
+    void init(int max_width, int max_height, int max_pattern_side);
 
     bool valid() const { return m_valid; }
     void drop() { m_valid = false; }
@@ -94,12 +107,19 @@ class key_frame {
     void set_outline_only() { m_outline_only = true; }
     int dx() const { return m_dx; }
     int dy() const { return m_dy; }
-    box object() const { return m_object; }    // the object box when the key was taken
-    box region() const { return m_region; }    // the frame's pixels held
+    box object() const { return m_object; }             // the object box when the key was taken
+    box region() const { return m_region; }             // the frame's pixels around the object
+    box hole() const { return m_hole; }                 // of them, the ones not held (may be empty)
+    size_t ring_bytes() const { return m_ring_bytes; }  // the region less the hole
+    size_t stored_bytes() const {  // the ring and the pattern: written when taken
+        return m_ring_bytes + static_cast<size_t>(m_pattern.width) * m_pattern.height;
+    }
     box pattern() const { return m_pattern; }  // where the key's pattern was taken
 
   private:
-    gray_cplane region_plane() const;
+    // Region row y's held pixels: [0, left) and [right, width) of the row
+    // (both width outside the hole's rows: the whole row).
+    void held_span(int y, int* left, int* right) const;
 
     uint8_t* m_pixels = nullptr;  // the region, its width as stride
     size_t m_capacity = 0;
@@ -107,6 +127,8 @@ class key_frame {
     box m_region;
     box m_object;
     box m_pattern;
+    box m_hole;
+    size_t m_ring_bytes = 0;
     int m_dx = 0, m_dy = 0;
     int m_pairs = 0;
     bool m_turned = false;

@@ -1,5 +1,5 @@
 // A built-in scenario co-simulated as a user would run it (`stereosim run
-// --frames 30 --scenario NAME`), and what its report.json says of the
+// --frames 30 --scenario NAME`, or more frames), and what its report.json says of the
 // tracking from the detection on: the scenario tests' shared reading.
 #pragma once
 
@@ -16,11 +16,13 @@
 namespace scenario_test {
 
 // `options`: more of the command line, e.g. "--set scenario.speed=0.2".
-inline nlohmann::json run(const std::string& scenario, const std::string& options = "") {
+// `frames`: sync periods simulated.
+inline nlohmann::json run(const std::string& scenario, const std::string& options = "",
+                          int frames = 30) {
     const std::string dir = testsupport::temp_dir(scenario);
-    const auto r =
-        testsupport::run_command(std::string(STEREOSIM_BINARY) + " run --quiet --frames 30 " +
-                                 "--scenario " + scenario + " " + options + " --out " + dir);
+    const auto r = testsupport::run_command(
+        std::string(STEREOSIM_BINARY) + " run --quiet --frames " + std::to_string(frames) +
+        " --scenario " + scenario + " " + options + " --out " + dir);
     EXPECT_EQ(r.exit_code, 0) << r.output;
     std::ifstream in(dir + "/report.json");
     return nlohmann::json::parse(in, nullptr, false);

@@ -12,19 +12,35 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "dsp/key_frame.h"
+#include "dsp/stride_history.h"
 #include "tests/cli/scenario_tracking.h"
 
 namespace {
 
 using nlohmann::json;
 
-void expect_tracked_in_budget(const json& report, const char* scenario) {
+// Detected within 3 frames of the first motion: three-frame differencing
+// (paper eq. 2-4) needs f(t-2), f(t-1) and f(t).
+constexpr int fast_latency_frames = 3;
+// A slow object's detection is a candidate until it moved
+// key_frame::min_shift px from its key (its whole outline in Dif(key, t),
+// dsp/controller.cpp confirm_slow_object): at 1 px per frame that many
+// frames more.
+constexpr int slow_latency_frames = fast_latency_frames + dsp::key_frame::min_shift;
+// One too slow and small for one pair's differences is seen by the strided
+// detection (dsp/stride_history.h) once two frames a stride apart are kept
+// after it moved, then confirmed as above.
+constexpr int strided_latency_frames = slow_latency_frames + 2 * dsp::stride_history::stride;
+
+void expect_tracked_in_budget(const json& report, const char* scenario,
+                              int latency_frames = fast_latency_frames) {
     ASSERT_TRUE(report.is_object());
     EXPECT_EQ(report["verdict"], "within_budget");
     const json& accuracy = report["summary"]["accuracy"];
     ASSERT_FALSE(accuracy["detection_frame"].is_null()) << "never detected";
     const int detected = accuracy["detection_frame"].get<int>();
-    EXPECT_LE(accuracy["detect_latency_frames"].get<int>(), 3);
+    EXPECT_LE(accuracy["detect_latency_frames"].get<int>(), latency_frames);
     const scenario_test::tracking t =
         scenario_test::tracking_after_detection(report, detected, /*unbounded=*/2);
     ASSERT_GE(t.after, 20);
@@ -51,27 +67,25 @@ TEST(MotionScenarios, FastThrow) {
     EXPECT_EQ(report["config"]["scenario"]["speed"], 2.0);
 }
 
-// Open (docs/firmware.md, "Open"; run with --gtest_also_run_disabled_tests):
-// slow passes, 1 px per frame, co-simulated. The 320 px ball is tracked on
-// its outline once it moved 4 px (box at most 15.7 px off, depth within
-// 0.47 %) but detected 5 frames after its motion began, and a pair is
-// dropped (over budget: after the keyed start's whole-frame SDRAM copy, the
-// first TRACK pairs of a 322 px box take 20-23 ms of CPU while capture
-// keeps the EMIF busy 23.7 of 24.5 ms). The 10 px ball, never detected before
-// the strided detection (dsp/stride_history.h), is detected 12 frames
-// after its motion began (the stride's two kept frames, then 4 px for its
-// candidate), 13 pairs scored of the 20 asked, box 0.86 / 2.55 px from the
-// third, |depth| 0.61 %.
-TEST(MotionScenarios, DISABLED_SlowLargeBall) {
-    const json report = scenario_test::run("large", "--set scenario.speed=0.2");
+// Slow passes, 1 px per frame, co-simulated for 40 periods (a slow
+// detection waits for its object to move; 20 pairs are judged after it).
+// The 320 px ball: before its size was held against one pair's silhouette
+// while keyed and its key held a ring (dsp/key_frame.h), the sensors' noise
+// made that silhouette 31 px short across the motion in its second tracked
+// pair, the key was re-taken on it and the box stood 10-15 px off (mean
+// 10.09 px); and reading and re-writing the key's whole 370 x 367 px region
+// dropped a pair (EMIF busy 24.44 of 24.5 ms while tracked). The 10 px
+// ball, never detected before the strided detection (dsp/stride_history.h).
+TEST(MotionScenarios, SlowLargeBall) {
+    const json report = scenario_test::run("large", "--set scenario.speed=0.2", 40);
     EXPECT_EQ(report["config"]["scenario"]["speed"], 0.2);  // the option reached the run
-    expect_tracked_in_budget(report, "large at 1 px per frame");
+    expect_tracked_in_budget(report, "large at 1 px per frame", slow_latency_frames);
 }
 
-TEST(MotionScenarios, DISABLED_SlowSmallBall) {
-    const json report = scenario_test::run("small", "--set scenario.speed=0.2");
+TEST(MotionScenarios, SlowSmallBall) {
+    const json report = scenario_test::run("small", "--set scenario.speed=0.2", 40);
     EXPECT_EQ(report["config"]["scenario"]["speed"], 0.2);  // the option reached the run
-    expect_tracked_in_budget(report, "small at 1 px per frame");
+    expect_tracked_in_budget(report, "small at 1 px per frame", strided_latency_frames);
 }
 
 // The spinning throw slowed to a fifth of its speed, its ball turning once
@@ -85,15 +99,16 @@ TEST(MotionScenarios, SlowSpinningBallAboutY) {
     expect_tracked_in_budget(report, "spinning at 1 rev/s about y, a fifth of its speed");
 }
 
-// Open: the same about x (docs/firmware.md, "Open"): detected 6 frames
-// after the motion began (19 pairs after it); from the third tracked pair
-// box mean 1.23 px, max 2.82 px, but |depth| 1.17 % in one pair.
+// Open (docs/firmware.md, "Open"): the same about x, detected 6 frames
+// after the motion began; from the third tracked pair box mean 1.03 px,
+// max 2.82 px, but |depth| 0.76-1.17 % in pairs 22-30 (of 29).
 TEST(MotionScenarios, DISABLED_SlowSpinningBallAboutX) {
     const json report = scenario_test::run(
         "spinning",
-        "--set scenario.speed=0.2 --set scenario.spin_rpm=60 --set scenario.spin_axis=x");
+        "--set scenario.speed=0.2 --set scenario.spin_rpm=60 --set scenario.spin_axis=x", 40);
     EXPECT_EQ(report["config"]["scenario"]["spin_rpm"], 60.0);  // the option reached the run
-    expect_tracked_in_budget(report, "spinning at 1 rev/s about x, a fifth of its speed");
+    expect_tracked_in_budget(report, "spinning at 1 rev/s about x, a fifth of its speed",
+                             slow_latency_frames);
 }
 
 }  // namespace

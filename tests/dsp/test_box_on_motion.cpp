@@ -306,6 +306,11 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"heldout6_pass110px_1pxpf_tsukuba", 110, 2.6, pass, 0.2, 0.0, 'x', tsukuba, 30},
         motion_case{"heldout6_circle100px_1pxpf_aloe", 100, 2.6, circle, 0.125, 0.0, 'x', aloe, 30},
         motion_case{"heldout7_pass130px_1_5pxpf_photo4", 130, 2.6, pass, 0.3, 0.0, 'x', photo4, 30},
+        // Half the image wide at 1 px per frame: passes with the rules
+        // before and since a keyed box is not shrunk by one pair's
+        // silhouette (0.85 / 1.71 px both: the host runner has no sensor
+        // noise; the co-simulated MotionScenarios.SlowLargeBall needed them).
+        motion_case{"pass320px_1pxpf", 320, 1.4, pass, 0.2, 0.0, 'x', procedural, 30},
         // Round 7's 160 px ball about z over kodim19, open until a box held
         // where the difference is shorter than the ball and a key's
         // displacement bounded by Dif(key, t) (dsp/box_refit.h).

@@ -179,6 +179,10 @@ TEST_F(KernelCosts, SdramPlacementCostsMoreThanL2) {
         // is an SDRAM stream.
         {"demosaic raw SDRAM->L2", demosaic_gray_cycles(w, h, memory::l2),
          demosaic_gray_cycles(w, h, memory::l2, memory::sdram), sdram_extra(frame, 0)},
+        // Dif(key, t): the key region alone from SDRAM, f(t) from L2, the
+        // bits consumed row by row (no mask written anywhere).
+        {"key difference SDRAM+L2", difference_packed_cycles(w, h, memory::l2),
+         default_model().cycles(key_difference_profile(w, h)), sdram_extra(frame, 0)},
     };
     for (const auto& c : cases) {
         std::printf("%-24s VGA in L2 %9llu cycles, in SDRAM %9llu (x%.2f)\n", c.name,

@@ -24,19 +24,19 @@ struct drawn {
     }
 };
 
-bool in_disc(int x, int y, int cx, int cy) {
-    return (x - cx) * (x - cx) + (y - cy) * (y - cy) <= radius * radius;
+bool in_disc(int x, int y, int cx, int cy, int r = radius) {
+    return (x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r;
 }
 
 // Background: a smooth ramp (40..100); the disc: a checker of 160 / 220
 // whose squares move with it (`texture_shift` turns it instead).
-drawn draw(int cx, int cy, int texture_shift = 0) {
+drawn draw(int cx, int cy, int texture_shift = 0, int r = radius) {
     drawn d;
     int x0 = frame_w, y0 = frame_h, x1 = -1, y1 = -1;
     for (int y = 0; y < frame_h; ++y) {
         for (int x = 0; x < frame_w; ++x) {
             uint8_t v = static_cast<uint8_t>(40 + (x + 2 * y) % 61);
-            if (in_disc(x, y, cx, cy)) {
+            if (in_disc(x, y, cx, cy, r)) {
                 const int u = x - cx + 64 + texture_shift, w = y - cy + 64;
                 v = ((u / 5 + w / 5) % 2) ? 220 : 160;
                 x0 = std::min(x0, x), x1 = std::max(x1, x);
@@ -61,7 +61,7 @@ struct key_fixture : ::testing::Test {
     int positions = 0;
 
     void SetUp() override {
-        key.init(frame_w, frame_h);
+        key.init(frame_w, frame_h, 96);
         blocks.init(frame_w, frame_h);
     }
     bool displace(const drawn& d) {
@@ -166,3 +166,89 @@ TEST_F(key_fixture, APatternOutsideTheRegionGivesNoKey) {
 }
 
 }  // namespace
+
+// A disc of 100 px, larger than twice the hole's inset: the key holds the
+// region less the hole (the disc's box shrunk by hole_inset each side) and
+// the pattern; its extent is still the union of the two discs, and its
+// displacement the drawn motion.
+TEST_F(key_fixture, ALargeKeyHoldsARingAndItsPatternAndMeasuresAlike) {
+    constexpr int large = 50;
+    const drawn start = draw(90, 75, 0, large);
+    const dsp::box pattern{start.disc.x + 30, start.disc.y + 30, 40, 40};
+    key.take(start.plane(), start.disc, pattern);
+    ASSERT_TRUE(key.valid());
+    const int inset = dsp::key_frame::hole_inset;
+    const dsp::box hole = key.hole();
+    EXPECT_EQ(hole.x, start.disc.x + inset);
+    EXPECT_EQ(hole.y, start.disc.y + inset);
+    EXPECT_EQ(hole.width, start.disc.width - 2 * inset);
+    EXPECT_EQ(hole.height, start.disc.height - 2 * inset);
+    const dsp::box r = key.region();
+    EXPECT_EQ(key.ring_bytes(), static_cast<size_t>(r.width * r.height - hole.width * hole.height));
+    EXPECT_EQ(key.stored_bytes(), key.ring_bytes() + 40 * 40);
+    for (int t = 1; t <= 6; ++t) {
+        const drawn now = draw(90 + t, 75 - t / 3, 0, large);
+        ASSERT_TRUE(displace(now)) << "frame " << t;
+        EXPECT_EQ(key.dx(), t);
+        EXPECT_EQ(key.dy(), -(t / 3));
+        if (t < 6) continue;
+        const dsp::block_group g = key.moved_extent(now.plane(), 20, blocks, row.data());
+        ASSERT_TRUE(g.found);
+        const dsp::box expected = union_of(start.disc, now.disc);
+        EXPECT_EQ(g.bbox.x, expected.x);
+        EXPECT_EQ(g.bbox.y, expected.y);
+        EXPECT_EQ(g.bbox.width, expected.width);
+        EXPECT_EQ(g.bbox.height, expected.height);
+    }
+}
+
+// What changes inside the hole is not read: the same disc, still, its
+// texture turned (every pixel of its interior changed) gives no extent,
+// while the turned rim, within hole_inset of the box, does.
+TEST_F(key_fixture, ALargeKeysHoleIsNotRead) {
+    constexpr int large = 50;
+    const drawn start = draw(90, 75, 0, large);
+    const dsp::box pattern{start.disc.x + 30, start.disc.y + 30, 40, 40};
+    key.take(start.plane(), start.disc, pattern);
+    ASSERT_TRUE(key.valid());
+    drawn inside = start;
+    const dsp::box hole = key.hole();
+    for (int y = hole.y; y < hole.bottom(); ++y)
+        for (int x = hole.x; x < hole.right(); ++x)
+            inside.pixels[static_cast<size_t>(y) * frame_w + x] ^= 0x80;
+    EXPECT_FALSE(key.moved_extent(inside.plane(), 20, blocks, row.data()).found);
+    const drawn turned = draw(90, 75, 5, large);
+    const dsp::block_group g = key.moved_extent(turned.plane(), 20, blocks, row.data());
+    ASSERT_TRUE(g.found);
+    EXPECT_EQ(g.bbox.x, start.disc.x);
+    EXPECT_EQ(g.bbox.width, start.disc.width);
+}
+
+// A large disc whose rim differs from the background only in a band 30 px
+// high across its middle (above and below it the disc is the background's
+// gray): its two crescents, 100 px apart, face each other along 30 px only,
+// so they are two groups; the hole (the disc's, counted as changed) joins
+// them, and the extent spans both discs along the motion.
+TEST_F(key_fixture, TheHoleJoinsALargeDiscsCrescents) {
+    constexpr int large = 50, band = 15, cy = 75;
+    auto banded = [&](int cx) {
+        drawn d;
+        for (int y = 0; y < frame_h; ++y)
+            for (int x = 0; x < frame_w; ++x) {
+                const bool lit = in_disc(x, y, cx, cy, large) && y > cy - band && y < cy + band;
+                d.pixels[static_cast<size_t>(y) * frame_w + x] = lit ? 200 : 100;
+            }
+        d.disc = dsp::box{cx - large, cy - large, 2 * large + 1, 2 * large + 1};
+        return d;
+    };
+    const drawn start = banded(90);
+    const dsp::box pattern{70, cy - 10, 40, 20};
+    key.take(start.plane(), start.disc, pattern);
+    ASSERT_TRUE(key.valid());
+    ASSERT_FALSE(key.hole().empty());
+    const drawn now = banded(95);
+    const dsp::block_group g = key.moved_extent(now.plane(), 20, blocks, row.data());
+    ASSERT_TRUE(g.found);
+    EXPECT_EQ(g.bbox.x, start.disc.x);
+    EXPECT_EQ(g.bbox.right(), now.disc.right());
+}
