@@ -50,7 +50,7 @@
 //     the state becomes DETECT (so the three-frame history no longer holds
 //     the frames the track was lost in).
 //   Whenever an object box is known after the above: stereo_match_sad of
-//   the box's core (less 1/8 of each side: a round object's box corners are
+//   the box's core (less 1/7 of each side: a round object's box corners are
 //   background) into the left image, and for a box wider or taller than
 //   96 px its tiles' mean depth around the core's disparity
 //   (dsp/object_depth.h) (stage stereo_sad); Sobel on a band of
