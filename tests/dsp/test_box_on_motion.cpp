@@ -14,7 +14,8 @@
 // per frame (a pass at 6 times its speed) and the throw's bounce, spins of
 // 1 to 10 revolutions per second about each axis; slow passes and circles
 // of 1 to 2 px per frame (suite Slow: the key frame, dsp/key_frame.h), and
-// slow passes spinning at 0.5 to 3 rev/s (suite SlowSpinning).
+// slow passes spinning at 0.5 to 3 rev/s (suite SlowSpinning); slow small
+// balls entering the view from its edge (round 18).
 //
 // The firmware before the silhouette refit (the box moved by the SAD
 // pattern and pulled towards object(t-1)) failed 11 of the first 12 cases
@@ -50,7 +51,7 @@ constexpr double max_box_error_px = 6.0;
 constexpr double max_depth_error_pct = 1.0;
 constexpr double frame_period_ms = 24.5;  // docs/design-brief.md
 
-enum class path_kind { pass, thrown, circle };
+enum class path_kind { pass, thrown, circle, enter };
 enum class backdrop { procedural, cones, kodim23, kodim19, teddy, tsukuba, venus, aloe };
 
 struct motion_case {
@@ -58,7 +59,8 @@ struct motion_case {
     double diameter_px;  // at the path's depth (pass) or at its start (throw)
     double depth_m;
     path_kind path;
-    double speed;     // the path's time scale (ball_paths.h): pass 5, circle 8 px per frame x speed
+    double speed;  // the path's time scale (ball_paths.h): pass and enter 5, circle 8 px per frame
+                   // x speed
     double spin_rps;  // revolutions per second
     char spin_axis;   // x, y or z
     backdrop background;
@@ -89,6 +91,17 @@ std::shared_ptr<const scene::texture_image> photograph(backdrop which) {
     return testsupport::load_photo_texture(test_support::data_path(file));
 }
 
+// The pass's height and velocity (5 px per frame right at speed 1), from
+// where the ball's left 12 px are outside the right view's left edge: it
+// enters the view.
+scene::trajectory entering_path(const motion_case& c, const scene::stereo_rig& rig,
+                                double start_s) {
+    const double centre_px = -0.5 * (rig.width - 1) + 0.5 * c.diameter_px - 12.0;
+    const scene::vec3 from{centre_px / rig.focal_px() * c.depth_m, -0.02 * c.depth_m, c.depth_m};
+    const scene::vec3 velocity{0.26 * c.depth_m * c.speed, 0.02 * c.depth_m * c.speed, 0.0};
+    return scene::trajectory::line(from, velocity, start_s);
+}
+
 scene::scenario scenario_of(const motion_case& c) {
     scene::scenario s;
     const scene::stereo_rig& rig = s.scene.rig;
@@ -106,7 +119,8 @@ scene::scenario scenario_of(const motion_case& c) {
     ball.spin_axis = c.spin_axis == 'x'   ? scene::vec3{1.0, 0.0, 0.0}
                      : c.spin_axis == 'y' ? scene::vec3{0.0, 1.0, 0.0}
                                           : scene::vec3{0.0, 0.0, 1.0};
-    ball.path = c.path == path_kind::pass ? scene::pass_path(c.depth_m, c.speed, start)
+    ball.path = c.path == path_kind::enter  ? entering_path(c, rig, start)
+                : c.path == path_kind::pass ? scene::pass_path(c.depth_m, c.speed, start)
                 : c.path == path_kind::circle
                     ? scene::circling_path(c.depth_m, c.speed, start)
                     : scene::thrown_ball_path(c.depth_m, ball.radius_m, c.speed, start);
@@ -193,6 +207,7 @@ TEST_P(BoxOnMotion, StaysOnTheObject) {
 constexpr path_kind pass = path_kind::pass;
 constexpr path_kind thrown = path_kind::thrown;
 constexpr path_kind circle = path_kind::circle;
+constexpr path_kind enter = path_kind::enter;
 constexpr backdrop procedural = backdrop::procedural;
 constexpr backdrop photo = backdrop::cones;
 constexpr backdrop photo2 = backdrop::kodim23;
@@ -645,20 +660,38 @@ INSTANTIATE_TEST_SUITE_P(SlowDetection, BoxOnMotion,
                                                        circle, 0.125, 0.0, 'x', photo4, 30}),
                          case_name);
 
+// Held out, round 18: slow small balls entering the view from its left
+// edge (a strided detection there is not keyed: mutant fw-85), written
+// before they were run; two of three pass (the third below, open), and
+// fw-85 fails none of them.
+INSTANTIATE_TEST_SUITE_P(HeldOutEntering18, BoxOnMotion,
+                         ::testing::Values(motion_case{"heldout18_enter16px_1pxpf", 16, 2.6, enter,
+                                                       0.2, 0.0, 'x', procedural, 30},
+                                           motion_case{"heldout18_enter40px_1pxpf_teddy", 40, 2.6,
+                                                       enter, 0.2, 0.0, 'x', photo4, 30}),
+                         case_name);
+
 // Open: the issue of the box on fast, large and spinning objects stays open
 // on these (docs/firmware.md, "Open"; run with
-// --gtest_also_run_disabled_tests, both fail). The 60 px ball at 30 px per
+// --gtest_also_run_disabled_tests, all fail). The 60 px ball at 30 px per
 // frame over teddy is left behind from its second tracked pair (box 8.9,
 // 13.6, 31.3, 56.1 px off, depth 133 % while on the background). A 100 px
 // ball circling over venus keeps a box 3.5 px left of it (mean 3.53, max
 // 4.13; its right rim never in Dif(key, t): from 35 px above its centre down
 // to its bottom the shaded limb is 0-18 grey levels off venus's dark frame,
 // under the threshold of 20).
+// Round 18's 20 px ball entering at 0.5 px per frame over kodim19 is
+// started as a part cut by the edge (pair 12, a box 11 px wide at x = 4,
+// one past the border band), lost (pair 15), started and lost so again
+// (25-27), and wholly in view from pair 27 not detected again by pair 39
+// (the strided history restarts at each LOST).
 INSTANTIATE_TEST_SUITE_P(DISABLED_Open, BoxOnMotion,
                          ::testing::Values(motion_case{"heldout2_pass60px_30pxpf_photo4", 60, 2.2,
                                                        pass, 6.0, 9.0, 'x', photo4, 14},
                                            motion_case{"heldout6_circle100px_1pxpf_venus", 100, 2.6,
-                                                       circle, 0.125, 0.0, 'x', venus, 30}),
+                                                       circle, 0.125, 0.0, 'x', venus, 30},
+                                           motion_case{"heldout18_enter20px_halfpxpf_kodim19", 20,
+                                                       2.6, enter, 0.1, 0.0, 'x', photo3, 40}),
                          case_name);
 
 }  // namespace
