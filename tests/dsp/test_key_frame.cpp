@@ -53,6 +53,13 @@ dsp::box union_of(dsp::box a, dsp::box b) {
     return dsp::bounding_union(a, b);
 }
 
+void expect_same_box(dsp::box got, dsp::box expected) {
+    EXPECT_EQ(got.x, expected.x);
+    EXPECT_EQ(got.y, expected.y);
+    EXPECT_EQ(got.width, expected.width);
+    EXPECT_EQ(got.height, expected.height);
+}
+
 struct key_fixture : ::testing::Test {
     dsp::key_frame key;
     dsp::motion_blocks blocks;
@@ -131,11 +138,7 @@ TEST_F(key_fixture, MovedExtentSpansTheKeysAndTheCurrentDisc) {
         if (t < 5) continue;
         const dsp::block_group g = key.moved_extent(now.plane(), 20, blocks, row.data());
         ASSERT_TRUE(g.found);
-        const dsp::box expected = union_of(start.disc, now.disc);
-        EXPECT_EQ(g.bbox.x, expected.x);
-        EXPECT_EQ(g.bbox.y, expected.y);
-        EXPECT_EQ(g.bbox.width, expected.width);
-        EXPECT_EQ(g.bbox.height, expected.height);
+        expect_same_box(g.bbox, union_of(start.disc, now.disc));
         // object(t) from it: the current disc's box.
         const dsp::span x = dsp::keyed_axis(dsp::span{g.bbox.x, g.bbox.width}, key.dx());
         const dsp::span y = dsp::keyed_axis(dsp::span{g.bbox.y, g.bbox.height}, key.dy());
@@ -194,11 +197,7 @@ TEST_F(key_fixture, ALargeKeyHoldsARingAndItsPatternAndMeasuresAlike) {
         if (t < 6) continue;
         const dsp::block_group g = key.moved_extent(now.plane(), 20, blocks, row.data());
         ASSERT_TRUE(g.found);
-        const dsp::box expected = union_of(start.disc, now.disc);
-        EXPECT_EQ(g.bbox.x, expected.x);
-        EXPECT_EQ(g.bbox.y, expected.y);
-        EXPECT_EQ(g.bbox.width, expected.width);
-        EXPECT_EQ(g.bbox.height, expected.height);
+        expect_same_box(g.bbox, union_of(start.disc, now.disc));
     }
 }
 
