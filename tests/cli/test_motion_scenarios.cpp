@@ -1,7 +1,8 @@
 // `--scenario spinning` and `--scenario fast` co-simulated: the scenes on
 // which the reference firmware's box drifted before it followed the
 // silhouette (docs/firmware.md, "Fast and spinning objects"). Checked: the
-// ball is detected within 3 frames of the first motion, the tracker reports
+// ball is detected within 3 frames of the first motion (a slow one: within
+// the frames the design waits for, below), the tracker reports
 // TRACK with a box and a 3D point for every pair after, in budget; from the
 // third tracked pair on the box centre is within 3 px of the truth on
 // average and 6 px in every pair, the depth within 1 %. Before, on 30
@@ -75,7 +76,8 @@ TEST(MotionScenarios, FastThrow) {
 // pair, the key was re-taken on it and the box stood 10-15 px off (mean
 // 10.09 px); and reading and re-writing the key's whole 370 x 367 px region
 // dropped a pair (EMIF busy 24.44 of 24.5 ms while tracked). The 10 px
-// ball, never detected before the strided detection (dsp/stride_history.h).
+// ball was never detected before the strided detection
+// (dsp/stride_history.h).
 TEST(MotionScenarios, SlowLargeBall) {
     const json report = scenario_test::run("large", "--set scenario.speed=0.2", 40);
     EXPECT_EQ(report["config"]["scenario"]["speed"], 0.2);  // the option reached the run
