@@ -15,6 +15,7 @@ namespace {
 
 constexpr int frame_w = 200, frame_h = 150;
 constexpr int radius = 20;
+constexpr int large_radius = 50;  // larger than twice key_frame::hole_inset
 
 struct drawn {
     std::vector<uint8_t> pixels = std::vector<uint8_t>(frame_w * frame_h);
@@ -73,6 +74,12 @@ struct key_fixture : ::testing::Test {
     }
     bool displace(const drawn& d) {
         return key.displacement(d.plane(), scratch.data(), 28, &positions);
+    }
+    // A key of a 100 px disc at (90, 75), its pattern 40 px inside it.
+    drawn take_large_key() {
+        const drawn start = draw(90, 75, 0, large_radius);
+        key.take(start.plane(), start.disc, dsp::box{start.disc.x + 30, start.disc.y + 30, 40, 40});
+        return start;
     }
 };
 
@@ -175,10 +182,7 @@ TEST_F(key_fixture, APatternOutsideTheRegionGivesNoKey) {
 // the pattern; its extent is still the union of the two discs, and its
 // displacement the drawn motion.
 TEST_F(key_fixture, ALargeKeyHoldsARingAndItsPatternAndMeasuresAlike) {
-    constexpr int large = 50;
-    const drawn start = draw(90, 75, 0, large);
-    const dsp::box pattern{start.disc.x + 30, start.disc.y + 30, 40, 40};
-    key.take(start.plane(), start.disc, pattern);
+    const drawn start = take_large_key();
     ASSERT_TRUE(key.valid());
     const int inset = dsp::key_frame::hole_inset;
     const dsp::box hole = key.hole();
@@ -190,7 +194,7 @@ TEST_F(key_fixture, ALargeKeyHoldsARingAndItsPatternAndMeasuresAlike) {
     EXPECT_EQ(key.ring_bytes(), static_cast<size_t>(r.width * r.height - hole.width * hole.height));
     EXPECT_EQ(key.stored_bytes(), key.ring_bytes() + 40 * 40);
     for (int t = 1; t <= 6; ++t) {
-        const drawn now = draw(90 + t, 75 - t / 3, 0, large);
+        const drawn now = draw(90 + t, 75 - t / 3, 0, large_radius);
         ASSERT_TRUE(displace(now)) << "frame " << t;
         EXPECT_EQ(key.dx(), t);
         EXPECT_EQ(key.dy(), -(t / 3));
@@ -205,10 +209,7 @@ TEST_F(key_fixture, ALargeKeyHoldsARingAndItsPatternAndMeasuresAlike) {
 // texture turned (every pixel of its interior changed) gives no extent,
 // while the turned rim, within hole_inset of the box, does.
 TEST_F(key_fixture, ALargeKeysHoleIsNotRead) {
-    constexpr int large = 50;
-    const drawn start = draw(90, 75, 0, large);
-    const dsp::box pattern{start.disc.x + 30, start.disc.y + 30, 40, 40};
-    key.take(start.plane(), start.disc, pattern);
+    const drawn start = take_large_key();
     ASSERT_TRUE(key.valid());
     drawn inside = start;
     const dsp::box hole = key.hole();
@@ -216,7 +217,7 @@ TEST_F(key_fixture, ALargeKeysHoleIsNotRead) {
         for (int x = hole.x; x < hole.right(); ++x)
             inside.pixels[static_cast<size_t>(y) * frame_w + x] ^= 0x80;
     EXPECT_FALSE(key.moved_extent(inside.plane(), 20, blocks, row.data()).found);
-    const drawn turned = draw(90, 75, 5, large);
+    const drawn turned = draw(90, 75, 5, large_radius);
     const dsp::block_group g = key.moved_extent(turned.plane(), 20, blocks, row.data());
     ASSERT_TRUE(g.found);
     EXPECT_EQ(g.bbox.x, start.disc.x);
@@ -229,7 +230,7 @@ TEST_F(key_fixture, ALargeKeysHoleIsNotRead) {
 // so they are two groups; the hole (the disc's, counted as changed) joins
 // them, and the extent spans both discs along the motion.
 TEST_F(key_fixture, TheHoleJoinsALargeDiscsCrescents) {
-    constexpr int large = 50, band = 15, cy = 75;
+    constexpr int large = large_radius, band = 15, cy = 75;
     auto banded = [&](int cx) {
         drawn d;
         for (int y = 0; y < frame_h; ++y)
