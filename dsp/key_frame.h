@@ -34,11 +34,12 @@
 // more for that box's error, and inside that band the object's own pixels
 // only change with its texture. The hole counts as changed (it is the
 // object's, and joins the outline's crescents into one group, as a
-// textured interior did), so an extent that is the hole alone is none. Every byte of the key
-// crosses the EMIF when it is taken and each pair it is read, and capture alone keeps the EMIF
-// busy 23.5-23.7 ms of the 24.5 ms period: the whole region of a ball half
-// the image wide (370 x 367 px) read each pair, and written at each new
-// key, dropped pairs (docs/firmware.md, "the key's ring").
+// textured interior did), so an extent that is the hole alone is none.
+// Every byte of the key crosses the EMIF when it is taken and each pair it
+// is read, and capture alone keeps the EMIF busy 23.5-23.7 ms of the
+// 24.5 ms period: the whole region of a ball half the image wide
+// (370 x 367 px) read each pair, and written at each new key, dropped
+// pairs (docs/firmware.md, "the key's ring").
 // Costs: dsp::cost kernels, charged by the controller (stage track).
 #pragma once
 
@@ -121,7 +122,7 @@ class key_frame {
     // (both width outside the hole's rows: the whole row).
     void held_span(int y, int* left, int* right) const;
 
-    uint8_t* m_pixels = nullptr;  // the region, its width as stride
+    uint8_t* m_pixels = nullptr;  // the ring, row after row, then the pattern
     size_t m_capacity = 0;
     bool m_valid = false;
     box m_region;
