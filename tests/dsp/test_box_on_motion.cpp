@@ -683,15 +683,16 @@ INSTANTIATE_TEST_SUITE_P(HeldOutEntering18, BoxOnMotion,
 // Round 18's 20 px ball entering at 0.5 px per frame over kodim19 is
 // started as a part cut by the edge (pair 12, a box 11 px wide at x = 4,
 // one past the border band), lost (pair 15), started and lost so again
-// (25-27), and wholly in view from pair 27 not detected again by pair 39
-// (the strided history restarts at each LOST).
+// (25-27); wholly in view from pair 27, it is detected again only in pair
+// 42 (the strided history restarts at each LOST), then tracked within
+// 0.93 px (run 60 pairs; as first written, 40, it was not detected again).
 INSTANTIATE_TEST_SUITE_P(DISABLED_Open, BoxOnMotion,
                          ::testing::Values(motion_case{"heldout2_pass60px_30pxpf_photo4", 60, 2.2,
                                                        pass, 6.0, 9.0, 'x', photo4, 14},
                                            motion_case{"heldout6_circle100px_1pxpf_venus", 100, 2.6,
                                                        circle, 0.125, 0.0, 'x', venus, 30},
                                            motion_case{"heldout18_enter20px_halfpxpf_kodim19", 20,
-                                                       2.6, enter, 0.1, 0.0, 'x', photo3, 40}),
+                                                       2.6, enter, 0.1, 0.0, 'x', photo3, 60}),
                          case_name);
 
 }  // namespace
