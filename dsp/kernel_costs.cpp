@@ -166,16 +166,24 @@ kernel_profile three_frame_difference_packed_profile(int width, int height, memo
     return p;
 }
 
+namespace {
+
+// Dif(a, b) thresholded, 8 pixels per iteration:
+//   d 3: 2 LDDW, STB      l 2: 2 SUBABS4
+//   s 4: 2 CMPGTU4, SHL, B      lsd 2: OR, counter
+// -> II 2 (.S / .D bound), 0.25 cycles/pixel.
+c64x::loop_profile difference_loop(const char* name, uint64_t iterations, uint64_t rows) {
+    return loop(name, op_mix{/*l*/ 2, /*s*/ 4, /*m*/ 0, /*d*/ 3, /*ls*/ 0, /*lsd*/ 2}, iterations,
+                latency_load + 3 * latency_alu + latency_store, rows);
+}
+
+}  // namespace
+
 kernel_profile difference_packed_profile(int width, int height, memory where) {
-    // Dif(a, b) packed, 8 pixels per iteration:
-    //   d 3: 2 LDDW, STB      l 2: 2 SUBABS4
-    //   s 4: 2 CMPGTU4, SHL, B      lsd 2: OR, counter
-    // -> II 2 (.S / .D bound), 0.25 cycles/pixel.
     const uint64_t w = non_negative(width), h = non_negative(height);
     const uint64_t packed = ceil_div(w, 8) * h;
     kernel_profile p("difference_packed");
-    p.add(loop("8 pixels", op_mix{/*l*/ 2, /*s*/ 4, /*m*/ 0, /*d*/ 3, /*ls*/ 0, /*lsd*/ 2},
-               ceil_div(w, 8), latency_load + 3 * latency_alu + latency_store, h));
+    p.add(difference_loop("8 pixels", ceil_div(w, 8), h));
     p.add(stream(2 * w * h, packed, placed(where)));
     return p;
 }
@@ -190,12 +198,9 @@ kernel_profile key_difference_profile(int width, int height, int hole_width, int
     const uint64_t hw = std::min(non_negative(hole_width), w);
     const uint64_t hh = std::min(non_negative(hole_height), h);
     const uint64_t ring = w * h - hw * hh;
-    const op_mix eight{/*l*/ 2, /*s*/ 4, /*m*/ 0, /*d*/ 3, /*ls*/ 0, /*lsd*/ 2};
-    const uint64_t latency = latency_load + 3 * latency_alu + latency_store;
     kernel_profile p("key_difference");
-    p.add(loop("8 pixels", eight, ceil_div(w, 8), latency, h - hh));
-    if (hh > 0)
-        p.add(loop("8 pixels beside the hole", eight, ceil_div(w - hw, 8) + 1, latency, hh));
+    p.add(difference_loop("8 pixels", ceil_div(w, 8), h - hh));
+    if (hh > 0) p.add(difference_loop("8 pixels beside the hole", ceil_div(w - hw, 8) + 1, hh));
     p.add(stream(ring, 0, placement::sdram));
     p.add(stream(ring, 0, placement::l2));
     return p;

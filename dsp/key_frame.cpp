@@ -97,19 +97,20 @@ block_group key_frame::moved_extent(gray_cplane frame, uint8_t threshold, motion
     if (!m_valid) return block_group{};
     blocks.begin(m_region.width, m_region.height);
     const uint8_t* then = m_pixels;
+    // Dif of the held pixels [x0, x1) of a row; `then` walks the ring.
+    auto differ = [&](const uint8_t* now, int x0, int x1) {
+        for (int x = x0; x < x1; ++x, ++then) {
+            const int diff = now[x] > *then ? now[x] - *then : *then - now[x];
+            row[x] = diff > threshold ? 1 : 0;
+        }
+    };
     for (int y = 0; y < m_region.height; ++y) {
         const uint8_t* now = frame.row(m_region.y + y) + m_region.x;
         int left = 0, right = 0;
         held_span(y, &left, &right);
-        for (int x = 0; x < m_region.width; ++x) {
-            if (x >= left && x < right) {  // the hole: inside the object (see above)
-                row[x] = 1;
-                continue;
-            }
-            const int diff = now[x] > *then ? now[x] - *then : *then - now[x];
-            ++then;
-            row[x] = diff > threshold ? 1 : 0;
-        }
+        differ(now, 0, left);
+        std::memset(row + left, 1, static_cast<size_t>(right - left));  // the hole: the object's
+        differ(now, right, m_region.width);
         blocks.add_row(row, y);
     }
     box seed = m_object;
