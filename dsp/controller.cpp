@@ -725,11 +725,15 @@ bool controller::impl::confirm_slow_object(uint64_t* cycles, sdram_traffic* traf
         key.drop();
         return false;
     }
+    const block_group moved = keyed_extent(cycles, traffic);
     box object;
-    const bool outlined =
-        keyed_object(keyed_extent(cycles, traffic), key.dx(), key.dy(), true, &object);
+    const bool outlined = keyed_object(moved, key.dx(), key.dy(), true, &object);
     key.drop();
-    if (!outlined || at_border(object)) return false;
+    // object(t) lies within Dif(key, t)'s extent. Where that extent reaches
+    // the border band, the image edge may cut the outline: a ball entering
+    // the view has its trailing rim outside, and its box would be the part
+    // inside, started as the whole object.
+    if (!outlined || at_border(moved.bbox)) return false;
     tracker.start(history(0), object);
     *cycles += cycles_of(
         cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));

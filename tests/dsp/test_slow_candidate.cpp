@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "dsp/controller.h"
+#include "dsp/key_frame.h"
+#include "dsp/motion_detect.h"
 #include "model/scene/ball_paths.h"
 #include "tests/support/host/scenarios.h"
 #include "tests/support/host/stereo_runner.h"
@@ -197,5 +199,46 @@ TEST(SlowCandidate, DropsACandidateWhosePatternIsLost) {
         ASSERT_GE(first, 0) << "never tracked (about " << c.axis << " at " << c.rps << " rev/s)";
         EXPECT_LE(first - start, 12)
             << "about " << c.axis << " at " << c.rps << " rev/s: tracked in frame " << first;
+    }
+}
+
+// A slow ball entering the view from its left edge: while the edge cuts it,
+// a candidate keyed on its visible part reads Dif(key, t) up to the edge,
+// and the outline's trailing side there is not in the image; no box is
+// reported until the whole ball is in view (stereo needs it whole, as a
+// detection cut by the border, dsp/controller.cpp start_detection), and it
+// is then tracked. The cases are a 20 px ball at 0.5 px per frame and a
+// 40 px ball at 1 px per frame, each starting with 12 px of it outside.
+TEST(SlowCandidate, DoesNotStartABallCutByTheImageEdge) {
+    struct entering {
+        double diameter_px, px_per_frame;
+        int frames;
+    };
+    for (const entering& c : {entering{20.0, 0.5, 70}, entering{40.0, 1.0, 40}}) {
+        scene::scenario s = procedural_scene(c.frames);
+        const double f = s.scene.rig.focal_px();
+        const double centre_px = -0.5 * (s.scene.rig.width - 1) + 0.5 * c.diameter_px - 12.0;
+        s.scene.balls.push_back(
+            ball_of(c.diameter_px, pass(s, centre_px / f * depth_m, 0.0, c.px_per_frame, 3), f));
+        const run_result r = run(s);
+        std::printf("%.0f px at %.1f px/frame: states %s\n", c.diameter_px, c.px_per_frame,
+                    states(r).c_str());
+        for (const host::host_record& rec : r.records) {
+            const scene::sphere_image& t = r.truth[static_cast<size_t>(rec.index)][0].right;
+            EXPECT_FALSE(rec.firmware.has_object && !t.inside_image)
+                << c.diameter_px << " px: a box at x = " << rec.firmware.box_right.x << " in frame "
+                << rec.index << ", the ball's left rim at " << t.min_x;
+        }
+        // Tracked within 3 pairs (a detection) + the candidate's min_shift px
+        // at the ball's speed, twice over, of the ball clearing the border band.
+        const int band = dsp::detect_params{}.close_passes + 1;
+        int clear = -1;
+        for (int n = 0; n < c.frames && clear < 0; ++n)
+            if (r.truth[static_cast<size_t>(n)][0].right.min_x > band + 1) clear = n;
+        const int first = first_tracked(r, 0);
+        ASSERT_GE(first, 0) << c.diameter_px << " px: never tracked";
+        EXPECT_LE(first - clear, 3 + 2 * dsp::key_frame::min_shift / c.px_per_frame)
+            << c.diameter_px << " px: clear of the border in frame " << clear << ", tracked in "
+            << first;
     }
 }
