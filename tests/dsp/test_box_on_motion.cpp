@@ -681,6 +681,26 @@ INSTANTIATE_TEST_SUITE_P(HeldOutEntering18, BoxOnMotion,
                                                        2.6, enter, 0.1, 0.0, 'x', photo3, 60}),
                          case_name);
 
+// Held out, round 19: fast balls (20-30 px per frame), spinning, over six
+// photographs, written before they were run, on the firmware as it stood
+// (the slow candidate's cut-extent check in): these six pass; the two over
+// teddy, with heldout2's 60 px ball the open case there, fail (below,
+// DISABLED_Open).
+INSTANTIATE_TEST_SUITE_P(HeldOutFast19, BoxOnMotion,
+                         ::testing::Values(motion_case{"heldout19_pass45px_30pxpf_7rps_y_kodim23",
+                                                       45, 2.2, pass, 6.0, 7.0, 'y', photo2, 14},
+                                           motion_case{"heldout19_pass70px_25pxpf_9rps_x_cones", 70,
+                                                       2.0, pass, 5.0, 9.0, 'x', photo, 14},
+                                           motion_case{"heldout19_pass90px_30pxpf_4rps_z_venus", 90,
+                                                       1.8, pass, 6.0, 4.0, 'z', venus, 13},
+                                           motion_case{"heldout19_pass50px_30pxpf_9rps_x_tsukuba",
+                                                       50, 2.2, pass, 6.0, 9.0, 'x', tsukuba, 14},
+                                           motion_case{"heldout19_pass60px_20pxpf_6rps_x_aloe", 60,
+                                                       2.2, pass, 4.0, 6.0, 'x', aloe, 14},
+                                           motion_case{"heldout19_pass30px_30pxpf_3rps_y_kodim19",
+                                                       30, 2.4, pass, 6.0, 3.0, 'y', photo3, 16}),
+                         case_name);
+
 // Open: the issue of the box on fast, large and spinning objects stays open
 // on these (docs/firmware.md, "Open"; run with
 // --gtest_also_run_disabled_tests, all fail). The 60 px ball at 30 px per
@@ -689,12 +709,23 @@ INSTANTIATE_TEST_SUITE_P(HeldOutEntering18, BoxOnMotion,
 // ball circling over venus keeps a box 3.5 px left of it (mean 3.53, max
 // 4.13; its right rim never in Dif(key, t): from 35 px above its centre down
 // to its bottom the shaded limb is 0-18 grey levels off venus's dark frame,
-// under the threshold of 20).
+// under the threshold of 20). Round 19's two fast balls over teddy fail as
+// heldout2's does: 80 px at 25 px per frame, box 7.33 / 12.84 px (8.0 and
+// 12.4 px behind in pairs 6 and 8, 10.2 px high in pair 10); 40 px at
+// 30 px per frame, 6.05 / 6.90 px (4-6 px behind and above). In all three
+// Dif(t-1,t)'s trailing edge, object(t-1)'s rim, is within 1.5 px of the
+// truth in every pair (2.6 once), while its leading edge, object(t)'s, is
+// 3-14 px short in 13 of their 27 pairs: the ball's shaded side against
+// teddy's dark areas, under the threshold.
 INSTANTIATE_TEST_SUITE_P(DISABLED_Open, BoxOnMotion,
                          ::testing::Values(motion_case{"heldout2_pass60px_30pxpf_photo4", 60, 2.2,
                                                        pass, 6.0, 9.0, 'x', photo4, 14},
                                            motion_case{"heldout6_circle100px_1pxpf_venus", 100, 2.6,
-                                                       circle, 0.125, 0.0, 'x', venus, 30}),
+                                                       circle, 0.125, 0.0, 'x', venus, 30},
+                                           motion_case{"heldout19_pass80px_25pxpf_5rps_x_teddy", 80,
+                                                       1.9, pass, 5.0, 5.0, 'x', photo4, 14},
+                                           motion_case{"heldout19_pass40px_30pxpf_8rps_z_teddy", 40,
+                                                       2.4, pass, 6.0, 8.0, 'z', photo4, 14}),
                          case_name);
 
 }  // namespace
