@@ -2,7 +2,7 @@
 // depth within 1 % of the visible surface's mean depth for an object up to
 // half the image wide).
 //
-// One SAD match of the object's core (dsp/controller.cpp object_core) sees a
+// One SAD match of the object's core (dsp/controller_stereo.cpp object_core) sees a
 // surface whose depth varies across the match: on a sphere 320 px wide at
 // 1.4 m the visible surface spans 1.12-1.40 m, and the core's single
 // disparity was 0.8-1.3 % nearer than the surface's mean depth. So a large

@@ -26,7 +26,7 @@ using nlohmann::json;
 constexpr int fast_latency_frames = 3;
 // A slow object's detection is a candidate until it moved
 // key_frame::min_shift px from its key (its whole outline in Dif(key, t),
-// dsp/controller.cpp confirm_slow_object): at 1 px per frame that many
+// dsp/controller_detect.cpp confirm_slow_object): at 1 px per frame that many
 // frames more.
 constexpr int slow_latency_frames = fast_latency_frames + dsp::key_frame::min_shift;
 // One too slow and small for one pair's differences is seen by the strided

@@ -256,7 +256,7 @@ INSTANTIATE_TEST_SUITE_P(
 // miss the outline along the motion, and the box's size and place across
 // it come from a key frame (dsp/key_frame.h); a slow detection is started
 // only once its object moved key_frame::min_shift px, on Dif(key, t)'s
-// outline (dsp/controller.cpp, start_track), as one pair's detection may
+// outline (dsp/controller_detect.cpp, start_track), as one pair's detection may
 // hold a crescent of it. The first case was an open case (mean 4.20, max
 // 7.81 px before the key frame).
 INSTANTIATE_TEST_SUITE_P(
@@ -360,10 +360,10 @@ INSTANTIATE_TEST_SUITE_P(
 // four here failed until the key read its displacement from Dif(key, t) once
 // its pattern turned (dsp/box_refit.h, difference_shift): development cases
 // of that rule since. The three 140 px balls about y after them failed until
-// a key of the outline (dsp/controller.cpp, follow_outline_key; 1 rev/s was
+// a key of the outline (dsp/controller_key.cpp, follow_outline_key; 1 rev/s was
 // traced for it): their texture outran them, no key was taken and the
 // silhouette missed their poles. The last two failed until a detection's box
-// may grow to both differences' common part (dsp/controller.cpp,
+// may grow to both differences' common part (dsp/controller_track.cpp,
 // follow_object; 1 rev/s about x was traced for it) and the axis across the
 // motion of a key of the outline was judged afresh each pair.
 INSTANTIATE_TEST_SUITE_P(
@@ -528,7 +528,7 @@ INSTANTIATE_TEST_SUITE_P(
 // Held out, round 13: slow balls spinning fast enough that the texture
 // outruns the ball (about y, x and z; one circling), on sizes, rates and
 // backgrounds no case had, written and committed before a key of the
-// outline (dsp/controller.cpp, follow_outline_key) ran on them, run once on
+// outline (dsp/controller_key.cpp, follow_outline_key) ran on them, run once on
 // it and once on the firmware before: 7 of 8 pass on both (the key moved four
 // means: 1.02 -> 0.65, 2.08 -> 1.15, 1.26 -> 0.75, 1.00 -> 0.91 px). A 110 px
 // ball circling over teddy at 2 rev/s failed on both (24.1 px; its

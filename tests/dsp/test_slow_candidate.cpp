@@ -1,4 +1,4 @@
-// The controller's slow candidate (dsp/controller.cpp, start_track and
+// The controller's slow candidate (dsp/controller_detect.cpp, start_track and
 // confirm_slow_object) on rendered scenes: a detection whose SAD barely
 // moved waits for its object to move key_frame::min_shift px and starts on
 // Dif(key, t)'s outline; it gives up on an object that does not move that
@@ -206,7 +206,7 @@ TEST(SlowCandidate, DropsACandidateWhosePatternIsLost) {
 // a candidate keyed on its visible part reads Dif(key, t) up to the edge,
 // and the outline's trailing side there is not in the image; no box is
 // reported until the whole ball is in view (stereo needs it whole, as a
-// detection cut by the border, dsp/controller.cpp start_detection), and it
+// detection cut by the border, dsp/controller_detect.cpp start_detection), and it
 // is then tracked. The cases are a 20 px ball at 0.5 px per frame and a
 // 40 px ball at 1 px per frame, each starting with 12 px of it outside.
 TEST(SlowCandidate, DoesNotStartABallCutByTheImageEdge) {

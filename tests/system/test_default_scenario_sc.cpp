@@ -232,7 +232,7 @@ TEST(default_scenario, golden_stage_cycles_and_one_timeline) {
     // (+182,646: 3,559,731 before); its left image is then made after the
     // detection in pair 4, the same preprocess cycles.
     // The stereo core a seventh of each side, not an eighth (its corners off
-    // the background, dsp/controller.cpp object_core) moved stereo_sad: a
+    // the background, dsp/controller_stereo.cpp object_core) moved stereo_sad: a
     // smaller core to match (260,877 before).
     constexpr uint64_t golden[dsp::stage_count] = {
         6000,      // capture: 10 pairs x 600

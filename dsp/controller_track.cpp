@@ -1,0 +1,260 @@
+// TRACK: the SAD box (paper eq. 5) and its refit from the two frame
+// differences around it (dsp/box_refit.h).
+#include "dsp/controller_impl.h"
+
+namespace dsp {
+
+using namespace controller_parts;
+
+namespace {
+
+// Where the differences are read when the object's box at t-1 was `last`:
+// the box grown by its own size and by `reach` (how far the object may have
+// moved since) each side, clipped to the frame. A box much smaller than the
+// object (an 8-21 px box started on an 80 px ball) sees its object's extent
+// only in a region this wide; grown by a quarter of its size, the box shrank
+// on such a ball instead of growing.
+box size_rule_region(box last, int reach, int width, int height) {
+    const int grow_x = max_int(2, last.width) + reach, grow_y = max_int(2, last.height) + reach;
+    const int x0 = max_int(0, last.x - grow_x), y0 = max_int(0, last.y - grow_y);
+    const int x1 = min_int(width, last.right() + grow_x);
+    const int y1 = min_int(height, last.bottom() + grow_y);
+    return box{x0, y0, max_int(0, x1 - x0), max_int(0, y1 - y0)};
+}
+
+}  // namespace
+
+// Stage track: SAD search around the last position (the tracker keeps the
+// size), then the size rule of dsp/tracker.h, applied here with a correctly
+// aligned mask: the three-frame mask is object(t-1), the object where it was
+// at t-1, i.e. around the LAST box, while sad_tracker's own rule looks for it
+// around the NEW box, one frame of motion away (at 15 px per frame that
+// shrank the box to a third of the ball). The resized box is handed back to
+// the tracker with start(), which re-takes the pattern there.
+bool controller::impl::track(frame_output& out) {
+    stage_scope scope(*hardware, stage::track, out);
+    uint64_t cycles = 0;
+    sdram_traffic traffic;
+    track_motion seen;
+    const bool tracking = track_object(&cycles, &traffic, &seen);
+    // The refit has used Dif(t-2,t-1); now Dif(t-1,t) for the next pair.
+    update_motion_mask(&cycles, &traffic);
+    if (tracking) {
+        follow_slow_object(seen, &cycles, &traffic);
+    } else {
+        key.drop();
+    }
+    scope.charge(cycles, traffic);
+    return tracking;
+}
+
+// The box follows the object's silhouette where the differences give it
+// (follow_object), the SAD search then centred there: the pattern of paper
+// eq. 5 follows the object's texture, which a spinning ball moves against
+// its outline, and a search around the last position misses an object that
+// moved further than the search radius. Where they do not (the object
+// stopped, or an extent its size cannot explain), the SAD box is kept,
+// refitted towards object(t-1) (pull_box). A silhouette that moved as the
+// object does keeps the track when the pattern no longer matches (a texture
+// that turned); SAD's own lost rule decides only without one.
+bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, track_motion* seen) {
+    const box last = tracker.position();
+    const box pattern = tracker.pattern_box();
+    const motion_extents motion = measure_motion(last, nullptr, cycles, traffic);
+    box followed;
+    const bool keyed = key.valid() && !key.outline_only();
+    const bool follows =
+        motion.found && follow_object(motion, last, box_may_be_part, keyed, &followed);
+    const track_status status =
+        follows ? tracker.update_near(history(0), followed) : tracker.update(history(0));
+    *cycles += cycles_of(
+        cost::sad_search_profile(pattern.width, pattern.height, tracker.last_match().positions));
+    if (status != track_status::tracking && !follows) return false;
+    if (status == track_status::tracking)
+        *cycles += cycles_of(
+            cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
+
+    const box found = tracker.position();
+    const int step = key_frame::max_step;
+    seen->sad_slow = status == track_status::tracking && moved_at_most(last, found, step);
+    if (follows) {
+        const centre_gap off = centre_offset2(followed, found);
+        seen->confirmed = 2 * max_int(step, found.width / 8) >= off.x2 &&
+                          2 * max_int(step, found.height / 8) >= off.y2;
+        const centre_gap moved = centre_offset2(followed, last);
+        seen->outlined = true;
+        seen->outline_slow = 2 * step >= moved.x2 && 2 * step >= moved.y2;
+    }
+    if (follows && near_size(followed.width, last.width, max_int(2, last.width / 8)) &&
+        near_size(followed.height, last.height, max_int(2, last.height / 8)))
+        box_may_be_part = false;  // a silhouette of the box's size
+    box resized = found;
+    if (follows) {
+        resized = followed;
+    } else if (motion.found) {
+        resized = pull_box(motion, last, found);
+    }
+    if (status != track_status::tracking || !same_box(resized, found)) {
+        tracker.start(history(0), resized);
+        *cycles += cycles_of(
+            cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
+    }
+    return true;
+}
+
+// object(t-1)'s box is the box where both differences around it agree:
+// Dif(t-2,t-1) spans object(t-2) and object(t-1), Dif(t-1,t) spans
+// object(t-1) and object(t), so for a motion that does not reverse within
+// the three frames the intersection of their extents is object(t-1)'s (the
+// three-frame rule of eq. 4 applied to boxes). Each extent is the block group
+// of that difference that is one object with the last box
+// (dsp/motion_blocks.h: a large object's two crescents and its texture
+// joined). The pixel AND of eq. 4 does not do here: on a mainly horizontal
+// motion it holds almost nothing at the object's top and bottom (the lens
+// there is v^2 / 2R high, 0.08 px for a 320 px ball at 5 px per frame), and
+// measured the box's height jumped by up to 53 px from pair to pair.
+// Both need enough set pixels: at least min_area, or an eighth of the last
+// box's area if that is less (fewer: the object stopped).
+// In DETECT object(t-1) is the detection's (`detected`) and the packed mask
+// already holds Dif(t-1,t): only that difference is read.
+controller::impl::motion_extents controller::impl::measure_motion(box last, const box* detected,
+                                                                  uint64_t* cycles,
+                                                                  sdram_traffic* traffic) {
+    const box region = size_rule_region(last, config.track.search_radius, width, height);
+    const uint8_t threshold = config.detect.threshold;
+    motion_blocks& earlier = detector.blocks();
+    if (!detected) earlier.begin(region.width, region.height);
+    later_blocks.begin(region.width, region.height);
+    uint8_t* earlier_row = refit_rows;
+    uint8_t* later_row = refit_rows + region.width;
+    for (int y = 0; y < region.height; ++y) {
+        const int frame_y = region.y + y;
+        if (detected) {
+            for (int x = 0; x < region.width; ++x)
+                later_row[x] = packed_bit(motion_mask, width, region.x + x, frame_y) ? 1 : 0;
+            later_blocks.add_row(later_row, y);
+            continue;
+        }
+        const uint8_t* f_tm1 = history(1).row(frame_y) + region.x;
+        const uint8_t* f_t = history(0).row(frame_y) + region.x;
+        for (int x = 0; x < region.width; ++x) {
+            const int diff = f_tm1[x] > f_t[x] ? f_tm1[x] - f_t[x] : f_t[x] - f_tm1[x];
+            earlier_row[x] = packed_bit(motion_mask, width, region.x + x, frame_y) ? 1 : 0;
+            later_row[x] = diff > threshold ? 1 : 0;
+        }
+        earlier.add_row(earlier_row, y);
+        later_blocks.add_row(later_row, y);
+    }
+    const box seed = shifted(last, -region.x, -region.y);
+    const int labellings = detected ? 1 : 2;  // the extents below
+    *cycles += cycles_of(cost::three_frame_difference_packed_profile(region.width, region.height,
+                                                                     config.frame_memory)) +
+               labellings * cycles_of(cost::motion_blocks_profile(region.width, region.height));
+    *traffic += cost::three_frame_difference_packed_traffic(region.width, region.height,
+                                                            config.frame_memory);
+    motion_extents m;
+    const int enough = min_int(config.detect.min_area, last.width * last.height / 8);
+    const block_group after = later_blocks.extent(seed, 0);
+    if (!after.found || after.pixels < enough) return m;
+    if (detected) {
+        m.before = m.previous = shifted(*detected, -region.x, -region.y);
+    } else {
+        const block_group before = earlier.extent(seed, 0);
+        if (!before.found || before.pixels < enough) return m;
+        m.before = before.bbox;
+        m.previous = intersection(before.bbox, after.bbox);
+        if (m.previous.empty()) return m;  // the motion reversed: no common box
+    }
+    m.found = true;
+    m.after = m.both = after.bbox;
+    m.before = shifted(m.before, region.x, region.y);
+    m.after = shifted(m.after, region.x, region.y);
+    m.previous = shifted(m.previous, region.x, region.y);
+    m.both = shifted(m.both, region.x, region.y);
+    return m;
+}
+
+// object(t) from the extents, per axis: object(t-1) (previous_axis) and
+// where Dif(t-1,t) reaches past it (follow_axis), as wide as object(t-1)
+// (the last box's size where the motion reversed). Not given when object(t-1)'s extent is not the
+// size of the last box (within an eighth, at least 2 px: else the difference did not outline the
+// object, which nearly stopped and only its texture changed, or it held more than the object), when
+// Dif(t-1,t) reaches further than the object could have moved (twice the search radius: a change of
+// the light, another mover joined), or when object(t) touches the image border (the SAD's rule then
+// says whether it is leaving). On an axis where Dif(t-1,t) is a part of the object (is_part: a
+// slow ball's leading crescent), object(t) is the last box's size from the part's outer edge.
+// A box that may be a part of its object (`may_be_part`: a detection's, until a silhouette of its
+// size confirms it) of a slow object takes object(t-1)'s extent, the common part of both
+// differences, on an axis where that extent holds the box and is larger than the tolerance
+// allows: the three-frame AND of a slow spinning ball holds where its texture changed most (a
+// detection 67 x 34 px of a 110 px ball, 88 px wide of 140), both differences the whole ball. Not
+// later in a track (at a bounce the common part holds the ball and where it was and will be), nor
+// for a fast object (a throw's first common part is over an eighth larger than its detection).
+bool controller::impl::follow_object(const motion_extents& motion, box last, bool may_be_part,
+                                     bool keyed, box* followed) const {
+    const track_params& p = config.track;
+    const bool part_x = is_part(x_span(motion.both), x_span(last));
+    const bool part_y = is_part(y_span(motion.both), y_span(last));
+    if (part_x && part_y) return false;
+    const int tolerance_x = max_int(2, last.width / 8), tolerance_y = max_int(2, last.height / 8);
+    const span common_x = x_span(motion.previous), common_y = y_span(motion.previous);
+    // A slow object's: both differences' extents within min_shift px of each other.
+    const int slow = key_frame::min_shift;
+    const bool grows = may_be_part && near_size(motion.before.x, motion.after.x, slow) &&
+                       near_size(motion.before.right(), motion.after.right(), slow) &&
+                       near_size(motion.before.y, motion.after.y, slow) &&
+                       near_size(motion.before.bottom(), motion.after.bottom(), slow);
+    const bool grown_x = grows && !part_x && covers(common_x, x_span(last)) &&
+                         common_x.size > last.width + tolerance_x;
+    const bool grown_y = grows && !part_y && covers(common_y, y_span(last)) &&
+                         common_y.size > last.height + tolerance_y;
+    const span previous_x =
+        grown_x ? common_x : previous_axis(x_span(motion.before), x_span(motion.after), last.width);
+    const span previous_y =
+        grown_y ? common_y
+                : previous_axis(y_span(motion.before), y_span(motion.after), last.height);
+    if ((!part_x && !grown_x && !near_size(previous_x.size, last.width, tolerance_x)) ||
+        (!part_y && !grown_y && !near_size(previous_y.size, last.height, tolerance_y)))
+        return false;
+    // object(t-1)'s measured size (within the tolerance above of the last):
+    // its edges and object(t)'s leading edge are found alike, so their
+    // rounding cancels in the centre. A part's axis keeps the last size.
+    const int w = part_x || near_size(previous_x.size, last.width, 1)
+                      ? last.width
+                      : max_int(p.min_size, min_int(width, previous_x.size));
+    const int h = part_y || near_size(previous_y.size, last.height, 1)
+                      ? last.height
+                      : max_int(p.min_size, min_int(height, previous_y.size));
+    const int reach = 2 * p.search_radius;
+    if (motion.both.width - w > reach || motion.both.height - h > reach) return false;
+    // Across the motion a size the differences measured short is not taken.
+    const int moved_x = motion.both.width - previous_x.size;
+    const int moved_y = motion.both.height - previous_y.size;
+    const bool unmoved = keyed && moved_x < slow && moved_y < slow;
+    const int size_x = unmoved || across_motion(moved_x, moved_y) ? max_int(w, last.width) : w;
+    const int size_y = unmoved || across_motion(moved_y, moved_x) ? max_int(h, last.height) : h;
+    const box b =
+        from_spans(part_x ? part_axis(x_span(motion.both), x_span(last))
+                          : follow_axis(previous_x, x_span(motion.both), x_span(last), size_x),
+                   part_y ? part_axis(y_span(motion.both), y_span(last))
+                          : follow_axis(previous_y, y_span(motion.both), y_span(last), size_y));
+    if (at_border(b)) return false;
+    *followed = b;
+    return true;
+}
+
+// The SAD box refitted towards object(t-1) per axis (pull_axis): its size
+// follows the object's, and its centre is pulled towards the object's. The
+// pull keeps the box on the object: re-taking the pattern at an integer
+// position every frame makes the box drift by the rounding of the object's
+// motion (0.3 px per frame at 0.7 px/frame, measured 9 px after 30 frames
+// without it; 0.8 px per frame on a ball 160 px wide).
+box controller::impl::pull_box(const motion_extents& motion, box last, box found) const {
+    const track_params& p = config.track;
+    return from_spans(
+        pull_axis(x_span(found), x_span(last), x_span(motion.previous), p.min_size, width, width),
+        pull_axis(y_span(found), y_span(last), y_span(motion.previous), p.min_size, height,
+                  height));
+}
+
+}  // namespace dsp
