@@ -164,6 +164,8 @@ bool controller::impl::start_track(box detected, uint64_t* cycles, sdram_traffic
     key.drop();
     slow_candidate = false;
     box_may_be_part = true;
+    recent_extents.clear();  // a new track: the window starts at its detection
+    if (motion.found) recent_extents.push(x_span(motion.after), y_span(motion.after));
     if (follows) {
         tracker.start(history(0), followed);
         *cycles += cycles_of(

@@ -8,6 +8,7 @@
 
 #include "dsp/box_refit.h"
 #include "dsp/controller.h"
+#include "dsp/extent_window.h"
 #include "dsp/kernel_costs.h"
 #include "dsp/key_frame.h"
 #include "dsp/sobel.h"
@@ -142,6 +143,7 @@ struct controller::impl {
     bool key_first_seen = false;   // Dif(key, t) found since the key was taken
     char outline_key_across = 0;   // a key of the outline: 'x' or 'y' across the motion, 0 unknown
     bool box_may_be_part = false;  // a detection's box no silhouette of its size has confirmed
+    extent_window recent_extents;  // Dif(t-1,t)'s extents of this track's last pairs
 
     // Disparities (Q8) of the depth range's ends, without the search margin.
     int64_t far_disparity_q8 = 0, near_disparity_q8 = 0;
@@ -226,7 +228,7 @@ struct controller::impl {
     motion_extents measure_motion(box last, const box* detected, uint64_t* cycles,
                                   sdram_traffic* traffic);
     bool follow_object(const motion_extents& motion, box last, bool may_be_part, bool keyed,
-                       box* followed) const;
+                       box* followed, int* fitted_axes = nullptr) const;
     box pull_box(const motion_extents& motion, box last, box found) const;
     void stereo_sad(box object, bool outlined, frame_output& out);
     void stereo_edge(box object, frame_output& out);

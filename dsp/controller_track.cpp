@@ -61,10 +61,17 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
     const box last = tracker.position();
     const box pattern = tracker.pattern_box();
     const motion_extents motion = measure_motion(last, nullptr, cycles, traffic);
+    if (motion.found) {
+        recent_extents.push(x_span(motion.after), y_span(motion.after));
+    } else {
+        recent_extents.clear();  // the differences' chain broke
+    }
     box followed;
     const bool keyed = key.valid() && !key.outline_only();
-    const bool follows =
-        motion.found && follow_object(motion, last, box_may_be_part, keyed, &followed);
+    int fitted_axes = 0;
+    const bool follows = motion.found && follow_object(motion, last, box_may_be_part, keyed,
+                                                       &followed, &fitted_axes);
+    *cycles += fitted_axes * cycles_of(cost::window_fit_profile(recent_extents.count));
     const track_status status =
         follows ? tracker.update_near(history(0), followed) : tracker.update(history(0));
     *cycles += cycles_of(
@@ -191,7 +198,7 @@ controller::impl::motion_extents controller::impl::measure_motion(box last, cons
 // later in a track (at a bounce the common part holds the ball and where it was and will be), nor
 // for a fast object (a throw's first common part is over an eighth larger than its detection).
 bool controller::impl::follow_object(const motion_extents& motion, box last, bool may_be_part,
-                                     bool keyed, box* followed) const {
+                                     bool keyed, box* followed, int* fitted_axes) const {
     const track_params& p = config.track;
     const bool part_x = is_part(x_span(motion.both), x_span(last));
     const bool part_y = is_part(y_span(motion.both), y_span(last));
@@ -213,8 +220,15 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
     const span previous_y =
         grown_y ? common_y
                 : previous_axis(y_span(motion.before), y_span(motion.after), last.height);
-    if ((!part_x && !grown_x && !near_size(previous_x.size, last.width, tolerance_x)) ||
-        (!part_y && !grown_y && !near_size(previous_y.size, last.height, tolerance_y)))
+    // A fast object: Dif(t-1,t) reaches 2 min_shift px or more past object(t-1).
+    const bool fast = max_int(motion.both.width - previous_x.size,
+                              motion.both.height - previous_y.size) >= 2 * slow;
+    // Its size measured short is a rim the differences missed, not a
+    // difference that did not outline it.
+    const bool short_x = fast && previous_x.size < last.width;
+    const bool short_y = fast && previous_y.size < last.height;
+    if ((!part_x && !grown_x && !short_x && !near_size(previous_x.size, last.width, tolerance_x)) ||
+        (!part_y && !grown_y && !short_y && !near_size(previous_y.size, last.height, tolerance_y)))
         return false;
     // object(t-1)'s measured size (within the tolerance above of the last):
     // its edges and object(t)'s leading edge are found alike, so their
@@ -231,13 +245,27 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
     const int moved_x = motion.both.width - previous_x.size;
     const int moved_y = motion.both.height - previous_y.size;
     const bool unmoved = keyed && moved_x < slow && moved_y < slow;
-    const int size_x = unmoved || across_motion(moved_x, moved_y) ? max_int(w, last.width) : w;
-    const int size_y = unmoved || across_motion(moved_y, moved_x) ? max_int(h, last.height) : h;
-    const box b =
-        from_spans(part_x ? part_axis(x_span(motion.both), x_span(last))
-                          : follow_axis(previous_x, x_span(motion.both), x_span(last), size_x),
-                   part_y ? part_axis(y_span(motion.both), y_span(last))
-                          : follow_axis(previous_y, y_span(motion.both), y_span(last), size_y));
+    const int size_x =
+        fast || unmoved || across_motion(moved_x, moved_y) ? max_int(w, last.width) : w;
+    const int size_y =
+        fast || unmoved || across_motion(moved_y, moved_x) ? max_int(h, last.height) : h;
+    span object_x = part_x ? part_axis(x_span(motion.both), x_span(last))
+                           : follow_axis(previous_x, x_span(motion.both), x_span(last), size_x);
+    span object_y = part_y ? part_axis(y_span(motion.both), y_span(last))
+                           : follow_axis(previous_y, y_span(motion.both), y_span(last), size_y);
+    // A fast object's from the last pairs' extents (dsp/extent_window.h):
+    // across the image at any time, down it only across the motion. Its
+    // velocity is taken constant over the window, which gravity breaks along
+    // a throw's fall and its bounce reverses within a pair.
+    int fitted = 0;
+    if (fast && !part_x)
+        fitted +=
+            window_axis(recent_extents.x, recent_extents.count, size_x, x_span(last), &object_x);
+    if (fast && !part_y && moved_x > moved_y)
+        fitted +=
+            window_axis(recent_extents.y, recent_extents.count, size_y, y_span(last), &object_y);
+    if (fitted_axes) *fitted_axes = fitted;
+    const box b = from_spans(object_x, object_y);
     if (at_border(b)) return false;
     *followed = b;
     return true;

@@ -452,6 +452,27 @@ kernel_profile edge_match_profile(int width, int lines, int max_disparity, int m
     return p;
 }
 
+kernel_profile window_fit_profile(int extents) {
+    // dsp/extent_window.h: the median of the 2 (n - 1) edge steps (an
+    // insertion sort, as surface_mean's); then for each of the 33
+    // half-pixel velocities the bounds over the n extents (per extent two
+    // ADDs, the k v term accumulated by one more, a MAX2 and a MIN2; the
+    // running bounds carried from one extent to the next) and the choice
+    // (the crossing, two compares, three conditional moves); then the clamp.
+    const uint32_t n = static_cast<uint32_t>(non_negative(extents));
+    const uint32_t steps = n > 1 ? 2 * (n - 1) : 0;
+    constexpr uint32_t velocities = 33;
+    kernel_profile p("window_fit");
+    p.add(block("sort step", op_mix{/*l*/ 1, /*s*/ 1, 0, /*d*/ 2, 0, /*lsd*/ 1},
+                latency_load + latency_alu + latency_store, steps * steps / 4 + steps));
+    p.add(loop("extent", op_mix{/*l*/ 2, 0, 0, 0, 0, /*lsd*/ 3}, n, 2 * latency_alu, velocities,
+               latency_alu));
+    p.add(
+        block("choice", op_mix{/*l*/ 3, /*s*/ 1, 0, 0, 0, /*lsd*/ 4}, 3 * latency_alu, velocities));
+    p.add(block("clamp", op_mix{/*l*/ 2, 0, 0, 0, 0, /*lsd*/ 3}, 3 * latency_alu));
+    return p;
+}
+
 kernel_profile triangulate_profile() {
     // f_px = f / pitch (__divu, 18 quotient bits: 789.5 px in Q8), then
     // D = s f_px / (d - dcx), X = D x / f_px, Y = D y / f_px with 64-bit
@@ -543,6 +564,10 @@ uint64_t motion_blocks_cycles(int width, int height) {
 
 uint64_t pattern_copy_cycles(int pattern_w, int pattern_h) {
     return default_model().cycles(pattern_copy_profile(pattern_w, pattern_h));
+}
+
+uint64_t window_fit_cycles(int extents) {
+    return default_model().cycles(window_fit_profile(extents));
 }
 
 uint64_t subpixel_cycles() {

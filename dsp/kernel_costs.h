@@ -53,6 +53,9 @@ uint64_t sad_search_cycles(int pattern_w, int pattern_h, int positions);
 uint64_t pattern_copy_cycles(int pattern_w, int pattern_h);
 // Parabola sub-pixel refinement (one division).
 uint64_t subpixel_cycles();
+// One axis of a fast object's box fitted to `extents` frame differences'
+// extents (dsp/extent_window.h).
+uint64_t window_fit_cycles(int extents);
 // The gate and mean depth of a large object's tiles (dsp/object_depth.h):
 // the sort of `inside` SADs, one 64-bit division per `matched` tile and one
 // for the mean.
@@ -108,6 +111,7 @@ c64x::kernel_profile surface_outline_profile(int rows, int columns, int inside);
 c64x::kernel_profile sobel_profile(int width, int rows);
 c64x::kernel_profile edge_match_profile(int width, int lines, int max_disparity,
                                         int min_disparity = 0);
+c64x::kernel_profile window_fit_profile(int extents);
 c64x::kernel_profile triangulate_profile();
 
 }  // namespace dsp::cost

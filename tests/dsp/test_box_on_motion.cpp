@@ -15,7 +15,9 @@
 // 1 to 10 revolutions per second about each axis; slow passes and circles
 // of 1 to 2 px per frame (suite Slow: the key frame, dsp/key_frame.h), and
 // slow passes spinning at 0.5 to 3 rev/s (suite SlowSpinning); slow small
-// balls entering the view from its edge (round 18).
+// balls entering the view from its edge (round 18); fast balls whose shaded
+// rim the differences miss over teddy (suite ShadedRim) and passes
+// leftwards (round 20).
 //
 // The firmware before the silhouette refit (the box moved by the SAD
 // pattern and pulled towards object(t-1)) failed 11 of the first 12 cases
@@ -51,7 +53,7 @@ constexpr double max_box_error_px = 6.0;
 constexpr double max_depth_error_pct = 1.0;
 constexpr double frame_period_ms = 24.5;  // docs/design-brief.md
 
-enum class path_kind { pass, thrown, circle, enter };
+enum class path_kind { pass, pass_left, thrown, circle, enter };
 enum class backdrop { procedural, cones, kodim23, kodim19, teddy, tsukuba, venus, aloe };
 
 struct motion_case {
@@ -102,6 +104,13 @@ scene::trajectory entering_path(const motion_case& c, const scene::stereo_rig& r
     return scene::trajectory::line(from, velocity, start_s);
 }
 
+// The pass mirrored: from as far right of the centre, leftwards.
+scene::trajectory leftward_pass(const motion_case& c, double start_s) {
+    const double d = c.depth_m;
+    return scene::trajectory::line({0.08 * d, -0.02 * d, d},
+                                   {-0.26 * d * c.speed, 0.02 * d * c.speed, 0.0}, start_s);
+}
+
 scene::scenario scenario_of(const motion_case& c) {
     scene::scenario s;
     const scene::stereo_rig& rig = s.scene.rig;
@@ -119,8 +128,9 @@ scene::scenario scenario_of(const motion_case& c) {
     ball.spin_axis = c.spin_axis == 'x'   ? scene::vec3{1.0, 0.0, 0.0}
                      : c.spin_axis == 'y' ? scene::vec3{0.0, 1.0, 0.0}
                                           : scene::vec3{0.0, 0.0, 1.0};
-    ball.path = c.path == path_kind::enter  ? entering_path(c, rig, start)
-                : c.path == path_kind::pass ? scene::pass_path(c.depth_m, c.speed, start)
+    ball.path = c.path == path_kind::enter       ? entering_path(c, rig, start)
+                : c.path == path_kind::pass      ? scene::pass_path(c.depth_m, c.speed, start)
+                : c.path == path_kind::pass_left ? leftward_pass(c, start)
                 : c.path == path_kind::circle
                     ? scene::circling_path(c.depth_m, c.speed, start)
                     : scene::thrown_ball_path(c.depth_m, ball.radius_m, c.speed, start);
@@ -205,6 +215,7 @@ TEST_P(BoxOnMotion, StaysOnTheObject) {
 }
 
 constexpr path_kind pass = path_kind::pass;
+constexpr path_kind pass_left = path_kind::pass_left;
 constexpr path_kind thrown = path_kind::thrown;
 constexpr path_kind circle = path_kind::circle;
 constexpr path_kind enter = path_kind::enter;
@@ -701,31 +712,60 @@ INSTANTIATE_TEST_SUITE_P(HeldOutFast19, BoxOnMotion,
                                                        30, 2.4, pass, 6.0, 3.0, 'y', photo3, 16}),
                          case_name);
 
-// Open: the issue of the box on fast, large and spinning objects stays open
-// on these (docs/firmware.md, "Open"; run with
-// --gtest_also_run_disabled_tests, all fail). The 60 px ball at 30 px per
-// frame over teddy is left behind from its second tracked pair (box 8.9,
-// 13.6, 31.3, 56.1 px off, depth 133 % while on the background). A 100 px
-// ball circling over venus keeps a box 3.5 px left of it (mean 3.53, max
-// 4.13; its right rim never in Dif(key, t): from 35 px above its centre down
-// to its bottom the shaded limb is 0-18 grey levels off venus's dark frame,
-// under the threshold of 20). Round 19's two fast balls over teddy fail as
-// heldout2's does: 80 px at 25 px per frame, box 7.33 / 12.84 px (8.0 and
-// 12.4 px behind in pairs 6 and 8, 10.2 px high in pair 10); 40 px at
-// 30 px per frame, 6.05 / 6.90 px (4-6 px behind and above). In all three
-// Dif(t-1,t)'s trailing edge, object(t-1)'s rim, is within 1.5 px of the
-// truth in every pair (2.6 once), while its leading edge, object(t)'s, is
-// 3-14 px short in 13 of their 27 pairs: the ball's shaded side against
-// teddy's dark areas, under the threshold.
-INSTANTIATE_TEST_SUITE_P(DISABLED_Open, BoxOnMotion,
+// Fast balls over teddy whose shaded rim the differences miss: heldout2's
+// 60 px ball (held out, round 2) and round 19's two. Before their box was
+// fitted to the last pairs' extents (dsp/extent_window.h) they were left
+// behind: the 60 px ball from its second tracked pair (box 8.9, 13.6, 31.3,
+// 56.1 px off, depth 133 % while on the background); 80 px at 25 px per
+// frame 7.33 / 12.84 px; 40 px at 30 px per frame 6.05 / 6.90 px. In all
+// three Dif(t-1,t)'s trailing edge, object(t-1)'s rim, was within 1.5 px of
+// the truth in every pair (2.6 once), while its leading edge, object(t)'s,
+// was 3-14 px short in 13 of their 27 pairs (the ball's shaded side against
+// teddy's dark areas, under the threshold), and its bottom up to 20 px
+// short. Development cases of that rule since.
+INSTANTIATE_TEST_SUITE_P(ShadedRim, BoxOnMotion,
                          ::testing::Values(motion_case{"heldout2_pass60px_30pxpf_photo4", 60, 2.2,
                                                        pass, 6.0, 9.0, 'x', photo4, 14},
-                                           motion_case{"heldout6_circle100px_1pxpf_venus", 100, 2.6,
-                                                       circle, 0.125, 0.0, 'x', venus, 30},
                                            motion_case{"heldout19_pass80px_25pxpf_5rps_x_teddy", 80,
                                                        1.9, pass, 5.0, 5.0, 'x', photo4, 14},
                                            motion_case{"heldout19_pass40px_30pxpf_8rps_z_teddy", 40,
                                                        2.4, pass, 6.0, 8.0, 'z', photo4, 14}),
+                         case_name);
+
+// Held out, round 20: fast balls whose rims the differences may miss,
+// written before they were run, on the window fit: leftwards (the shaded
+// side trailing), over teddy and the other darker photographs, and a throw
+// over teddy (the fit across the image only).
+INSTANTIATE_TEST_SUITE_P(HeldOutFast20, BoxOnMotion,
+                         ::testing::Values(motion_case{"heldout20_left60px_30pxpf_teddy", 60, 2.2,
+                                                       pass_left, 6.0, 0.0, 'x', photo4, 14},
+                                           motion_case{"heldout20_left80px_25pxpf_5rps_x_teddy", 80,
+                                                       1.9, pass_left, 5.0, 5.0, 'x', photo4, 14},
+                                           motion_case{"heldout20_left40px_30pxpf_6rps_z", 40, 2.4,
+                                                       pass_left, 6.0, 6.0, 'z', procedural, 14},
+                                           motion_case{"heldout20_left120px_20pxpf_2rps_y_venus",
+                                                       120, 1.6, pass_left, 4.0, 2.0, 'y', venus,
+                                                       14},
+                                           motion_case{"heldout20_pass100px_20pxpf_3rps_z_teddy",
+                                                       100, 1.7, pass, 4.0, 3.0, 'z', photo4, 14},
+                                           motion_case{"heldout20_pass30px_25pxpf_teddy", 30, 2.6,
+                                                       pass, 5.0, 0.0, 'x', photo4, 16},
+                                           motion_case{"heldout20_pass70px_30pxpf_7rps_y_tsukuba",
+                                                       70, 2.0, pass, 6.0, 7.0, 'y', tsukuba, 14},
+                                           motion_case{"heldout20_throw80px_4rps_x_teddy", 80, 2.6,
+                                                       thrown, 1.5, 4.0, 'x', photo4, 24}),
+                         case_name);
+
+// Open: the issue of the box on fast, large and spinning objects stays open
+// on this case (docs/firmware.md, "Open"; run with
+// --gtest_also_run_disabled_tests, it fails). A 100 px ball circling over
+// venus keeps a box 3.5 px left of it (mean 3.53, max 4.13; its right rim
+// never in Dif(key, t): from 35 px above its centre down to its bottom the
+// shaded limb is 0-18 grey levels off venus's dark frame, under the
+// threshold of 20).
+INSTANTIATE_TEST_SUITE_P(DISABLED_Open, BoxOnMotion,
+                         ::testing::Values(motion_case{"heldout6_circle100px_1pxpf_venus", 100, 2.6,
+                                                       circle, 0.125, 0.0, 'x', venus, 30}),
                          case_name);
 
 }  // namespace

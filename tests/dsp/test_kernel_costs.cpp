@@ -271,6 +271,14 @@ TEST_F(KernelCosts, DataDependentKernelsGrowWithTheirWork) {
     EXPECT_LT(subpixel_cycles(), 100u);
     EXPECT_GT(triangulate_cycles(), 200u);
     EXPECT_LT(triangulate_cycles(), 1000u);
+    // The window fit: 33 velocities, each a pass over the extents (one
+    // loop-carried ALU op per extent) and a choice of 3 dependent ALU ops.
+    std::printf("window fit: %llu cycles (3 extents), %llu (4)\n",
+                static_cast<unsigned long long>(window_fit_cycles(3)),
+                static_cast<unsigned long long>(window_fit_cycles(4)));
+    EXPECT_GT(window_fit_cycles(4), window_fit_cycles(3));
+    EXPECT_GT(window_fit_cycles(4), 33u * (4 + 3));
+    EXPECT_LT(window_fit_cycles(4), 3000u);
 }
 
 TEST_F(KernelCosts, PrintsFiguresAgainstThePaper) {

@@ -1,0 +1,83 @@
+#include "dsp/extent_window.h"
+
+namespace dsp {
+namespace {
+
+int max_int(int a, int b) {
+    return a > b ? a : b;
+}
+int min_int(int a, int b) {
+    return a < b ? a : b;
+}
+int distance(int a, int b) {
+    return a > b ? a - b : b - a;
+}
+
+// The median of the steps of both edges between consecutive extents, in
+// half pixels (2 (n - 1) steps: an insertion sort of at most 6).
+int median_step2(const span* extents, int count) {
+    int steps[2 * (extent_window::capacity - 1)];
+    int n = 0;
+    for (int k = 0; k + 1 < count; ++k) {
+        steps[n++] = 2 * (extents[k].start - extents[k + 1].start);
+        steps[n++] = 2 * (extents[k].end() - extents[k + 1].end());
+    }
+    for (int i = 1; i < n; ++i)
+        for (int j = i; j > 0 && steps[j - 1] > steps[j]; --j) {
+            const int step = steps[j];
+            steps[j] = steps[j - 1];
+            steps[j - 1] = step;
+        }
+    return (steps[(n - 1) / 2] + steps[n / 2]) / 2;
+}
+
+// The bounds on object(t)'s start (in half pixels) at velocity v2.
+struct start_bounds {
+    int low = 0, high = 0;
+};
+
+start_bounds bounds_at(const span* extents, int count, int size, int v2) {
+    start_bounds b{-(1 << 30), 1 << 30};
+    for (int k = 0; k < count; ++k) {
+        b.low = max_int(b.low, 2 * (extents[k].end() - size) + k * v2 + min_int(v2, 0));
+        b.high = min_int(b.high, 2 * extents[k].start + k * v2 + max_int(v2, 0));
+    }
+    return b;
+}
+
+}  // namespace
+
+void extent_window::push(span new_x, span new_y) {
+    for (int k = capacity - 1; k > 0; --k) {
+        x[k] = x[k - 1];
+        y[k] = y[k - 1];
+    }
+    x[0] = new_x;
+    y[0] = new_y;
+    if (count < capacity) ++count;
+}
+
+bool window_axis(const span* extents, int count, int size, span last, span* object) {
+    if (count < 3) return false;
+    const int median2 = median_step2(extents, count);
+    constexpr int search2 = 16;  // +-8 px around the median
+    int best_v2 = median2, best_crossing = 1 << 30;
+    start_bounds best;
+    for (int v2 = median2 - search2; v2 <= median2 + search2; ++v2) {
+        const start_bounds b = bounds_at(extents, count, size, v2);
+        const int crossing = max_int(0, b.low - b.high);
+        if (crossing < best_crossing ||
+            (crossing == best_crossing && distance(v2, median2) < distance(best_v2, median2))) {
+            best_v2 = v2;
+            best_crossing = crossing;
+            best = b;
+        }
+    }
+    int start2 = 2 * last.start + best_v2;
+    start2 = best.low <= best.high ? max_int(best.low, min_int(best.high, start2))
+                                   : (best.low + best.high) / 2;
+    *object = span{(start2 + 1) >> 1, size};  // half pixels rounded, also below 0
+    return true;
+}
+
+}  // namespace dsp

@@ -1,0 +1,43 @@
+// A fast object's box from the frame differences of its last pairs, not
+// from the current pair's alone. Each Dif(t-1,t) extent is read inside the
+// object's, never outside it: a rim whose grey is within the threshold of
+// the background behind it is missed (a ball's shaded side over a dark
+// background, 3-14 px of an 80 px ball at 25 px per frame over teddy), and
+// nothing outside object(t-1) and object(t) differs. So the current
+// extent's leading edge may stand short of object(t)'s, and a box placed
+// from it stands behind the ball; while the same rim read a pair or two
+// earlier, or the trailing rim read now, still bounds where the ball is.
+//
+// window_axis fits one constant velocity to the last extents, each rim a
+// one-sided bound, and places object(t) inside every bound.
+#pragma once
+
+#include "dsp/box_refit.h"
+
+namespace dsp {
+
+// Dif(t-1,t)'s extents on both axes over the last pairs of one track,
+// newest first.
+struct extent_window {
+    static constexpr int capacity = 4;
+    span x[capacity], y[capacity];
+    int count = 0;
+
+    void clear() { count = 0; }
+    void push(span new_x, span new_y);
+};
+
+// object(t)'s extent on one axis, `size` wide, from the window's extents
+// on that axis (`extents[k]`: Dif(t-1-k, t-k)'s) and the last box `last`.
+// At a constant velocity v (px per pair) the extent k pairs back spans
+// object(t-k-1) and object(t-k), so with object(t) at s:
+//   s <= start_k + k v + max(v, 0)          (its start reads inside)
+//   s >= end_k - size + k v + min(v, 0)     (its end reads inside)
+// v is searched in half pixels within 8 px of the median step of the
+// extents' edges: the one whose bounds cross least is taken (among equals,
+// the one nearest the median). object(t) is the last box moved by v, held
+// inside the bounds (midway where they cross: the size or the velocity
+// changed). False, and nothing written, with fewer than three extents.
+bool window_axis(const span* extents, int count, int size, span last, span* object);
+
+}  // namespace dsp

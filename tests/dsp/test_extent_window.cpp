@@ -1,0 +1,128 @@
+// A fast object's box fitted to the last pairs' frame differences
+// (dsp/extent_window.h), against extents worked out from a known motion:
+// the object [s_t, s_t + size) at s_t = s_0 + v t, Dif(t-1,t)'s extent
+// their union rounded to whole pixels, and rims missed by shortening an
+// extent on one side (a difference reads inside the object, never outside).
+// The oracle is that motion, not the fit. Within 1.5 px: the extents'
+// rounding (half a pixel at each end) and the half-pixel velocity grid
+// (a quarter pixel per pair of the window).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "dsp/box_refit.h"
+#include "dsp/extent_window.h"
+
+namespace {
+
+using dsp::span;
+
+struct motion {
+    double s0, v;  // object(t) starts at s0 + v t (px)
+    int size;
+    double start(int t) const { return s0 + v * t; }
+    // Dif(t-1,t)'s extent: object(t-1) and object(t).
+    span extent(int t) const {
+        const double lo = std::fmin(start(t - 1), start(t));
+        const double hi = std::fmax(start(t - 1), start(t)) + size;
+        const int a = static_cast<int>(std::lround(lo)), b = static_cast<int>(std::lround(hi));
+        return span{a, b - a};
+    }
+    span object(int t) const { return span{static_cast<int>(std::lround(start(t))), size}; }
+};
+
+// The window at pair t: extents t, t-1, ... newest first.
+std::vector<span> window_at(const motion& m, int t, int count) {
+    std::vector<span> w;
+    for (int k = 0; k < count; ++k) w.push_back(m.extent(t - k));
+    return w;
+}
+
+span shortened(span s, int at_start, int at_end) {
+    return span{s.start + at_start, s.size - at_start - at_end};
+}
+
+span fit(const std::vector<span>& w, int size, span last) {
+    span object{-1000, 0};
+    EXPECT_TRUE(dsp::window_axis(w.data(), static_cast<int>(w.size()), size, last, &object));
+    return object;
+}
+
+TEST(WindowAxis, EveryRimReadGivesTheObjectWhereverTheLastBoxStood) {
+    for (const motion m : {motion{100.3, 25.2, 80}, motion{500.6, -30.3, 60},
+                           motion{200.0, 2.3, 40}, motion{300.4, 0.0, 100}}) {
+        const int t = 8;
+        for (const int last_off : {0, 5, -5}) {
+            span last = m.object(t - 1);
+            last.start += last_off;
+            const span got = fit(window_at(m, t, 4), m.size, last);
+            EXPECT_NEAR(got.start, m.start(t), 1.5) << "v " << m.v << ", last off " << last_off;
+            EXPECT_EQ(got.size, m.size);
+        }
+    }
+}
+
+// The 80 px ball over teddy: object(t)'s leading rim 7 px short now and
+// 5 px short the pair before. The difference alone puts object(t) that far
+// behind (follow_axis); the window holds it by the trailing rims.
+TEST(WindowAxis, LeadingRimsReadShortDoNotLeaveTheBoxBehind) {
+    const motion m{100.3, 25.2, 80};
+    const int t = 8;
+    std::vector<span> w = window_at(m, t, 4);
+    w[0] = shortened(w[0], 0, 7);
+    w[1] = shortened(w[1], 0, 5);
+    const span alone =
+        dsp::follow_axis(span{w[0].start, w[1].end() - w[0].start}, w[0], m.object(t - 1), m.size);
+    EXPECT_LT(alone.start, m.start(t) - 5.0) << "the case must be one a single pair misses";
+    EXPECT_NEAR(fit(w, m.size, m.object(t - 1)).start, m.start(t), 1.5);
+
+    const motion left{600.2, -25.2, 80};  // the same leftwards
+    std::vector<span> wl = window_at(left, t, 4);
+    wl[0] = shortened(wl[0], 7, 0);
+    wl[1] = shortened(wl[1], 5, 0);
+    EXPECT_NEAR(fit(wl, left.size, left.object(t - 1)).start, left.start(t), 1.5);
+}
+
+// A trailing rim read 3 px inside (a 90 px ball over venus): a velocity
+// taken from the trailing rims alone would put the box 6 px ahead.
+TEST(WindowAxis, ATrailingRimReadInsideDoesNotPushTheBoxAhead) {
+    const motion m{272.0, 30.0, 90};
+    const int t = 6;
+    std::vector<span> w = window_at(m, t, 3);
+    w[0] = shortened(w[0], 3, 0);
+    EXPECT_NEAR(fit(w, m.size, m.object(t - 1)).start, m.start(t), 1.5);
+}
+
+// Across a pass, 2.3 px per pair down, the ball's bottom missed by 9 px in
+// every pair (its shaded side): the tops still place it.
+TEST(WindowAxis, AnEdgeMissedInEveryPairAcrossTheMotion) {
+    const motion m{208.3, 2.3, 40};
+    const int t = 9;
+    std::vector<span> w = window_at(m, t, 4);
+    for (span& e : w) e = shortened(e, 0, 9);
+    EXPECT_NEAR(fit(w, m.size, m.object(t - 1)).start, m.start(t), 1.5);
+}
+
+TEST(WindowAxis, FewerThanThreeExtentsAreNotFitted) {
+    const motion m{100.0, 20.0, 50};
+    const std::vector<span> w = window_at(m, 5, 2);
+    span object{7, 7};
+    EXPECT_FALSE(dsp::window_axis(w.data(), 2, m.size, m.object(4), &object));
+    EXPECT_EQ(object.start, 7);
+    EXPECT_EQ(object.size, 7);
+}
+
+// Bounds that cross (the object smaller than its extents say: it grew, or
+// the size kept is short): object(t) midway between them, not wherever the
+// last box was.
+TEST(WindowAxis, CrossingBoundsGiveTheirMiddle) {
+    const motion m{100.0, 10.0, 50};
+    const int t = 6;
+    const std::vector<span> w = window_at(m, t, 4);
+    // 10 px too small: its end's bound 10 px past its start's.
+    const span got = fit(w, m.size - 10, span{0, m.size - 10});
+    EXPECT_NEAR(got.start, m.start(t) + 5.0, 1.5);
+}
+
+}  // namespace
