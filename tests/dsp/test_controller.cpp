@@ -136,6 +136,41 @@ TEST(ControllerStates, BallLeavesTheViewAndComesBack) {
     std::printf("3D points: %d, boxes without a point: %d\n", points, withheld_near_border);
 }
 
+// A new track keeps nothing of the last one: from the last frame the ball
+// is out of view on, the firmware that tracked it before reports the same
+// states and boxes as one started fresh two frames earlier (its history
+// then full of the empty view). The window of a fast object's extents
+// (dsp/extent_window.h) kept from the first track moved the second's
+// boxes.
+TEST(ControllerStates, ANewTrackKeepsNothingOfTheLast) {
+    const scene::scenario scenario = host::exit_return_scenario(4);
+    const dsp::controller_config config = default_config(scenario);
+    host::stereo_runner whole(scenario, config);
+    const host::exit_return_frames when =
+        host::exit_return_timing(whole.sequence(), scenario.frame_count);
+    const std::vector<host::host_record> before = whole.run(0, scenario.frame_count);
+    const int from = when.last_outside - 2;
+    ASSERT_GT(from, when.first_outside);
+    host::stereo_runner fresh(scenario, config);
+    const std::vector<host::host_record> after = fresh.run(from, scenario.frame_count - from);
+    int compared = 0, tracked = 0;
+    for (const host::host_record& r : after) {
+        if (r.index < when.last_outside) continue;
+        const dsp::frame_output& a = before[r.index].firmware;
+        const dsp::frame_output& b = r.firmware;
+        ++compared;
+        tracked += b.state == tracker_state::track;
+        EXPECT_EQ(a.state, b.state) << "frame " << r.index;
+        EXPECT_EQ(a.box_right.x, b.box_right.x) << "frame " << r.index;
+        EXPECT_EQ(a.box_right.y, b.box_right.y) << "frame " << r.index;
+        EXPECT_EQ(a.box_right.width, b.box_right.width) << "frame " << r.index;
+        EXPECT_EQ(a.box_right.height, b.box_right.height) << "frame " << r.index;
+    }
+    std::printf("compared %d pairs from frame %d, %d of them tracked\n", compared,
+                when.last_outside, tracked);
+    EXPECT_GE(tracked, 5);
+}
+
 // Nothing moves for 40 frames: the detector runs on every pair from the
 // third on and finds nothing; the state never leaves DETECT.
 TEST(ControllerStates, StaticSceneIsNeverDetected) {
