@@ -1,18 +1,9 @@
 #include "dsp/box_refit.h"
 
+#include "dsp/int_bounds.h"
 #include "dsp/key_frame.h"
 
 namespace dsp {
-namespace {
-
-int max_int(int a, int b) {
-    return a > b ? a : b;
-}
-int min_int(int a, int b) {
-    return a < b ? a : b;
-}
-
-}  // namespace
 
 span previous_axis(span before, span after, int size) {
     const bool same_start = before.start - after.start <= 1 && after.start - before.start <= 1;

@@ -9,6 +9,7 @@
 #include "dsp/box_refit.h"
 #include "dsp/controller.h"
 #include "dsp/extent_window.h"
+#include "dsp/int_bounds.h"
 #include "dsp/kernel_costs.h"
 #include "dsp/key_frame.h"
 #include "dsp/sobel.h"
@@ -21,13 +22,6 @@ constexpr int history_frames = 3;  // paper eq. 2-4 needs f(t-2), f(t-1), f(t)
 // Pairs a slow detection waits for its object to move key_frame::min_shift
 // px: slower than 0.4 px per frame it is taken as still.
 constexpr int max_candidate_pairs = 10;
-
-inline int max_int(int a, int b) {
-    return a > b ? a : b;
-}
-inline int min_int(int a, int b) {
-    return a < b ? a : b;
-}
 
 // `b` within `step` px of `a` on both axes.
 inline bool moved_at_most(box a, box b, int step) {

@@ -1,14 +1,10 @@
 #include "dsp/extent_window.h"
 
+#include "dsp/int_bounds.h"
+
 namespace dsp {
 namespace {
 
-int max_int(int a, int b) {
-    return a > b ? a : b;
-}
-int min_int(int a, int b) {
-    return a < b ? a : b;
-}
 int distance(int a, int b) {
     return a > b ? a - b : b - a;
 }
