@@ -197,6 +197,9 @@ controller::impl::motion_extents controller::impl::measure_motion(box last, cons
 // detection 67 x 34 px of a 110 px ball, 88 px wide of 140), both differences the whole ball. Not
 // later in a track (at a bounce the common part holds the ball and where it was and will be), nor
 // for a fast object (a throw's first common part is over an eighth larger than its detection).
+// A fast object (Dif(t-1,t) 2 min_shift px or more past object(t-1)): a size measured short is a
+// rim the differences missed, neither a reason to give up nor taken, and object(t) is fitted to the
+// last pairs' extents (dsp/extent_window.h).
 bool controller::impl::follow_object(const motion_extents& motion, box last, bool may_be_part,
                                      bool keyed, box* followed, int* fitted_axes) const {
     const track_params& p = config.track;
@@ -253,7 +256,7 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
                            : follow_axis(previous_x, x_span(motion.both), x_span(last), size_x);
     span object_y = part_y ? part_axis(y_span(motion.both), y_span(last))
                            : follow_axis(previous_y, y_span(motion.both), y_span(last), size_y);
-    // A fast object's from the last pairs' extents (dsp/extent_window.h):
+    // A fast object's box from the last pairs' extents (dsp/extent_window.h):
     // across the image at any time, down it only across the motion. Its
     // velocity is taken constant over the window, which gravity breaks along
     // a throw's fall and its bounce reverses within a pair.

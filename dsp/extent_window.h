@@ -2,7 +2,7 @@
 // from the current pair's alone. Each Dif(t-1,t) extent is read inside the
 // object's, never outside it: a rim whose grey is within the threshold of
 // the background behind it is missed (a ball's shaded side over a dark
-// background, 3-14 px of an 80 px ball at 25 px per frame over teddy), and
+// background: 3-14 px of 40-80 px balls at 25-30 px per frame over teddy), and
 // nothing outside object(t-1) and object(t) differs. So the current
 // extent's leading edge may stand short of object(t)'s, and a box placed
 // from it stands behind the ball; while the same rim read a pair or two
