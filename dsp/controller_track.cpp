@@ -223,9 +223,11 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
     const span previous_y =
         grown_y ? common_y
                 : previous_axis(y_span(motion.before), y_span(motion.after), last.height);
-    // A fast object: Dif(t-1,t) reaches 2 min_shift px or more past object(t-1).
-    const bool fast = max_int(motion.both.width - previous_x.size,
-                              motion.both.height - previous_y.size) >= 2 * slow;
+    // How far Dif(t-1,t) reaches past object(t-1) on each axis; a fast
+    // object's reach is 2 min_shift px or more.
+    const int moved_x = motion.both.width - previous_x.size;
+    const int moved_y = motion.both.height - previous_y.size;
+    const bool fast = max_int(moved_x, moved_y) >= 2 * slow;
     // Its size measured short is a rim the differences missed, not a
     // difference that did not outline it.
     const bool short_x = fast && previous_x.size < last.width;
@@ -245,8 +247,6 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
     const int reach = 2 * p.search_radius;
     if (motion.both.width - w > reach || motion.both.height - h > reach) return false;
     // Across the motion a size the differences measured short is not taken.
-    const int moved_x = motion.both.width - previous_x.size;
-    const int moved_y = motion.both.height - previous_y.size;
     const bool unmoved = keyed && moved_x < slow && moved_y < slow;
     const int size_x =
         fast || unmoved || across_motion(moved_x, moved_y) ? max_int(w, last.width) : w;
