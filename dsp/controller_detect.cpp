@@ -158,13 +158,13 @@ bool controller::impl::start_track(box detected, uint64_t* cycles, sdram_traffic
     }
     // Read only for an object that is started: not in a slow candidate's pairs.
     const motion_extents motion = measure_motion(detected, &detected, cycles, traffic);
+    recent_extents.clear();  // a new track: the window starts at its detection
     box followed;
     const bool follows = motion.found && follow_object(motion, detected, false, false, &followed);
     if (!follows && status != track_status::tracking) return false;
     key.drop();
     slow_candidate = false;
     box_may_be_part = true;
-    recent_extents.clear();  // a new track: the window starts at its detection
     if (motion.found) recent_extents.push(x_span(motion.after), y_span(motion.after));
     if (follows) {
         tracker.start(history(0), followed);

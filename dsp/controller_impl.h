@@ -175,10 +175,11 @@ struct controller::impl {
     bool track(frame_output& out);
     // What track_object saw of the object's speed, for the key.
     struct track_motion {
-        bool sad_slow = false;      // the SAD pattern moved at most key_frame::max_step px
-        bool confirmed = false;     // a silhouette within an eighth of the SAD box
-        bool outlined = false;      // the box followed a silhouette (follow_object)
-        bool outline_slow = false;  // whose centre moved at most key_frame::max_step px
+        bool sad_slow = false;       // the SAD pattern moved at most key_frame::max_step px
+        bool confirmed = false;      // a silhouette within an eighth of the SAD box
+        bool outlined = false;       // the box followed a silhouette (follow_object)
+        bool outline_slow = false;   // whose centre moved at most key_frame::max_step px
+        bool window_moving = false;  // the extent window read a motion (follow_reading)
     };
     bool track_object(uint64_t* cycles, sdram_traffic* traffic, track_motion* seen);
     void follow_slow_object(track_motion seen, uint64_t* cycles, sdram_traffic* traffic);
@@ -221,8 +222,15 @@ struct controller::impl {
     };
     motion_extents measure_motion(box last, const box* detected, uint64_t* cycles,
                                   sdram_traffic* traffic);
+    // What follow_object read beside the box: the axes fitted to the extent
+    // window (each charged), and whether the window's median step reads a
+    // motion of min_shift px a pair or more on an axis.
+    struct follow_reading {
+        int fitted_axes = 0;
+        bool window_moving = false;
+    };
     bool follow_object(const motion_extents& motion, box last, bool may_be_part, bool keyed,
-                       box* followed, int* fitted_axes = nullptr) const;
+                       box* followed, follow_reading* reading = nullptr) const;
     box pull_box(const motion_extents& motion, box last, box found) const;
     void stereo_sad(box object, bool outlined, frame_output& out);
     void stereo_edge(box object, frame_output& out);

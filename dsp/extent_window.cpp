@@ -12,6 +12,7 @@ int distance(int a, int b) {
 // The median of the steps of both edges between consecutive extents, in
 // half pixels (2 (n - 1) steps: an insertion sort of at most 6).
 int median_step2(const span* extents, int count) {
+    if (count < 2) return 0;
     int steps[2 * (extent_window::capacity - 1)];
     int n = 0;
     for (int k = 0; k + 1 < count; ++k) {
@@ -41,7 +42,42 @@ start_bounds bounds_at(const span* extents, int count, int size, int v2) {
     return b;
 }
 
+// Where every extent's bound on one side agrees within `tight` half pixels at
+// velocity v2 while the other side's spread is over twice that, that side
+// read object(t)'s rim in every pair and the other missed it in some: object(t)
+// is placed on the agreeing side's bound. False where neither does (both
+// agree, or both spread).
+bool steady_side(const span* extents, int count, int size, int v2, start_bounds b, int* start2) {
+    constexpr int tight = 2;  // 1 px: the rounding of one rim read twice
+    int high_min = 1 << 30, high_max = -(1 << 30), low_min = 1 << 30, low_max = -(1 << 30);
+    for (int k = 0; k < count; ++k) {
+        const int low = 2 * (extents[k].end() - size) + k * v2 + min_int(v2, 0);
+        const int high = 2 * extents[k].start + k * v2 + max_int(v2, 0);
+        high_min = min_int(high_min, high);
+        high_max = max_int(high_max, high);
+        low_min = min_int(low_min, low);
+        low_max = max_int(low_max, low);
+    }
+    const int high_spread = high_max - high_min, low_spread = low_max - low_min;
+    if (high_spread <= tight && low_spread > 2 * tight) {
+        *start2 = b.high;
+        return true;
+    }
+    if (low_spread <= tight && high_spread > 2 * tight) {
+        *start2 = b.low;
+        return true;
+    }
+    return false;
+}
+
 }  // namespace
+
+int window_step2(const span* extents, int count, int size) {
+    if (count < 3) return 0;
+    for (int k = 0; k < count; ++k)
+        if (2 * extents[k].size < size) return 0;
+    return median_step2(extents, count);
+}
 
 void extent_window::push(span new_x, span new_y) {
     for (int k = capacity - 1; k > 0; --k) {
@@ -70,8 +106,11 @@ bool window_axis(const span* extents, int count, int size, span last, span* obje
         }
     }
     int start2 = 2 * last.start + best_v2;
-    start2 = best.low <= best.high ? max_int(best.low, min_int(best.high, start2))
-                                   : (best.low + best.high) / 2;
+    if (best.low > best.high) {
+        start2 = (best.low + best.high) / 2;
+    } else if (!steady_side(extents, count, size, best_v2, best, &start2)) {
+        start2 = max_int(best.low, min_int(best.high, start2));
+    }
     *object = span{(start2 + 1) >> 1, size};  // half pixels rounded, also below 0
     return true;
 }

@@ -452,13 +452,29 @@ kernel_profile edge_match_profile(int width, int lines, int max_disparity, int m
     return p;
 }
 
+kernel_profile window_step_profile(int extents) {
+    // dsp/extent_window.h, window_step2: each extent's size against half
+    // the box (a compare and a branch), then the 2 (n - 1) edge steps and
+    // their insertion sort, as window_fit_profile's; nothing below three.
+    const uint32_t n = static_cast<uint32_t>(non_negative(extents));
+    kernel_profile p("window_step");
+    if (n < 3) return p;
+    const uint32_t steps = 2 * (n - 1);
+    p.add(block("size check", op_mix{/*l*/ 1, /*s*/ 1, 0, /*d*/ 1, 0, /*lsd*/ 1},
+                latency_load + latency_alu, n));
+    p.add(block("sort step", op_mix{/*l*/ 1, /*s*/ 1, 0, /*d*/ 2, 0, /*lsd*/ 1},
+                latency_load + latency_alu + latency_store, steps * steps / 4 + steps));
+    return p;
+}
+
 kernel_profile window_fit_profile(int extents) {
     // dsp/extent_window.h: the median of the 2 (n - 1) edge steps (an
     // insertion sort, as surface_mean's); then for each of the 33
     // half-pixel velocities the bounds over the n extents (per extent two
     // ADDs, the k v term accumulated by one more, a MAX2 and a MIN2; the
     // running bounds carried from one extent to the next) and the choice
-    // (the crossing, two compares, three conditional moves); then the clamp.
+    // (the crossing, two compares, three conditional moves); then the
+    // steady side and the clamp.
     const uint32_t n = static_cast<uint32_t>(non_negative(extents));
     const uint32_t steps = n > 1 ? 2 * (n - 1) : 0;
     constexpr uint32_t velocities = 33;
@@ -469,6 +485,11 @@ kernel_profile window_fit_profile(int extents) {
                latency_alu));
     p.add(
         block("choice", op_mix{/*l*/ 3, /*s*/ 1, 0, 0, 0, /*lsd*/ 4}, 3 * latency_alu, velocities));
+    // The steady side: at the chosen velocity each extent's two bounds again
+    // (two ADDs each) and the four running MIN2 / MAX2, then two spreads
+    // and their compares.
+    p.add(loop("steady side", op_mix{/*l*/ 4, 0, 0, 0, 0, /*lsd*/ 4}, n, 2 * latency_alu, 1,
+               latency_alu));
     p.add(block("clamp", op_mix{/*l*/ 2, 0, 0, 0, 0, /*lsd*/ 3}, 3 * latency_alu));
     return p;
 }
@@ -568,6 +589,10 @@ uint64_t pattern_copy_cycles(int pattern_w, int pattern_h) {
 
 uint64_t window_fit_cycles(int extents) {
     return default_model().cycles(window_fit_profile(extents));
+}
+
+uint64_t window_step_cycles(int extents) {
+    return default_model().cycles(window_step_profile(extents));
 }
 
 uint64_t subpixel_cycles() {

@@ -759,7 +759,8 @@ INSTANTIATE_TEST_SUITE_P(HeldOutFast20, BoxOnMotion,
 // Held out, round 21: large balls at 5-12 px per frame (between the slow
 // key frame's and the window fit's ranges) over teddy and venus, written
 // to look for a case of the size across the motion and run once, on the
-// window fit: these three pass; five fail (below, DISABLED_Open).
+// window fit: these three passed; five failed (below: four are development
+// cases of the motion read from the window since, one is open).
 INSTANTIATE_TEST_SUITE_P(HeldOutMedium21, BoxOnMotion,
                          ::testing::Values(motion_case{"heldout21_throw120px_half_2rps_z_teddy",
                                                        120, 2.6, thrown, 0.5, 2.0, 'z', photo4, 40},
@@ -769,31 +770,41 @@ INSTANTIATE_TEST_SUITE_P(HeldOutMedium21, BoxOnMotion,
                                                        2.6, pass, 1.3, 2.0, 'z', venus, 24}),
                          case_name);
 
+// Round 21's cases that failed on the window fit, development cases of the
+// motion read from the window (dsp/extent_window.h, window_step2) since:
+// the 140 px pass at 6 px per frame (7.66 / 22.08 px before: its leading
+// rim 25-29 px short, the extent's reach read no motion and its box
+// stalled), the 100 px pass at 5 px per frame (3.48 / 14.14: a key taken
+// where its pattern matched the ball's last place held the box), and the
+// 140 px balls thrown at half speed over teddy (18.34 px in pair 7: the
+// detection 107 px wide of 141, not grown while the ball rose, as it grew
+// only where all four edges stood) and venus (6.07).
+INSTANTIATE_TEST_SUITE_P(MediumSpeed, BoxOnMotion,
+                         ::testing::Values(motion_case{"heldout21_pass140px_6pxpf_3rps_x_teddy",
+                                                       140, 2.6, pass, 1.2, 3.0, 'x', photo4, 24},
+                                           motion_case{"heldout21_pass100px_5pxpf_2rps_x_teddy",
+                                                       100, 2.6, pass, 1.0, 2.0, 'x', photo4, 24},
+                                           motion_case{"heldout21_throw140px_half_3rps_x_teddy",
+                                                       140, 2.6, thrown, 0.5, 3.0, 'x', photo4, 40},
+                                           motion_case{"heldout21_throw140px_half_3rps_x_venus",
+                                                       140, 2.6, thrown, 0.5, 3.0, 'x', venus, 40}),
+                         case_name);
+
 // Open: the issue of the box on fast, large and spinning objects stays open
 // on these (docs/firmware.md, "Open"; run with
-// --gtest_also_run_disabled_tests, all fail). A 100 px ball circling over
+// --gtest_also_run_disabled_tests, both fail). A 100 px ball circling over
 // venus keeps a box 3.5 px left of it (mean 3.53, max 4.13; its right rim
 // never in Dif(key, t): from 35 px above its centre down to its bottom the
 // shaded limb is 0-18 grey levels off venus's dark frame, under the
-// threshold of 20). Round 21's five: 140 px balls thrown at half and 0.6
-// times the speed over teddy (max 18.34 and 15.53 px; 19.58 and 15.53
-// before the window fit), the same at half speed over venus (max 6.07),
-// passes of 140 px at 6 px per frame (7.66 / 22.08 px; 6.94 / 22.08
-// before) and 100 px at 5 px per frame (3.48 / 14.14, the same before)
-// over teddy. Not yet traced.
+// threshold of 20). A 140 px ball thrown at 0.6 times the speed over teddy
+// is within 3.2 px until its bounce in the last pair (10.6 px): there
+// Dif(t-1,t) holds none of the ball's new top (the 9 px it rose), so the
+// extent reads the ball where it was.
 INSTANTIATE_TEST_SUITE_P(DISABLED_Open, BoxOnMotion,
                          ::testing::Values(motion_case{"heldout6_circle100px_1pxpf_venus", 100, 2.6,
                                                        circle, 0.125, 0.0, 'x', venus, 30},
-                                           motion_case{"heldout21_throw140px_half_3rps_x_teddy",
-                                                       140, 2.6, thrown, 0.5, 3.0, 'x', photo4, 40},
                                            motion_case{"heldout21_throw140px_0_6_3rps_x_teddy", 140,
-                                                       2.6, thrown, 0.6, 3.0, 'x', photo4, 36},
-                                           motion_case{"heldout21_throw140px_half_3rps_x_venus",
-                                                       140, 2.6, thrown, 0.5, 3.0, 'x', venus, 40},
-                                           motion_case{"heldout21_pass140px_6pxpf_3rps_x_teddy",
-                                                       140, 2.6, pass, 1.2, 3.0, 'x', photo4, 24},
-                                           motion_case{"heldout21_pass100px_5pxpf_2rps_x_teddy",
-                                                       100, 2.6, pass, 1.0, 2.0, 'x', photo4, 24}),
+                                                       2.6, thrown, 0.6, 3.0, 'x', photo4, 36}),
                          case_name);
 
 }  // namespace

@@ -104,6 +104,29 @@ TEST(WindowAxis, AnEdgeMissedInEveryPairAcrossTheMotion) {
     EXPECT_NEAR(fit(w, m.size, m.object(t - 1)).start, m.start(t), 1.5);
 }
 
+// The same with the bottom short by 3-7 px, a different amount each pair,
+// and the last box 5 px behind: the tops agree over the window, the
+// bottoms do not, so object(t) stands on the tops' bound. Moved by the
+// velocity and held inside the bounds, the box would keep 3 px of its lag.
+// Leftwards the same with the leading (left) rims short.
+TEST(WindowAxis, ARimReadAlikeInEveryPairPlacesTheBox) {
+    const int t = 9;
+    const motion down{208.3, 2.3, 40};
+    std::vector<span> w = window_at(down, t, 4);
+    const int short_by[4] = {3, 5, 7, 4};
+    for (int k = 0; k < 4; ++k) w[k] = shortened(w[k], 0, short_by[k]);
+    span behind = down.object(t - 1);
+    behind.start -= 5;
+    EXPECT_NEAR(fit(w, down.size, behind).start, down.start(t), 1.0);
+
+    const motion left{600.2, -25.2, 80};
+    std::vector<span> wl = window_at(left, t, 4);
+    for (int k = 0; k < 4; ++k) wl[k] = shortened(wl[k], short_by[k], 0);
+    span behind_left = left.object(t - 1);
+    behind_left.start += 5;
+    EXPECT_NEAR(fit(wl, left.size, behind_left).start, left.start(t), 1.0);
+}
+
 TEST(WindowAxis, FewerThanThreeExtentsAreNotFitted) {
     const motion m{100.0, 20.0, 50};
     const std::vector<span> w = window_at(m, 5, 2);
@@ -123,6 +146,41 @@ TEST(WindowAxis, CrossingBoundsGiveTheirMiddle) {
     // 10 px too small: its end's bound 10 px past its start's.
     const span got = fit(w, m.size - 10, span{0, m.size - 10});
     EXPECT_NEAR(got.start, m.start(t) + 5.0, 1.5);
+}
+
+// The 140 px ball over teddy at 6.1 px per pair: its leading rim 12-29 px
+// short in the last pairs. The reach of Dif(t-1,t) past object(t-1), the
+// firmware's first measure of a motion, then reads none; the window's
+// median step still reads the motion.
+TEST(WindowStep, AShortLeadingRimDoesNotHideTheMotion) {
+    const motion m{260.0, 6.1, 140};
+    const int t = 16;
+    std::vector<span> w = window_at(m, t, 4);
+    const int short_by[4] = {29, 25, 12, 27};
+    for (int k = 0; k < 4; ++k) w[k] = shortened(w[k], 0, short_by[k]);
+    const span previous = dsp::previous_axis(w[1], w[0], m.size);
+    EXPECT_LT(w[0].size - previous.size, 4) << "the case must be one the reach misses";
+    const int step2 = dsp::window_step2(w.data(), 4, m.size);
+    EXPECT_NEAR(step2 / 2.0, m.v, 1.0);
+    // Leftwards the same, negative.
+    const motion left{500.0, -6.1, 140};
+    std::vector<span> wl = window_at(left, t, 4);
+    for (int k = 0; k < 4; ++k) wl[k] = shortened(wl[k], short_by[k], 0);
+    EXPECT_NEAR(dsp::window_step2(wl.data(), 4, left.size) / 2.0, left.v, 1.0);
+}
+
+// A slowly turning texture's differences: pieces of the object, their
+// edges jumping from pair to pair. One extent under half the box: no
+// motion is read from the window (the reach alone decides).
+TEST(WindowStep, PiecesOfTheObjectReadNoMotion) {
+    const motion m{220.0, 0.5, 90};
+    std::vector<span> w = window_at(m, 24, 4);
+    w[1] = span{221, 16};
+    w[2] = span{285, 28};  // a piece 60 px away: a step of 30 px if read
+    EXPECT_EQ(dsp::window_step2(w.data(), 4, m.size), 0);
+    const std::vector<span> whole = window_at(m, 24, 4);
+    EXPECT_EQ(dsp::window_step2(whole.data(), 2, m.size), 0) << "fewer than three extents";
+    EXPECT_NEAR(dsp::window_step2(whole.data(), 4, m.size) / 2.0, m.v, 0.5);
 }
 
 }  // namespace

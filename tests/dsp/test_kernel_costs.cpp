@@ -279,6 +279,15 @@ TEST_F(KernelCosts, DataDependentKernelsGrowWithTheirWork) {
     EXPECT_GT(window_fit_cycles(4), window_fit_cycles(3));
     EXPECT_GT(window_fit_cycles(4), 33u * (4 + 3));
     EXPECT_LT(window_fit_cycles(4), 3000u);
+    // The window's step: the call only below three extents (window_step2
+    // reads none), then a sort of 2 (n - 1) steps, a part of the fit's work.
+    std::printf("window step: %llu cycles (3 extents), %llu (4)\n",
+                static_cast<unsigned long long>(window_step_cycles(3)),
+                static_cast<unsigned long long>(window_step_cycles(4)));
+    EXPECT_LT(window_step_cycles(2), 20u);
+    EXPECT_GT(window_step_cycles(3), window_step_cycles(2) + 2 * 4 + 4);
+    EXPECT_GT(window_step_cycles(4), window_step_cycles(3));
+    EXPECT_LT(window_step_cycles(4), window_fit_cycles(4));
 }
 
 TEST_F(KernelCosts, PrintsFiguresAgainstThePaper) {
