@@ -32,7 +32,7 @@ struct extent_window {
 // towards the axis's end positive), in half pixels. A rim the differences
 // miss moves its own edge only, so the median holds while the current
 // extent's reach past object(t-1) reads no motion (a 140 px ball at 6 px
-// per frame over teddy: its leading edge 25-29 px short, the extent's reach
+// per frame over teddy: its leading edge 26-35 px short, the extent's reach
 // 0). 0 with fewer than three extents, or where an extent is under half
 // `size` (pieces of a slowly turning texture, not the object's outline).
 int window_step2(const span* extents, int count, int size);

@@ -773,7 +773,7 @@ INSTANTIATE_TEST_SUITE_P(HeldOutMedium21, BoxOnMotion,
 // Round 21's cases that failed on the window fit, development cases of the
 // motion read from the window (dsp/extent_window.h, window_step2) since:
 // the 140 px pass at 6 px per frame (7.66 / 22.08 px before: its leading
-// rim 25-29 px short, the extent's reach read no motion and its box
+// rim 26-35 px short, the extent's reach read no motion and its box
 // stalled), the 100 px pass at 5 px per frame (3.48 / 14.14: a key taken
 // where its pattern matched the ball's last place held the box), and the
 // 140 px balls thrown at half speed over teddy (18.34 px in pair 7: the
