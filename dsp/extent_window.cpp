@@ -33,11 +33,18 @@ struct start_bounds {
     int low = 0, high = 0;
 };
 
+// Extent k's own bounds on object(t)'s start at velocity v2 (half pixels).
+start_bounds extent_bounds(span extent, int k, int size, int v2) {
+    return start_bounds{2 * (extent.end() - size) + k * v2 + min_int(v2, 0),
+                        2 * extent.start + k * v2 + max_int(v2, 0)};
+}
+
 start_bounds bounds_at(const span* extents, int count, int size, int v2) {
     start_bounds b{-(1 << 30), 1 << 30};
     for (int k = 0; k < count; ++k) {
-        b.low = max_int(b.low, 2 * (extents[k].end() - size) + k * v2 + min_int(v2, 0));
-        b.high = min_int(b.high, 2 * extents[k].start + k * v2 + max_int(v2, 0));
+        const start_bounds e = extent_bounds(extents[k], k, size, v2);
+        b.low = max_int(b.low, e.low);
+        b.high = min_int(b.high, e.high);
     }
     return b;
 }
@@ -51,12 +58,11 @@ bool steady_side(const span* extents, int count, int size, int v2, start_bounds 
     constexpr int tight = 2;  // 1 px: the rounding of one rim read twice
     int high_min = 1 << 30, high_max = -(1 << 30), low_min = 1 << 30, low_max = -(1 << 30);
     for (int k = 0; k < count; ++k) {
-        const int low = 2 * (extents[k].end() - size) + k * v2 + min_int(v2, 0);
-        const int high = 2 * extents[k].start + k * v2 + max_int(v2, 0);
-        high_min = min_int(high_min, high);
-        high_max = max_int(high_max, high);
-        low_min = min_int(low_min, low);
-        low_max = max_int(low_max, low);
+        const start_bounds e = extent_bounds(extents[k], k, size, v2);
+        high_min = min_int(high_min, e.high);
+        high_max = max_int(high_max, e.high);
+        low_min = min_int(low_min, e.low);
+        low_max = max_int(low_max, e.low);
     }
     const int high_spread = high_max - high_min, low_spread = low_max - low_min;
     if (high_spread <= tight && low_spread > 2 * tight) {
