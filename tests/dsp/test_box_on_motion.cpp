@@ -53,7 +53,7 @@ constexpr double max_box_error_px = 6.0;
 constexpr double max_depth_error_pct = 1.0;
 constexpr double frame_period_ms = 24.5;  // docs/design-brief.md
 
-enum class path_kind { pass, pass_left, thrown, circle, enter };
+enum class path_kind { pass, pass_left, thrown, circle, enter, recede, approach };
 enum class backdrop { procedural, cones, kodim23, kodim19, teddy, tsukuba, venus, aloe };
 
 struct motion_case {
@@ -111,6 +111,16 @@ scene::trajectory leftward_pass(const motion_case& c, double start_s) {
                                    {-0.26 * d * c.speed, 0.02 * d * c.speed, 0.0}, start_s);
 }
 
+// The pass, the ball also going away from the rig (recede: its depth 1.6
+// times the start's after 24 frames) or towards it (approach: 0.65 times),
+// so its image shrinks or grows by 1.5-2.5 px a frame at 100 px.
+scene::trajectory depth_path(const motion_case& c, double start_s) {
+    const double d = c.depth_m;
+    const double z_rate = c.path == path_kind::recede ? 1.0 : -0.6;  // depths per second
+    return scene::trajectory::line({-0.08 * d, -0.02 * d, d},
+                                   {0.26 * d * c.speed, 0.02 * d * c.speed, z_rate * d}, start_s);
+}
+
 scene::scenario scenario_of(const motion_case& c) {
     scene::scenario s;
     const scene::stereo_rig& rig = s.scene.rig;
@@ -131,6 +141,8 @@ scene::scenario scenario_of(const motion_case& c) {
     ball.path = c.path == path_kind::enter       ? entering_path(c, rig, start)
                 : c.path == path_kind::pass      ? scene::pass_path(c.depth_m, c.speed, start)
                 : c.path == path_kind::pass_left ? leftward_pass(c, start)
+                : c.path == path_kind::recede || c.path == path_kind::approach
+                    ? depth_path(c, start)
                 : c.path == path_kind::circle
                     ? scene::circling_path(c.depth_m, c.speed, start)
                     : scene::thrown_ball_path(c.depth_m, ball.radius_m, c.speed, start);
@@ -219,6 +231,8 @@ constexpr path_kind pass_left = path_kind::pass_left;
 constexpr path_kind thrown = path_kind::thrown;
 constexpr path_kind circle = path_kind::circle;
 constexpr path_kind enter = path_kind::enter;
+constexpr path_kind recede = path_kind::recede;
+constexpr path_kind approach = path_kind::approach;
 constexpr backdrop procedural = backdrop::procedural;
 constexpr backdrop photo = backdrop::cones;
 constexpr backdrop photo2 = backdrop::kodim23;
@@ -821,6 +835,29 @@ INSTANTIATE_TEST_SUITE_P(
                     aloe, 24},
         motion_case{"heldout22_pass80px_4pxpf_1rps_x_venus", 80, 2.6, pass, 0.8, 1.0, 'x', venus,
                     24}),
+    case_name);
+
+// Held out, round 23: written before they were run, on the motion read
+// from the window: balls going away from the rig or coming towards it while
+// they pass at 2-25 px per frame, their images shrinking or growing.
+INSTANTIATE_TEST_SUITE_P(
+    HeldOutDepth23, BoxOnMotion,
+    ::testing::Values(motion_case{"heldout23_recede120px_5pxpf_2rps_x_teddy", 120, 2.6, recede, 1.0,
+                                  2.0, 'x', photo4, 24},
+                      motion_case{"heldout23_recede60px_15pxpf", 60, 2.6, recede, 3.0, 0.0, 'x',
+                                  procedural, 16},
+                      motion_case{"heldout23_recede150px_2pxpf_1rps_z_aloe", 150, 2.6, recede, 0.4,
+                                  1.0, 'z', aloe, 24},
+                      motion_case{"heldout23_recede80px_25pxpf_5rps_y_venus", 80, 2.6, recede, 5.0,
+                                  5.0, 'y', venus, 14},
+                      motion_case{"heldout23_approach60px_5pxpf_3rps_x_tsukuba", 60, 2.6, approach,
+                                  1.0, 3.0, 'x', tsukuba, 24},
+                      motion_case{"heldout23_approach100px_15pxpf_teddy", 100, 2.6, approach, 3.0,
+                                  0.0, 'x', photo4, 16},
+                      motion_case{"heldout23_approach40px_2pxpf_2rps_y_kodim19", 40, 2.6, approach,
+                                  0.4, 2.0, 'y', photo3, 24},
+                      motion_case{"heldout23_approach120px_25pxpf_4rps_z", 120, 2.6, approach, 5.0,
+                                  4.0, 'z', procedural, 12}),
     case_name);
 
 // Open: the issue of the box on fast, large and spinning objects stays open
