@@ -185,7 +185,10 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
     switch (m_state) {
         case tracker_state::detect:
             has_object = s.detect(out);
-            if (has_object) m_state = tracker_state::track;
+            if (has_object) {  // a new track: its size stands for no depth yet
+                m_state = tracker_state::track;
+                s.measured_disparity_q8 = s.earlier_disparity_q8 = 0;
+            }
             break;
         case tracker_state::track:
             has_object = s.track(out);
@@ -213,7 +216,13 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
     out.box_right = s.tracker.position();
     s.stereo_sad(out.box_right, outlined, out);
     s.stereo_edge(out.box_right, out);
-    if (s.choose_disparity(out)) s.xyz(out.box_right, out);
+    if (s.choose_disparity(out)) {
+        // For the next pair's size (dsp/size_at_depth.h): the part of the
+        // disparity inversely proportional to depth.
+        s.earlier_disparity_q8 = s.measured_disparity_q8;
+        s.measured_disparity_q8 = out.disparity_q8 - cfg.rig.principal_offset_q8();
+        s.xyz(out.box_right, out);
+    }
     return out;
 }
 

@@ -12,6 +12,7 @@
 #include "dsp/int_bounds.h"
 #include "dsp/kernel_costs.h"
 #include "dsp/key_frame.h"
+#include "dsp/size_at_depth.h"
 #include "dsp/sobel.h"
 #include "dsp/stride_history.h"
 
@@ -138,6 +139,11 @@ struct controller::impl {
     char outline_key_across = 0;   // a key of the outline: 'x' or 'y' across the motion, 0 unknown
     bool box_may_be_part = false;  // a detection's box no silhouette of its size has confirmed
     extent_window recent_extents;  // Dif(t-1,t)'s extents of this track's last pairs
+    // The object's size carried with its depth (dsp/size_at_depth.h): the
+    // latest pair's disparity (Q8, 0 none yet in this track), the one before,
+    // and the one the key's box stood for when taken.
+    int64_t measured_disparity_q8 = 0, earlier_disparity_q8 = 0;
+    int64_t key_sized_q8 = 0;
 
     // Disparities (Q8) of the depth range's ends, without the search margin.
     int64_t far_disparity_q8 = 0, near_disparity_q8 = 0;

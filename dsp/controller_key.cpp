@@ -24,6 +24,7 @@ using namespace controller_parts;
 // (take_key: the key at the tracker's box, its ring's and pattern's copy charged.)
 void controller::impl::take_key(uint64_t* cycles, sdram_traffic* traffic, int grow) {
     key.take(history(0), tracker.position(), tracker.pattern_box(), grow);
+    key_sized_q8 = measured_disparity_q8;
     key_x = key_y = key_axis{};
     key_first_seen = false;
     const box r = key.region(), hole = key.hole(), kp = key.pattern();
@@ -165,7 +166,8 @@ void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
         return;
     }
     const int dx = r.dx, dy = r.dy;
-    box b = shifted(k, dx, dy);
+    // The key's box moved as its pattern did, at the latest pair's depth.
+    box b = at_disparity(shifted(k, dx, dy), key_sized_q8, measured_disparity_q8);
     const int moved = max_int(max_int(dx, -dx), max_int(dy, -dy));
     // Outlined once the object moved min_shift px; an axis key_axis_shift
     // says to at once (its extent, not the pattern, holds the object there);

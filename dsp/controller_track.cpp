@@ -82,11 +82,16 @@ bool controller::impl::track(frame_output& out) {
 // object does keeps the track when the pattern no longer matches (a texture
 // that turned); SAD's own lost rule decides only without one.
 bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, track_motion* seen) {
-    const box last = tracker.position();
+    const box tracked = tracker.position();
+    // The last box at the depth the last pair measured (dsp/size_at_depth.h).
+    const box last = disparity_jumped(earlier_disparity_q8, measured_disparity_q8)
+                         ? tracked
+                         : at_disparity(tracked, earlier_disparity_q8, measured_disparity_q8);
+    earlier_disparity_q8 = measured_disparity_q8;  // read once
     const box pattern = tracker.pattern_box();
     const motion_extents motion = measure_motion(last, nullptr, cycles, traffic);
     if (motion.found) {
-        recent_extents.push(x_span(motion.after), y_span(motion.after));
+        recent_extents.push(x_span(motion.after), y_span(motion.after), measured_disparity_q8);
     } else {
         recent_extents.clear();  // the differences' chain broke
     }
@@ -97,6 +102,8 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
         motion.found && follow_object(motion, last, box_may_be_part, keyed, &followed, &reading);
     if (motion.found)  // the window's step on both axes
         *cycles += 2 * cycles_of(cost::window_step_profile(recent_extents.count));
+    if (measured_disparity_q8 > 0)  // sizes at the depth, at most: the last box's and a key's
+        *cycles += cycles_of(cost::size_at_depth_profile(4 + 2 * recent_extents.count));
     *cycles += reading.fitted_axes * cycles_of(cost::window_fit_profile(recent_extents.count));
     const track_status status =
         follows ? tracker.update_near(history(0), followed) : tracker.update(history(0));
@@ -127,6 +134,8 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
         resized = followed;
     } else if (motion.found) {
         resized = pull_box(motion, last, found);
+    } else if (last.width != tracked.width || last.height != tracked.height) {
+        resized = resized_about_centre(found, last.width, last.height);
     }
     if (status != track_status::tracking || !same_box(resized, found)) {
         tracker.start(history(0), resized);
@@ -290,12 +299,15 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
     // breaks along a throw's fall, its bounce reverses within a pair, and
     // its apex turns (there the window still reads the rise).
     int fitted = 0;
+    span now_x[extent_window::capacity], now_y[extent_window::capacity];
+    extents_at_depth(recent_extents.x, recent_extents.depth_q8, recent_extents.count, size_x,
+                     measured_disparity_q8, now_x);
+    extents_at_depth(recent_extents.y, recent_extents.depth_q8, recent_extents.count, size_y,
+                     measured_disparity_q8, now_y);
     if (fast && !part_x)
-        fitted +=
-            window_axis(recent_extents.x, recent_extents.count, size_x, x_span(last), &object_x);
+        fitted += window_axis(now_x, recent_extents.count, size_x, x_span(last), &object_x);
     if (fast_x && !part_y && moved_x > moved_y)
-        fitted +=
-            window_axis(recent_extents.y, recent_extents.count, size_y, y_span(last), &object_y);
+        fitted += window_axis(now_y, recent_extents.count, size_y, y_span(last), &object_y);
     if (reading) {
         reading->fitted_axes = fitted;
         reading->window_moving = speed.window_moving;

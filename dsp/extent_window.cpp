@@ -85,13 +85,15 @@ int window_step2(const span* extents, int count, int size) {
     return median_step2(extents, count);
 }
 
-void extent_window::push(span new_x, span new_y) {
+void extent_window::push(span new_x, span new_y, int64_t disparity_q8) {
     for (int k = capacity - 1; k > 0; --k) {
         x[k] = x[k - 1];
         y[k] = y[k - 1];
+        depth_q8[k] = depth_q8[k - 1];
     }
     x[0] = new_x;
     y[0] = new_y;
+    depth_q8[0] = disparity_q8;
     if (count < capacity) ++count;
 }
 

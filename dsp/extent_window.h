@@ -12,6 +12,8 @@
 // one-sided bound, and places object(t) inside every bound.
 #pragma once
 
+#include <cstdint>
+
 #include "dsp/box_refit.h"
 
 namespace dsp {
@@ -21,10 +23,11 @@ namespace dsp {
 struct extent_window {
     static constexpr int capacity = 4;
     span x[capacity], y[capacity];
+    int64_t depth_q8[capacity] = {};  // the disparity the track last measured, at each (0 none)
     int count = 0;
 
     void clear() { count = 0; }
-    void push(span new_x, span new_y);
+    void push(span new_x, span new_y, int64_t disparity_q8 = 0);
 };
 
 // The object's motion per pair on one axis as the window reads it: the

@@ -467,6 +467,19 @@ kernel_profile window_step_profile(int extents) {
     return p;
 }
 
+kernel_profile size_at_depth_profile(int divides) {
+    // dsp/size_at_depth.h: each size carried or extent narrowed is one __divu
+    // of a size times a disparity by a disparity (a quotient of at most
+    // 11 bits: a size under 2048 px), its rounding (MPY, ADD) and its centring
+    // (SUB, SHR, ADD); the 1 % checks before it a MPY and a compare.
+    const uint32_t n = static_cast<uint32_t>(non_negative(divides));
+    kernel_profile p("size_at_depth");
+    for (uint32_t i = 0; i < n; ++i) p.add_call(c64x::software_divide(c64x::quotient_bits(2048)));
+    p.add(block("round and centre", op_mix{/*l*/ 2, /*s*/ 2, /*m*/ 2, /*d*/ 0, 0, /*lsd*/ 2},
+                latency_mpy16 + 3 * latency_alu, n));
+    return p;
+}
+
 kernel_profile window_fit_profile(int extents) {
     // dsp/extent_window.h: the median of the 2 (n - 1) edge steps (an
     // insertion sort, as surface_mean's); then for each of the 33
@@ -593,6 +606,10 @@ uint64_t window_fit_cycles(int extents) {
 
 uint64_t window_step_cycles(int extents) {
     return default_model().cycles(window_step_profile(extents));
+}
+
+uint64_t size_at_depth_cycles(int divides) {
+    return default_model().cycles(size_at_depth_profile(divides));
 }
 
 uint64_t subpixel_cycles() {

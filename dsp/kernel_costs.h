@@ -59,6 +59,7 @@ uint64_t window_fit_cycles(int extents);
 // One axis's motion read from `extents` extents (dsp/extent_window.h,
 // window_step2): the size check and the median of their edges' steps.
 uint64_t window_step_cycles(int extents);
+uint64_t size_at_depth_cycles(int divides);
 // The gate and mean depth of a large object's tiles (dsp/object_depth.h):
 // the sort of `inside` SADs, one 64-bit division per `matched` tile and one
 // for the mean.
@@ -116,6 +117,7 @@ c64x::kernel_profile edge_match_profile(int width, int lines, int max_disparity,
                                         int min_disparity = 0);
 c64x::kernel_profile window_fit_profile(int extents);
 c64x::kernel_profile window_step_profile(int extents);
+c64x::kernel_profile size_at_depth_profile(int divides);
 c64x::kernel_profile triangulate_profile();
 
 }  // namespace dsp::cost

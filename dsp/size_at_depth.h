@@ -1,0 +1,48 @@
+// An object's image size from the depth the stereo stages measured: a ball's
+// diameter in pixels is f D / Z, so proportional to its disparity less the
+// principal points' offset. The size rules of TRACK (dsp/box_refit.h,
+// dsp/extent_window.h) keep the last box's size where the differences
+// measure it short, since there a rim was missed (a shaded side under the
+// threshold); a ball going away from the rig shrinks alike on every side
+// and was held at its first size (150 px at 2.6 m, 1.45 times as far 20
+// pairs later: its box 144 x 147 px on a ball of 99 px, 23 px off). So the
+// last box is carried to the last pair's disparity before the rules compare
+// sizes with it, and a key's box from the key's pair's to the last pair's.
+#pragma once
+
+#include <cstdint>
+
+#include "dsp/box_refit.h"
+#include "dsp/image.h"
+
+namespace dsp {
+
+// `b` resized about its centre by to_q8 / from_q8 (disparities less the
+// principal points' offset, Q8), each side rounded to the nearest pixel;
+// `b` itself where either is unknown (<= 0) or the ratio changes the size by
+// under 1 % (within a disparity's noise: the depth of the box cases errs by
+// up to 0.9 %).
+box at_disparity(box b, int64_t from_q8, int64_t to_q8);
+
+// `b` as `width` x `height` about its centre.
+box resized_about_centre(box b, int width, int height);
+
+// True where a pair's disparity is over an eighth from the last pair's: not
+// the object's depth (a wrong match; a ball going away at 1 depth a second
+// changes it by 2.5 % a pair).
+bool disparity_jumped(int64_t from_q8, int64_t to_q8);
+
+// The window's extents (dsp/extent_window.h: `extents[k]`, read when the
+// track's disparity was `depth_q8[k]`) as an object of `size` px at `now_q8`
+// would have made them, for window_axis, which takes one size over the
+// window: each narrowed about its centre by how much larger the object was
+// then, size (depth_q8[k] / now_q8 - 1), where that is 1 % or more. On an
+// 80 px ball going away at 25 px a pair the fit with the extents as read
+// stood 3-5 px ahead of it. An object that was smaller (coming nearer) is
+// left as read: a difference reads inside the object, so an older, smaller
+// extent only loosens the fit's bounds, while one widened may pass a rim
+// (a 100 px ball coming nearer over teddy: 2.89 / 5.62 -> 4.02 / 8.80 px).
+void extents_at_depth(const span* extents, const int64_t* depth_q8, int count, int size,
+                      int64_t now_q8, span* out);
+
+}  // namespace dsp

@@ -1,0 +1,87 @@
+// A tracked box carried to the depth the stereo stages measured
+// (dsp/size_at_depth.h), against sizes worked out here from the pinhole
+// model: an object's image size is proportional to its disparity (less the
+// principal points' offset), so a box of size s at disparity d0 is s d / d0
+// at d. The oracle is that ratio in floating point, not the code's rounding.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+
+#include "dsp/size_at_depth.h"
+
+namespace {
+
+using dsp::box;
+
+double centre(int start, int size) {
+    return start + 0.5 * size;
+}
+
+TEST(AtDisparity, ResizesAboutTheCentreByTheRatio) {
+    const box b{100, 50, 144, 147};
+    const int64_t from = 9483, to = 6886;  // a ball 1.38 times as far
+    const box r = dsp::at_disparity(b, from, to);
+    const double ratio = static_cast<double>(to) / from;
+    EXPECT_EQ(r.width, std::lround(144 * ratio));
+    EXPECT_EQ(r.height, std::lround(147 * ratio));
+    EXPECT_LE(std::fabs(centre(r.x, r.width) - centre(b.x, b.width)), 0.5);
+    EXPECT_LE(std::fabs(centre(r.y, r.height) - centre(b.y, b.height)), 0.5);
+    const box g = dsp::at_disparity(b, to, from);  // coming nearer: grows
+    EXPECT_EQ(g.width, std::lround(144 / ratio));
+    EXPECT_LE(std::fabs(centre(g.x, g.width) - centre(b.x, b.width)), 0.5);
+}
+
+TEST(AtDisparity, KeepsTheBoxWithinOnePercent) {
+    const box b{10, 20, 120, 120};
+    const box kept = dsp::at_disparity(b, 10000, 9901);  // 0.99 %
+    EXPECT_EQ(kept.x, b.x);
+    EXPECT_EQ(kept.width, b.width);
+    EXPECT_EQ(dsp::at_disparity(b, 10000, 9900).width, 119);  // 1 %: 118.8
+    EXPECT_EQ(dsp::at_disparity(b, 0, 9000).width, 120);      // unknown
+}
+
+// A ball going away at 2.5 % of its depth a pair, its box carried pair by
+// pair as TRACK does (the last pair's ratio): each pair rounds a size
+// already rounded, so the rounding carries on (up to 1.28 px here, where the
+// size rules re-measure it each pair in TRACK); within 1 % of the pinhole
+// size and half a pixel, where truncating would lose up to a pixel a pair.
+TEST(AtDisparity, CarriedPairByPairFollowsTheDepth) {
+    const double d0 = 10000.0;
+    box b{200, 150, 140, 140};
+    double depth = 1.0;
+    for (int pair = 1; pair <= 16; ++pair) {
+        const int64_t before = std::llround(d0 / depth);
+        depth *= 1.025;
+        b = dsp::at_disparity(b, before, std::llround(d0 / depth));
+        const double expected = 140.0 / depth;
+        EXPECT_LE(std::fabs(b.width - expected), 0.01 * expected + 0.5) << "pair " << pair;
+    }
+}
+
+// The window of a ball going away: each extent read when the object was
+// larger is narrowed about its centre to the size the object has now, by
+// size (d_then / d_now - 1) rounded; one read when it was smaller, or
+// within 1 %, or at no disparity, is left as read.
+TEST(ExtentsAtDepth, NarrowsWhatTheObjectWasLargerWhenRead) {
+    const dsp::span read[4] = {{300, 110}, {280, 114}, {260, 118}, {240, 122}};
+    const int64_t depth_q8[4] = {10000, 10250, 9750, 0};  // as large, 2.5 % larger, smaller, none
+    dsp::span now[4];
+    dsp::extents_at_depth(read, depth_q8, 4, 80, 10000, now);
+    const int larger = static_cast<int>(std::lround(80 * 0.025));  // 2 px
+    EXPECT_EQ(now[0].start, 300);
+    EXPECT_EQ(now[0].size, 110);
+    EXPECT_EQ(now[1].size, 114 - larger);
+    EXPECT_LE(std::fabs(centre(now[1].start, now[1].size) - centre(280, 114)), 0.5);
+    EXPECT_EQ(now[2].size, 118);  // smaller then: left as read
+    EXPECT_EQ(now[3].size, 122);
+}
+
+TEST(DisparityJumped, OverAnEighthOnly) {
+    EXPECT_FALSE(dsp::disparity_jumped(8000, 7000));  // 12.5 %
+    EXPECT_TRUE(dsp::disparity_jumped(8000, 6999));
+    EXPECT_TRUE(dsp::disparity_jumped(8000, 9001));
+    EXPECT_FALSE(dsp::disparity_jumped(0, 9001));  // none yet
+}
+
+}  // namespace
