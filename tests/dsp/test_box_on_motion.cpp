@@ -67,6 +67,7 @@ struct motion_case {
     char spin_axis;   // x, y or z
     backdrop background;
     int frames;
+    double principal_dx_left_px = 0.0;  // the left camera's principal point off the centre
 };
 
 void PrintTo(const motion_case& c, std::ostream* os) {
@@ -123,6 +124,7 @@ scene::trajectory depth_path(const motion_case& c, double start_s) {
 
 scene::scenario scenario_of(const motion_case& c) {
     scene::scenario s;
+    s.scene.rig.principal_dx_left = c.principal_dx_left_px;
     const scene::stereo_rig& rig = s.scene.rig;
     if (c.background != backdrop::procedural) {
         s.scene.background =
@@ -857,6 +859,18 @@ INSTANTIATE_TEST_SUITE_P(
                       motion_case{"heldout23_approach120px_25pxpf_4rps_z", 120, 2.6, approach, 5.0,
                                   4.0, 'z', procedural, 12}),
     case_name);
+
+// A rig whose principal points differ by 16 px (a disparity of 16 px at
+// infinity): the size read from the depth takes the part of the disparity
+// inversely proportional to depth (dsp/size_at_depth.h). Round 23's 80 px
+// ball going away at 25 px a frame, written after the rule: 2.41 / 5.40 px;
+// with the offset left in the ratio (mutant fw-110) 2.47 / 5.40, so it does
+// not judge that half of the rule (a pair's ratio moves by under 1 %).
+INSTANTIATE_TEST_SUITE_P(PrincipalOffset, BoxOnMotion,
+                         ::testing::Values(motion_case{"recede80px_25pxpf_5rps_y_venus_dcx16", 80,
+                                                       2.6, recede, 5.0, 5.0, 'y', venus, 14,
+                                                       16.0}),
+                         case_name);
 
 // Held out, round 24: written before the size read from the depth
 // (dsp/size_at_depth.h) and run once on it: more balls going away from
