@@ -187,7 +187,7 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
             has_object = s.detect(out);
             if (has_object) {  // a new track: its size stands for no depth yet
                 m_state = tracker_state::track;
-                s.measured_disparity_q8 = s.earlier_disparity_q8 = 0;
+                s.measured_disparity_q8 = s.sized_disparity_q8 = 0;
             }
             break;
         case tracker_state::track:
@@ -219,7 +219,6 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
     if (s.choose_disparity(out)) {
         // For the next pair's size (dsp/size_at_depth.h): the part of the
         // disparity inversely proportional to depth.
-        s.earlier_disparity_q8 = s.measured_disparity_q8;
         s.measured_disparity_q8 = out.disparity_q8 - cfg.rig.principal_offset_q8();
         s.xyz(out.box_right, out);
     }

@@ -140,9 +140,9 @@ struct controller::impl {
     bool box_may_be_part = false;  // a detection's box no silhouette of its size has confirmed
     extent_window recent_extents;  // Dif(t-1,t)'s extents of this track's last pairs
     // The object's size carried with its depth (dsp/size_at_depth.h): the
-    // latest pair's disparity (Q8, 0 none yet in this track), the one before,
-    // and the one the key's box stood for when taken.
-    int64_t measured_disparity_q8 = 0, earlier_disparity_q8 = 0;
+    // latest pair's disparity (Q8, 0 none yet in this track), the one the
+    // tracker's box stands for, and the one the key's box stood for when taken.
+    int64_t measured_disparity_q8 = 0, sized_disparity_q8 = 0;
     int64_t key_sized_q8 = 0;
 
     // Disparities (Q8) of the depth range's ends, without the search margin.
@@ -237,6 +237,8 @@ struct controller::impl {
     };
     bool follow_object(const motion_extents& motion, box last, bool may_be_part, bool keyed,
                        box* followed, follow_reading* reading = nullptr) const;
+    int fit_to_window(bool fit_x, bool fit_y, int size_x, int size_y, box last, span* object_x,
+                      span* object_y) const;
     box pull_box(const motion_extents& motion, box last, box found) const;
     void stereo_sad(box object, bool outlined, frame_output& out);
     void stereo_edge(box object, frame_output& out);

@@ -83,11 +83,12 @@ bool controller::impl::track(frame_output& out) {
 // that turned); SAD's own lost rule decides only without one.
 bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, track_motion* seen) {
     const box tracked = tracker.position();
-    // The last box at the depth the last pair measured (dsp/size_at_depth.h).
-    const box last = disparity_jumped(earlier_disparity_q8, measured_disparity_q8)
+    // The last box at the depth the last pair measured (dsp/size_at_depth.h);
+    // from here it stands for that depth.
+    const box last = disparity_jumped(sized_disparity_q8, measured_disparity_q8)
                          ? tracked
-                         : at_disparity(tracked, earlier_disparity_q8, measured_disparity_q8);
-    earlier_disparity_q8 = measured_disparity_q8;  // read once
+                         : at_disparity(tracked, sized_disparity_q8, measured_disparity_q8);
+    sized_disparity_q8 = measured_disparity_q8;
     const box pattern = tracker.pattern_box();
     const motion_extents motion = measure_motion(last, nullptr, cycles, traffic);
     if (motion.found) {
@@ -298,16 +299,8 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
     // it. Its velocity is taken constant over the window, which gravity
     // breaks along a throw's fall, its bounce reverses within a pair, and
     // its apex turns (there the window still reads the rise).
-    int fitted = 0;
-    span now_x[extent_window::capacity], now_y[extent_window::capacity];
-    extents_at_depth(recent_extents.x, recent_extents.depth_q8, recent_extents.count, size_x,
-                     measured_disparity_q8, now_x);
-    extents_at_depth(recent_extents.y, recent_extents.depth_q8, recent_extents.count, size_y,
-                     measured_disparity_q8, now_y);
-    if (fast && !part_x)
-        fitted += window_axis(now_x, recent_extents.count, size_x, x_span(last), &object_x);
-    if (fast_x && !part_y && moved_x > moved_y)
-        fitted += window_axis(now_y, recent_extents.count, size_y, y_span(last), &object_y);
+    const int fitted = fit_to_window(fast && !part_x, fast_x && !part_y && moved_x > moved_y,
+                                     size_x, size_y, last, &object_x, &object_y);
     if (reading) {
         reading->fitted_axes = fitted;
         reading->window_moving = speed.window_moving;
@@ -316,6 +309,27 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
     if (at_border(b)) return false;
     *followed = b;
     return true;
+}
+
+// object(t) on the axes asked from the extent window (dsp/extent_window.h),
+// its extents first brought to the object's size now (dsp/size_at_depth.h).
+// Returns how many axes were fitted.
+int controller::impl::fit_to_window(bool fit_x, bool fit_y, int size_x, int size_y, box last,
+                                    span* object_x, span* object_y) const {
+    span now[extent_window::capacity];
+    const int n = recent_extents.count;
+    int fitted = 0;
+    if (fit_x) {
+        extents_at_depth(recent_extents.x, recent_extents.depth_q8, n, size_x,
+                         measured_disparity_q8, now);
+        fitted += window_axis(now, n, size_x, x_span(last), object_x);
+    }
+    if (fit_y) {
+        extents_at_depth(recent_extents.y, recent_extents.depth_q8, n, size_y,
+                         measured_disparity_q8, now);
+        fitted += window_axis(now, n, size_y, y_span(last), object_y);
+    }
+    return fitted;
 }
 
 // The SAD box refitted towards object(t-1) per axis (pull_axis): its size
