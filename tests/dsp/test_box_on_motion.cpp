@@ -51,6 +51,8 @@ constexpr int untracked_start_pairs = 2;  // tracked pairs before the bounds app
 constexpr double max_mean_box_error_px = 3.0;
 constexpr double max_box_error_px = 6.0;
 constexpr double max_depth_error_pct = 1.0;
+constexpr double max_side_error = 0.20;  // of the object's side (side_error_allowed_px)
+constexpr double min_side_error_px = 3.0;
 constexpr double frame_period_ms = 24.5;  // docs/design-brief.md
 
 enum class path_kind { pass, pass_left, thrown, circle, enter, recede, approach };
@@ -158,7 +160,17 @@ struct motion_result {
     int after_detection = 0, tracked = 0, points = 0, scored = 0;
     double box_mean_px = 0.0, box_max_px = 0.0, depth_max_pct = 0.0, processing_max_ms = 0.0;
     double motion_max_px = 0.0;  // the truth's largest move between two frames
+    // The box's sides against the object's: the most a side is off by, and
+    // by how much more than the bound allows (side_error_allowed_px).
+    double side_max_pct = 0.0, side_over_px = -1.0;
 };
+
+// A box on the object covers it: each side within a fifth of the object's
+// (3 px for a small one) of the pixels the object's ellipse touches. The
+// centre bounds alone pass a box shrunk to half the ball around its centre.
+double side_error_allowed_px(int object_side_px) {
+    return std::max(min_side_error_px, max_side_error * object_side_px);
+}
 
 motion_result run_case(const motion_case& c) {
     const scene::scenario scenario = scenario_of(c);
@@ -170,6 +182,7 @@ motion_result run_case(const motion_case& c) {
                       .detection_frame;
     double box_sum = 0.0;
     std::string per_pair;  // box centre error (dx, dy) of each tracked pair
+    std::string sides;     // box side - object side (w, h) of each scored pair
     for (const host::host_record& rec : records) {
         if (rec.index > 0) {
             const scene::sphere_image now = runner.sequence().truth(rec.index).front().right;
@@ -198,6 +211,15 @@ motion_result run_case(const motion_case& c) {
         ++r.scored;
         box_sum += e.box_centre_err_px;
         r.box_max_px = std::max(r.box_max_px, e.box_centre_err_px);
+        const stereosim_box& b = rec.out.box_right;
+        const dsp::box& t = rec.truth.right.pixel_box;
+        const int off_w = b.w - t.width, off_h = b.h - t.height;
+        std::snprintf(text, sizeof text, " %d:(%+d,%+d)", rec.index, off_w, off_h);
+        sides += text;
+        r.side_max_pct = std::max({r.side_max_pct, 100.0 * std::abs(off_w) / t.width,
+                                   100.0 * std::abs(off_h) / t.height});
+        r.side_over_px = std::max({r.side_over_px, std::abs(off_w) - side_error_allowed_px(t.width),
+                                   std::abs(off_h) - side_error_allowed_px(t.height)});
         r.depth_max_pct = std::max(r.depth_max_pct, std::fabs(e.depth_err_pct));
     }
     r.box_mean_px = r.scored > 0 ? box_sum / r.scored : 0.0;
@@ -207,6 +229,8 @@ motion_result run_case(const motion_case& c) {
         c.name, r.motion_max_px, r.detection, r.tracked, r.after_detection, r.box_mean_px,
         r.box_max_px, r.scored, r.depth_max_pct, r.processing_max_ms);
     std::printf("  pair:(box dx,dy px)depth:%s\n", per_pair.c_str());
+    std::printf("  box sides off by up to %.1f %%, pair:(w,h px):%s\n", r.side_max_pct,
+                sides.c_str());
     return r;
 }
 
@@ -224,6 +248,8 @@ TEST_P(BoxOnMotion, StaysOnTheObject) {
     ASSERT_GE(r.scored, 5);
     EXPECT_LE(r.box_mean_px, max_mean_box_error_px);
     EXPECT_LE(r.box_max_px, max_box_error_px);
+    EXPECT_LE(r.side_over_px, 0.0) << "a box side off the object's by more than "
+                                   << 100 * max_side_error << " % (" << min_side_error_px << " px)";
     EXPECT_LE(r.depth_max_pct, max_depth_error_pct);
     EXPECT_LE(r.processing_max_ms, frame_period_ms);
 }
@@ -843,7 +869,8 @@ INSTANTIATE_TEST_SUITE_P(
 // window: balls going away from the rig or coming towards it while they
 // pass at 2-25 px per frame, their images shrinking or growing. Three
 // passed; five failed, development cases of the size read from the depth
-// since (dsp/size_at_depth.h), of which three pass and two are open.
+// since (dsp/size_at_depth.h), of which three pass and two are open. The
+// 40 px ball coming nearer is open since the box's sides are judged.
 INSTANTIATE_TEST_SUITE_P(
     HeldOutDepth23, BoxOnMotion,
     ::testing::Values(motion_case{"heldout23_recede60px_15pxpf", 60, 2.6, recede, 3.0, 0.0, 'x',
@@ -854,22 +881,25 @@ INSTANTIATE_TEST_SUITE_P(
                                   1.0, 3.0, 'x', tsukuba, 24},
                       motion_case{"heldout23_approach100px_15pxpf_teddy", 100, 2.6, approach, 3.0,
                                   0.0, 'x', photo4, 16},
-                      motion_case{"heldout23_approach40px_2pxpf_2rps_y_kodim19", 40, 2.6, approach,
-                                  0.4, 2.0, 'y', photo3, 24},
                       motion_case{"heldout23_approach120px_25pxpf_4rps_z", 120, 2.6, approach, 5.0,
                                   4.0, 'z', procedural, 12}),
     case_name);
 
-// A rig whose principal points differ by 16 px (a disparity of 16 px at
-// infinity): the size read from the depth takes the part of the disparity
-// inversely proportional to depth (dsp/size_at_depth.h). Round 23's 80 px
-// ball going away at 25 px a frame, written after the rule: 2.41 / 5.40 px;
-// with the offset left in the ratio (mutant fw-110) 2.47 / 5.40, so it does
-// not judge that half of the rule (a pair's ratio moves by under 1 %).
+// Rigs whose principal points differ by 16 px either way (a disparity of
+// +-16 px at infinity): the size read from the depth takes the part of the
+// disparity inversely proportional to depth (dsp/size_at_depth.h). Round
+// 23's 80 px ball going away at 25 px a frame, written after the rule.
+// Neither judges that subtraction: with the offset left in the ratio
+// (mutant fw-110) the +16 px rig's box ends 6 px too wide (2.41 -> 2.47 px
+// mean) and the -16 px rig's (measured disparity 20 -> 13 px where the
+// pinhole's is 36 -> 29) 8 px too low, 12.5 % of the ball, both within the
+// sides' bound.
 INSTANTIATE_TEST_SUITE_P(PrincipalOffset, BoxOnMotion,
                          ::testing::Values(motion_case{"recede80px_25pxpf_5rps_y_venus_dcx16", 80,
+                                                       2.6, recede, 5.0, 5.0, 'y', venus, 14, 16.0},
+                                           motion_case{"recede80px_25pxpf_5rps_y_venus_dcxm16", 80,
                                                        2.6, recede, 5.0, 5.0, 'y', venus, 14,
-                                                       16.0}),
+                                                       -16.0}),
                          case_name);
 
 // Held out, round 24: written before the size read from the depth
@@ -889,7 +919,7 @@ INSTANTIATE_TEST_SUITE_P(HeldOutDepth24, BoxOnMotion,
 
 // Open: the issue of the box on fast, large and spinning objects stays open
 // on these (docs/firmware.md, "Open"; run with
-// --gtest_also_run_disabled_tests, all eight fail). A 100 px ball circling over
+// --gtest_also_run_disabled_tests, all nine fail). A 100 px ball circling over
 // venus keeps a box 3.5 px left of it (mean 3.53, max 4.13; its right rim
 // never in Dif(key, t): from 35 px above its centre down to its bottom the
 // shaded limb is 0-18 grey levels off venus's dark frame, under the
@@ -907,7 +937,12 @@ INSTANTIATE_TEST_SUITE_P(HeldOutDepth24, BoxOnMotion,
 // held out, the 100 px ball at 1 px a frame over cones is detected only at
 // its 23rd frame (no pair scored), the 170 px ball at 8 px a frame over
 // kodim23 3.02 / 10.64, the 130 px ball at 4 px a frame spinning 5 rev/s
-// over kodim19 3.75 / 7.84 (depth 1.05 %).
+// over kodim19 3.75 / 7.84 (depth 1.05 %). Round 23's 40 px ball coming
+// nearer at 2 px a frame over kodim19 is on the object's centre (2.50 /
+// 5.57) but its box does not grow with it: under its key 7 px narrow
+// (keyed_axis reads a growing ball's trailing side where the key's was),
+// and once the key is dropped 13 px short in height (55 px) where the
+// refit takes a slow ball's height from the thin differences.
 INSTANTIATE_TEST_SUITE_P(DISABLED_Open, BoxOnMotion,
                          ::testing::Values(motion_case{"heldout6_circle100px_1pxpf_venus", 100, 2.6,
                                                        circle, 0.125, 0.0, 'x', venus, 30},
@@ -924,8 +959,10 @@ INSTANTIATE_TEST_SUITE_P(DISABLED_Open, BoxOnMotion,
                                            motion_case{"heldout24_recede170px_8pxpf_photo2", 170,
                                                        2.2, recede, 1.6, 0.0, 'x', photo2, 20},
                                            motion_case{"heldout24_recede130px_4pxpf_5rps_x_photo3",
-                                                       130, 2.6, recede, 0.8, 5.0, 'x', photo3,
-                                                       24}),
+                                                       130, 2.6, recede, 0.8, 5.0, 'x', photo3, 24},
+                                           motion_case{
+                                               "heldout23_approach40px_2pxpf_2rps_y_kodim19", 40,
+                                               2.6, approach, 0.4, 2.0, 'y', photo3, 24}),
                          case_name);
 
 }  // namespace
