@@ -48,6 +48,22 @@ void extents_at_depth(const span* extents, const int64_t* depth_q8, int count, i
     }
 }
 
+span keyed_span_at_depth(span read, int shift, int64_t key_q8, int64_t now_q8) {
+    if (key_q8 <= 0 || now_q8 <= 0 || 100 * change_of(key_q8, now_q8) < key_q8) return read;
+    const int moved = shift < 0 ? -shift : shift;
+    const int now = scaled_size(read.size, 2 * now_q8, now_q8 + key_q8);
+    const int then = scaled_size(read.size, 2 * key_q8, now_q8 + key_q8);
+    if (2 * moved >= (now > then ? now - then : then - now))  // an end each
+        return shift > 0 ? span{read.end() - now, now} : span{read.start, now};
+    // Both ends the object's now (it grew past the key's) or the key's (it
+    // shrank inside it): the whole extent, or it at the depth now about its
+    // centre moved by the displacement.
+    const span both{read.start - (shift > 0 ? shift : 0), read.size + moved};
+    if (now_q8 > key_q8) return both;
+    const int size = scaled_size(both.size, now_q8, key_q8);
+    return span{centred_start(both.start + shift, both.size, size), size};
+}
+
 bool disparity_jumped(int64_t from_q8, int64_t to_q8) {
     return from_q8 > 0 && to_q8 > 0 && 8 * change_of(from_q8, to_q8) > from_q8;
 }

@@ -5,6 +5,7 @@
 // at d. The oracle is that ratio in floating point, not the code's rounding.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -75,6 +76,47 @@ TEST(ExtentsAtDepth, NarrowsWhatTheObjectWasLargerWhenRead) {
     EXPECT_LE(std::fabs(centre(now[1].start, now[1].size) - centre(280, 114)), 0.5);
     EXPECT_EQ(now[2].size, 118);  // smaller then: left as read
     EXPECT_EQ(now[3].size, 122);
+}
+
+// A key's object read from Dif(key, t): the difference's extent spans the
+// ball where the key was, [c - W0/2, c + W0/2), and where it is now,
+// [c + s - W/2, c + s + W/2), with W = W0 d_now / d_key. Read less the
+// displacement s (dsp::keyed_axis, as TRACK does), then brought to the
+// depth, it must be the ball now within a pixel on each end. Built here in
+// floating point from the two intervals, not from the formula.
+TEST(KeyedSpanAtDepth, IsTheObjectNowOfAGrowingOrShrinkingBall) {
+    struct sample {
+        double key_size, ratio;
+        int shift;
+    };
+    // Moved further than a side grew or shrank (an end each), and not (the
+    // 150 px ball shrinking 15 px a side, moved 12 or 9; the 80 px growing
+    // 10 a side, moved 3; the 60 px 6 a side, not moved).
+    const sample samples[] = {{45, 1.10, 6},  {45, 1.10, -6}, {150, 0.80, 12}, {150, 0.80, -9},
+                              {80, 1.25, 14}, {100, 0.90, 5}, {150, 0.80, 20}, {80, 1.25, -3},
+                              {60, 1.20, 0},  {60, 0.80, 0}};
+    for (const sample& c : samples) {
+        const double key_start = 200.0, now_size = c.key_size * c.ratio;
+        const double now_start = key_start + 0.5 * c.key_size + c.shift - 0.5 * now_size;
+        const double lo = std::min(key_start, now_start);
+        const double hi = std::max(key_start + c.key_size, now_start + now_size);
+        const dsp::span both{static_cast<int>(std::lround(lo)),
+                             static_cast<int>(std::lround(hi - lo))};
+        const dsp::span read = dsp::keyed_axis(both, c.shift);
+        const int64_t key_q8 = 10000, now_q8 = std::llround(10000 * c.ratio);
+        const dsp::span now = dsp::keyed_span_at_depth(read, c.shift, key_q8, now_q8);
+        EXPECT_LE(std::fabs(now.start - now_start), 1.0) << c.key_size << " x " << c.ratio;
+        EXPECT_LE(std::fabs(now.end() - (now_start + now_size)), 1.0)
+            << c.key_size << " x " << c.ratio << " shift " << c.shift;
+    }
+}
+
+// Within 1 % of the key's disparity, or with none, the reading stands.
+TEST(KeyedSpanAtDepth, KeepsTheReadingWithinOnePercent) {
+    const dsp::span read{200, 60};
+    const dsp::span same = dsp::keyed_span_at_depth(read, 8, 10000, 10090);
+    EXPECT_EQ(same.size, read.size);
+    EXPECT_EQ(dsp::keyed_span_at_depth(read, 8, 0, 10090).size, read.size);
 }
 
 TEST(DisparityJumped, OverAnEighthOnly) {
