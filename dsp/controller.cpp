@@ -185,9 +185,9 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
     switch (m_state) {
         case tracker_state::detect:
             has_object = s.detect(out);
-            if (has_object) {  // a new track: its size stands for no depth yet
+            if (has_object) {  // a new track: its size stands for no depth yet, nor a key's
                 m_state = tracker_state::track;
-                s.measured_disparity_q8 = s.sized_disparity_q8 = 0;
+                s.measured_disparity_q8 = s.sized_disparity_q8 = s.key_sized_q8 = 0;
             }
             break;
         case tracker_state::track:
@@ -220,6 +220,9 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
         // For the next pair's size (dsp/size_at_depth.h): the part of the
         // disparity inversely proportional to depth.
         s.measured_disparity_q8 = out.disparity_q8 - cfg.rig.principal_offset_q8();
+        // A key taken before the track had a disparity (at its detection)
+        // stands for the first one measured.
+        if (s.key.valid() && s.key_sized_q8 <= 0) s.key_sized_q8 = s.measured_disparity_q8;
         s.xyz(out.box_right, out);
     }
     return out;
