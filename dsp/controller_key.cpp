@@ -181,8 +181,9 @@ void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
     box outlined;
     if ((outline_x || outline_y) && keyed_object(u, dx, dy, false, &outlined)) {
         outlined = from_spans(
-            keyed_span_at_depth(x_span(outlined), dx, key_sized_q8, measured_disparity_q8),
-            keyed_span_at_depth(y_span(outlined), dy, key_sized_q8, measured_disparity_q8));
+            keyed_span_at_depth(x_span(outlined), dx, k.width, key_sized_q8, measured_disparity_q8),
+            keyed_span_at_depth(y_span(outlined), dy, k.height, key_sized_q8,
+                                measured_disparity_q8));
         *cycles += cycles_of(cost::size_at_depth_profile(2));
         if (outline_x) b = from_spans(x_span(outlined), y_span(b));
         if (outline_y) b = from_spans(x_span(b), y_span(outlined));

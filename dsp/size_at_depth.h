@@ -48,15 +48,17 @@ void extents_at_depth(const span* extents, const int64_t* depth_q8, int count, i
 // A key's object on one axis at the depth now, from Dif(key, t)'s extent
 // read less the key's displacement `shift` (keyed_axis: `read`). That
 // difference holds the object where the key was and where it is, so where
-// it moved further than it grew or shrank on a side, `read` is the mean of
-// the two sizes, (W_key + W) / 2, and its leading end is the object's now:
-// with W = W_key now_q8 / key_q8, W is 2 read.size now_q8 / (now_q8 +
-// key_q8), kept at that end. (Read as it was, a 40 px ball coming nearer at
-// 2 px a pair was 7 px narrow after 6 pairs, its trailing side the key's.)
+// it moved further than it grew or shrank on a side, its leading end is
+// the object's now and its trailing end the key's object's: read as it
+// was, a 40 px ball coming nearer at 2 px a pair was 7 px narrow after 6
+// pairs. Its size now is the key's (`key_size`) times now_q8 / key_q8, kept
+// at that leading end. Not the reading less the displacement (the mean of
+// the two sizes): a shrinking ball's pattern reads its displacement short
+// (16 px of 24 on a 60 px ball going away), which left its box 7 px wide.
 // Where it grew or shrank more than it moved, both ends of the extent are
 // the object's now (grown) or the key's (shrunk): the extent, or the key's
 // object at the depth now, moved. `read` itself where the ratio is under
 // 1 % or either disparity unknown.
-span keyed_span_at_depth(span read, int shift, int64_t key_q8, int64_t now_q8);
+span keyed_span_at_depth(span read, int shift, int key_size, int64_t key_q8, int64_t now_q8);
 
 }  // namespace dsp

@@ -87,14 +87,17 @@ TEST(ExtentsAtDepth, NarrowsWhatTheObjectWasLargerWhenRead) {
 TEST(KeyedSpanAtDepth, IsTheObjectNowOfAGrowingOrShrinkingBall) {
     struct sample {
         double key_size, ratio;
-        int shift;
+        int shift, shift_read;  // the displacement, and as the key's pattern read it
     };
     // Moved further than a side grew or shrank (an end each), and not (the
     // 150 px ball shrinking 15 px a side, moved 12 or 9; the 80 px growing
-    // 10 a side, moved 3; the 60 px 6 a side, not moved).
-    const sample samples[] = {{45, 1.10, 6},  {45, 1.10, -6}, {150, 0.80, 12}, {150, 0.80, -9},
-                              {80, 1.25, 14}, {100, 0.90, 5}, {150, 0.80, 20}, {80, 1.25, -3},
-                              {60, 1.20, 0},  {60, 0.80, 0}};
+    // 10 a side, moved 3; the 60 px 6 a side, not moved). The last: a 60 px
+    // ball going away whose pattern read 16 px of the 24 it moved (round
+    // 25's ball over aloe: a shrinking texture matched short).
+    const sample samples[] = {{45, 1.10, 6, 6},    {45, 1.10, -6, -6}, {150, 0.80, 12, 12},
+                              {150, 0.80, -9, -9}, {80, 1.25, 14, 14}, {100, 0.90, 5, 5},
+                              {150, 0.80, 20, 20}, {80, 1.25, -3, -3}, {60, 1.20, 0, 0},
+                              {60, 0.80, 0, 0},    {58, 0.755, 24, 16}};
     for (const sample& c : samples) {
         const double key_start = 200.0, now_size = c.key_size * c.ratio;
         const double now_start = key_start + 0.5 * c.key_size + c.shift - 0.5 * now_size;
@@ -102,9 +105,11 @@ TEST(KeyedSpanAtDepth, IsTheObjectNowOfAGrowingOrShrinkingBall) {
         const double hi = std::max(key_start + c.key_size, now_start + now_size);
         const dsp::span both{static_cast<int>(std::lround(lo)),
                              static_cast<int>(std::lround(hi - lo))};
-        const dsp::span read = dsp::keyed_axis(both, c.shift);
+        const dsp::span read = dsp::keyed_axis(both, c.shift_read);
         const int64_t key_q8 = 10000, now_q8 = std::llround(10000 * c.ratio);
-        const dsp::span now = dsp::keyed_span_at_depth(read, c.shift, key_q8, now_q8);
+        const int key_size = static_cast<int>(std::lround(c.key_size));
+        const dsp::span now =
+            dsp::keyed_span_at_depth(read, c.shift_read, key_size, key_q8, now_q8);
         EXPECT_LE(std::fabs(now.start - now_start), 1.0) << c.key_size << " x " << c.ratio;
         EXPECT_LE(std::fabs(now.end() - (now_start + now_size)), 1.0)
             << c.key_size << " x " << c.ratio << " shift " << c.shift;
@@ -114,9 +119,9 @@ TEST(KeyedSpanAtDepth, IsTheObjectNowOfAGrowingOrShrinkingBall) {
 // Within 1 % of the key's disparity, or with none, the reading stands.
 TEST(KeyedSpanAtDepth, KeepsTheReadingWithinOnePercent) {
     const dsp::span read{200, 60};
-    const dsp::span same = dsp::keyed_span_at_depth(read, 8, 10000, 10090);
+    const dsp::span same = dsp::keyed_span_at_depth(read, 8, 60, 10000, 10090);
     EXPECT_EQ(same.size, read.size);
-    EXPECT_EQ(dsp::keyed_span_at_depth(read, 8, 0, 10090).size, read.size);
+    EXPECT_EQ(dsp::keyed_span_at_depth(read, 8, 60, 0, 10090).size, read.size);
 }
 
 TEST(DisparityJumped, OverAnEighthOnly) {
