@@ -167,7 +167,8 @@ struct motion_result {
 
 // A box on the object covers it: each side within a fifth of the object's
 // (3 px for a small one) of the pixels the object's ellipse touches. The
-// centre bounds alone pass a box shrunk to half the ball around its centre.
+// centre and depth bounds alone passed a box reported at three quarters of
+// its size about its centre (docs/firmware.md, "The box's sides judged").
 double side_error_allowed_px(int object_side_px) {
     return std::max(min_side_error_px, max_side_error * object_side_px);
 }
