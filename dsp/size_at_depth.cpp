@@ -1,5 +1,7 @@
 #include "dsp/size_at_depth.h"
 
+#include "dsp/int_bounds.h"
+
 namespace dsp {
 
 namespace {
@@ -50,9 +52,9 @@ void extents_at_depth(const span* extents, const int64_t* depth_q8, int count, i
 
 span keyed_span_at_depth(span read, int shift, int key_size, int64_t key_q8, int64_t now_q8) {
     if (key_q8 <= 0 || now_q8 <= 0 || 100 * change_of(key_q8, now_q8) < key_q8) return read;
-    const int moved = shift < 0 ? -shift : shift;
+    const int moved = abs_int(shift);
     const int now = scaled_size(key_size, now_q8, key_q8);
-    if (2 * moved >= (now > key_size ? now - key_size : key_size - now))  // an end each
+    if (2 * moved >= abs_int(now - key_size))  // an end each
         return shift > 0 ? span{read.end() - now, now} : span{read.start, now};
     // Both ends the object's now (it grew past the key's) or the key's (it
     // shrank inside it): the whole extent, or it at the depth now about its
