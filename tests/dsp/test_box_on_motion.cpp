@@ -907,6 +907,20 @@ INSTANTIATE_TEST_SUITE_P(PrincipalOffset, BoxOnMotion,
                                                        -16.0}),
                          case_name);
 
+// The same rigs under slow keyed balls, whose box is the key's carried over
+// many pairs by the ratio of the disparities (follow_slow_object): round
+// 25's ball going away over aloe and its ball coming nearer over teddy.
+INSTANTIATE_TEST_SUITE_P(PrincipalOffsetKeyed, BoxOnMotion,
+                         ::testing::Values(motion_case{"recede60px_1pxpf_aloe_dcxm16", 60, 2.6,
+                                                       recede, 0.2, 0.0, 'x', aloe, 24, -16.0},
+                                           motion_case{"recede60px_1pxpf_aloe_dcx16", 60, 2.6,
+                                                       recede, 0.2, 0.0, 'x', aloe, 24, 16.0},
+                                           motion_case{"approach50px_2pxpf_teddy_dcxm16", 50, 2.6,
+                                                       approach, 0.4, 0.0, 'x', photo4, 24, -16.0},
+                                           motion_case{"approach50px_2pxpf_teddy_dcx16", 50, 2.6,
+                                                       approach, 0.4, 0.0, 'x', photo4, 24, 16.0}),
+                         case_name);
+
 // Held out, round 24: written before the size read from the depth
 // (dsp/size_at_depth.h) and run once on it: more balls going away from
 // the rig or towards it, over the other photographs. These three passed
