@@ -184,7 +184,15 @@ void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
             keyed_span_at_depth(x_span(outlined), dx, k.width, key_sized_q8, measured_disparity_q8),
             keyed_span_at_depth(y_span(outlined), dy, k.height, key_sized_q8,
                                 measured_disparity_q8));
-        *cycles += cycles_of(cost::size_at_depth_profile(2));
+        if (seen.outlined) {  // where it shrank inside the key's box, the silhouette places it
+            const box s = tracker.position();
+            outlined =
+                from_spans(keyed_span_on_outline(x_span(outlined), dx, k.width, key_sized_q8,
+                                                 measured_disparity_q8, x_span(s)),
+                           keyed_span_on_outline(y_span(outlined), dy, k.height, key_sized_q8,
+                                                 measured_disparity_q8, y_span(s)));
+        }
+        *cycles += cycles_of(cost::size_at_depth_profile(seen.outlined ? 4 : 2));
         if (outline_x) b = from_spans(x_span(outlined), y_span(b));
         if (outline_y) b = from_spans(x_span(b), y_span(outlined));
     }

@@ -65,6 +65,18 @@ span keyed_span_at_depth(span read, int shift, int key_size, int64_t key_q8, int
     return span{centred_start(both.start + shift, both.size, size), size};
 }
 
+span keyed_span_on_outline(span keyed, int shift, int key_size, int64_t key_q8, int64_t now_q8,
+                           span outline) {
+    if (key_q8 <= 0 || now_q8 <= 0 || 100 * change_of(key_q8, now_q8) < key_q8) return keyed;
+    const int now = scaled_size(key_size, now_q8, key_q8);
+    const int shrank = key_size - now;
+    if (shrank <= 0 || 2 * abs_int(shift) >= shrank) return keyed;  // an end each, or grown
+    if (abs_int(outline.size - keyed.size) > max_int(2, keyed.size / 8)) return keyed;
+    const int off2 = (2 * outline.start + outline.size) - (2 * keyed.start + keyed.size);
+    if (abs_int(off2) > shrank + 2) return keyed;  // further than inside the key's box
+    return span{centred_start(outline.start, outline.size, keyed.size), keyed.size};
+}
+
 bool disparity_jumped(int64_t from_q8, int64_t to_q8) {
     return from_q8 > 0 && to_q8 > 0 && 8 * change_of(from_q8, to_q8) > from_q8;
 }

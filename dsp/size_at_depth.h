@@ -61,4 +61,16 @@ void extents_at_depth(const span* extents, const int64_t* depth_q8, int count, i
 // 1 % or either disparity unknown.
 span keyed_span_at_depth(span read, int shift, int key_size, int64_t key_q8, int64_t now_q8);
 
+// The same axis where the object shrank inside the key's box (it shrank more
+// than it moved): there neither end of Dif(key, t) is the object's now, nor
+// does the key's pattern read its displacement on a texture that shrinks
+// (a 60 px ball going away over aloe, 4 px down in 15 pairs: the pattern
+// read 0 to -1 px, and the box rode 4-6 px above it). The silhouette
+// `outline` (track_object's box) sees the whole rim move as it shrinks: the
+// span `keyed` is centred there where the outline is the size at the depth
+// (within 2 px or an eighth) and its centre is at most half the shrink, + 1,
+// from keyed's. `keyed` otherwise.
+span keyed_span_on_outline(span keyed, int shift, int key_size, int64_t key_q8, int64_t now_q8,
+                           span outline);
+
 }  // namespace dsp

@@ -124,6 +124,56 @@ TEST(KeyedSpanAtDepth, KeepsTheReadingWithinOnePercent) {
     EXPECT_EQ(dsp::keyed_span_at_depth(read, 8, 60, 0, 10090).size, read.size);
 }
 
+// A ball that shrank inside the key's box: Dif(key, t)'s extent is the key's
+// ball, [200, 200 + W0), and its pattern read no displacement, so the key's
+// object at the depth is centred where the key was. The ball now is
+// [c + s - W/2, c + s + W/2) with W = W0 d_now / d_key and |s| under half the
+// shrink; its silhouette (read 1 px wider or narrower, either side) places
+// it within a pixel on each end. Built here in floating point.
+TEST(KeyedSpanOnOutline, PlacesABallThatShrankInsideTheKeysBox) {
+    struct sample {
+        double key_size, ratio, shift;
+        int outline_grow_start, outline_grow_end;  // the silhouette's misreading, px
+    };
+    const sample samples[] = {{58, 0.75, 4.3, 0, 0}, {58, 0.75, -4.3, 1, 0}, {100, 0.8, 6, 0, 1},
+                              {100, 0.8, -9, -1, 0}, {40, 0.85, 2, 0, -1},   {150, 0.7, 0, 1, 1},
+                              {150, 0.7, 20, 0, 0}};
+    for (const sample& c : samples) {
+        const int key_size = static_cast<int>(std::lround(c.key_size));
+        const dsp::span both{200, key_size};
+        const int64_t key_q8 = 10000, now_q8 = std::llround(10000 * c.ratio);
+        const dsp::span keyed = dsp::keyed_span_at_depth(both, 0, key_size, key_q8, now_q8);
+        const double now_size = c.key_size * c.ratio;
+        const double now_start = 200.0 + 0.5 * c.key_size + c.shift - 0.5 * now_size;
+        const int outline_start = static_cast<int>(std::lround(now_start)) - c.outline_grow_start;
+        const int outline_end =
+            static_cast<int>(std::lround(now_start + now_size)) + c.outline_grow_end;
+        const dsp::span outline{outline_start, outline_end - outline_start};
+        const dsp::span now =
+            dsp::keyed_span_on_outline(keyed, 0, key_size, key_q8, now_q8, outline);
+        EXPECT_LE(std::fabs(now.start - now_start), 1.0) << c.key_size << " shift " << c.shift;
+        EXPECT_LE(std::fabs(now.end() - (now_start + now_size)), 1.0)
+            << c.key_size << " shift " << c.shift;
+    }
+}
+
+// Where the silhouette is not the object at the depth, or the object did not
+// shrink inside the key's box, the key's reading stands.
+TEST(KeyedSpanOnOutline, KeepsTheKeysReadingOtherwise) {
+    const dsp::span keyed{207, 44};  // a 58 px key's ball at 0.75 of its disparity, centred
+    const auto on = [&](int shift, int64_t now_q8, dsp::span outline) {
+        const dsp::span s = dsp::keyed_span_on_outline(keyed, shift, 58, 10000, now_q8, outline);
+        return s.start == keyed.start && s.size == keyed.size;
+    };
+    EXPECT_FALSE(on(0, 7500, {211, 44}));  // placed: inside the key's box, its size
+    EXPECT_TRUE(on(0, 7500, {211, 30}));   // a part of the outline
+    EXPECT_TRUE(on(0, 7500, {220, 44}));   // further than the shrink allows
+    EXPECT_TRUE(on(8, 7500, {211, 44}));   // moved more than half the shrink: an end each
+    EXPECT_TRUE(on(0, 12500, {211, 44}));  // grew
+    EXPECT_TRUE(on(0, 9950, {211, 44}));   // within 1 %
+    EXPECT_TRUE(on(0, 0, {211, 44}));      // no disparity
+}
+
 TEST(DisparityJumped, OverAnEighthOnly) {
     EXPECT_FALSE(dsp::disparity_jumped(8000, 7000));  // 12.5 %
     EXPECT_TRUE(dsp::disparity_jumped(8000, 6999));
