@@ -40,6 +40,7 @@
 
 #include "model/scene/ball_paths.h"
 #include "tb/platform/scoring/error_metrics.h"
+#include "tests/support/box_bounds.h"
 #include "tests/support/data_path.h"
 #include "tests/support/host/scenarios.h"
 #include "tests/support/host/stereo_runner.h"
@@ -47,13 +48,14 @@
 
 namespace {
 
-constexpr int untracked_start_pairs = 2;  // tracked pairs before the bounds apply
-constexpr double max_mean_box_error_px = 3.0;
-constexpr double max_box_error_px = 6.0;
-constexpr double max_depth_error_pct = 1.0;
-constexpr double max_side_error = 0.20;  // of the object's side (side_error_allowed_px)
-constexpr double min_side_error_px = 3.0;
-constexpr double frame_period_ms = 24.5;  // docs/design-brief.md
+using test_support::frame_period_ms;
+using test_support::max_box_error_px;
+using test_support::max_depth_error_pct;
+using test_support::max_mean_box_error_px;
+using test_support::max_side_error;
+using test_support::min_side_error_px;
+using test_support::side_error_allowed_px;
+using test_support::untracked_start_pairs;
 
 enum class path_kind { pass, pass_left, thrown, circle, enter, recede, approach };
 enum class backdrop { procedural, cones, kodim23, kodim19, teddy, tsukuba, venus, aloe };
@@ -164,14 +166,6 @@ struct motion_result {
     // by how much more than the bound allows (side_error_allowed_px).
     double side_max_pct = 0.0, side_over_px = -1.0;
 };
-
-// A box on the object covers it: each side within a fifth of the object's
-// (3 px for a small one) of the pixels the object's ellipse touches. The
-// centre and depth bounds alone passed a box reported at three quarters of
-// its size about its centre (docs/firmware.md, "The box's sides judged").
-double side_error_allowed_px(int object_side_px) {
-    return std::max(min_side_error_px, max_side_error * object_side_px);
-}
 
 motion_result run_case(const motion_case& c) {
     const scene::scenario scenario = scenario_of(c);
