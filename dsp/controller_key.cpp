@@ -180,19 +180,15 @@ void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
         shifted_enough || r.outline_y || (key_y.unfit && covers(y_span(u.bbox), y_span(k)));
     box outlined;
     if ((outline_x || outline_y) && keyed_object(u, dx, dy, false, &outlined)) {
-        outlined = from_spans(
-            keyed_span_at_depth(x_span(outlined), dx, k.width, key_sized_q8, measured_disparity_q8),
-            keyed_span_at_depth(y_span(outlined), dy, k.height, key_sized_q8,
-                                measured_disparity_q8));
-        if (seen.outlined) {  // where it shrank inside the key's box, the silhouette places it
-            const box s = tracker.position();
-            outlined =
-                from_spans(keyed_span_on_outline(x_span(outlined), dx, k.width, key_sized_q8,
-                                                 measured_disparity_q8, x_span(s)),
-                           keyed_span_on_outline(y_span(outlined), dy, k.height, key_sized_q8,
-                                                 measured_disparity_q8, y_span(s)));
-        }
-        *cycles += cycles_of(cost::size_at_depth_profile(seen.outlined ? 4 : 2));
+        // Where it shrank inside the key's box, the silhouette places it.
+        const box s = tracker.position();
+        const span sx = x_span(s), sy = y_span(s);
+        outlined =
+            from_spans(keyed_span_at_depth(x_span(outlined), dx, k.width, key_sized_q8,
+                                           measured_disparity_q8, seen.outlined ? &sx : nullptr),
+                       keyed_span_at_depth(y_span(outlined), dy, k.height, key_sized_q8,
+                                           measured_disparity_q8, seen.outlined ? &sy : nullptr));
+        *cycles += cycles_of(cost::size_at_depth_profile(2));
         if (outline_x) b = from_spans(x_span(outlined), y_span(b));
         if (outline_y) b = from_spans(x_span(b), y_span(outlined));
     }

@@ -22,6 +22,15 @@ int64_t change_of(int64_t from_q8, int64_t to_q8) {
     return to_q8 > from_q8 ? to_q8 - from_q8 : from_q8 - to_q8;
 }
 
+// `outline` is the object that shrank by `shrank` px inside the key's box
+// and stands at `at` if moved as read: it is that size (within 2 px or an
+// eighth) and its centre at most half the shrink, + 1 px, from at's.
+bool outlines_shrunk(span outline, span at, int shrank) {
+    if (abs_int(outline.size - at.size) > max_int(2, at.size / 8)) return false;
+    const int off2 = (2 * outline.start + outline.size) - (2 * at.start + at.size);
+    return abs_int(off2) <= shrank + 2;
+}
+
 }  // namespace
 
 box resized_about_centre(box b, int width, int height) {
@@ -50,7 +59,8 @@ void extents_at_depth(const span* extents, const int64_t* depth_q8, int count, i
     }
 }
 
-span keyed_span_at_depth(span read, int shift, int key_size, int64_t key_q8, int64_t now_q8) {
+span keyed_span_at_depth(span read, int shift, int key_size, int64_t key_q8, int64_t now_q8,
+                         const span* outline) {
     if (key_q8 <= 0 || now_q8 <= 0 || 100 * change_of(key_q8, now_q8) < key_q8) return read;
     const int moved = abs_int(shift);
     const int now = scaled_size(key_size, now_q8, key_q8);
@@ -58,23 +68,13 @@ span keyed_span_at_depth(span read, int shift, int key_size, int64_t key_q8, int
         return shift > 0 ? span{read.end() - now, now} : span{read.start, now};
     // Both ends the object's now (it grew past the key's) or the key's (it
     // shrank inside it): the whole extent, or it at the depth now about its
-    // centre moved by the displacement.
+    // centre moved by the displacement, or on the outline.
     const span both{read.start - (shift > 0 ? shift : 0), read.size + moved};
     if (now_q8 > key_q8) return both;
     const int size = scaled_size(both.size, now_q8, key_q8);
-    return span{centred_start(both.start + shift, both.size, size), size};
-}
-
-span keyed_span_on_outline(span keyed, int shift, int key_size, int64_t key_q8, int64_t now_q8,
-                           span outline) {
-    if (key_q8 <= 0 || now_q8 <= 0 || 100 * change_of(key_q8, now_q8) < key_q8) return keyed;
-    const int now = scaled_size(key_size, now_q8, key_q8);
-    const int shrank = key_size - now;
-    if (shrank <= 0 || 2 * abs_int(shift) >= shrank) return keyed;  // an end each, or grown
-    if (abs_int(outline.size - keyed.size) > max_int(2, keyed.size / 8)) return keyed;
-    const int off2 = (2 * outline.start + outline.size) - (2 * keyed.start + keyed.size);
-    if (abs_int(off2) > shrank + 2) return keyed;  // further than inside the key's box
-    return span{centred_start(outline.start, outline.size, keyed.size), keyed.size};
+    const span moved_key{centred_start(both.start + shift, both.size, size), size};
+    if (!outline || !outlines_shrunk(*outline, moved_key, key_size - now)) return moved_key;
+    return span{centred_start(outline->start, outline->size, size), size};
 }
 
 bool disparity_jumped(int64_t from_q8, int64_t to_q8) {

@@ -57,20 +57,17 @@ void extents_at_depth(const span* extents, const int64_t* depth_q8, int count, i
 // (16 px of 24 on a 60 px ball going away), which left its box 7 px wide.
 // Where it grew or shrank more than it moved, both ends of the extent are
 // the object's now (grown) or the key's (shrunk): the extent, or the key's
-// object at the depth now, moved. `read` itself where the ratio is under
-// 1 % or either disparity unknown.
-span keyed_span_at_depth(span read, int shift, int key_size, int64_t key_q8, int64_t now_q8);
-
-// The same axis where the object shrank inside the key's box (it shrank more
-// than it moved): there neither end of Dif(key, t) is the object's now, nor
-// does the key's pattern read its displacement on a texture that shrinks
-// (a 60 px ball going away over aloe, 4 px down in 15 pairs: the pattern
-// read 0 to -1 px, and the box rode 4-6 px above it). The silhouette
-// `outline` (track_object's box) sees the whole rim move as it shrinks: the
-// span `keyed` is centred there where the outline is the size at the depth
-// (within 2 px or an eighth) and its centre is at most half the shrink, + 1,
-// from keyed's. `keyed` otherwise.
-span keyed_span_on_outline(span keyed, int shift, int key_size, int64_t key_q8, int64_t now_q8,
-                           span outline);
+// object at the depth now, moved. Where it shrank inside the key's box,
+// the key's pattern does not read its displacement either, on a texture
+// that shrinks (a 60 px ball going away over aloe went 4 px down in 15
+// pairs, the pattern read 0 to -1 px, and the box rode 4-6 px above it);
+// the silhouette `outline` (track_object's box; null if none) sees the
+// whole rim move as it shrinks, and the object at the depth is centred on
+// it where the outline is that size (within 2 px or an eighth) and inside
+// the key's box (its centre at most half the shrink, + 1 px, from where the
+// displacement read puts it). `read` itself where the ratio is under 1 % or
+// either disparity unknown.
+span keyed_span_at_depth(span read, int shift, int key_size, int64_t key_q8, int64_t now_q8,
+                         const span* outline);
 
 }  // namespace dsp

@@ -109,7 +109,7 @@ TEST(KeyedSpanAtDepth, IsTheObjectNowOfAGrowingOrShrinkingBall) {
         const int64_t key_q8 = 10000, now_q8 = std::llround(10000 * c.ratio);
         const int key_size = static_cast<int>(std::lround(c.key_size));
         const dsp::span now =
-            dsp::keyed_span_at_depth(read, c.shift_read, key_size, key_q8, now_q8);
+            dsp::keyed_span_at_depth(read, c.shift_read, key_size, key_q8, now_q8, nullptr);
         EXPECT_LE(std::fabs(now.start - now_start), 1.0) << c.key_size << " x " << c.ratio;
         EXPECT_LE(std::fabs(now.end() - (now_start + now_size)), 1.0)
             << c.key_size << " x " << c.ratio << " shift " << c.shift;
@@ -119,9 +119,9 @@ TEST(KeyedSpanAtDepth, IsTheObjectNowOfAGrowingOrShrinkingBall) {
 // Within 1 % of the key's disparity, or with none, the reading stands.
 TEST(KeyedSpanAtDepth, KeepsTheReadingWithinOnePercent) {
     const dsp::span read{200, 60};
-    const dsp::span same = dsp::keyed_span_at_depth(read, 8, 60, 10000, 10090);
+    const dsp::span same = dsp::keyed_span_at_depth(read, 8, 60, 10000, 10090, nullptr);
     EXPECT_EQ(same.size, read.size);
-    EXPECT_EQ(dsp::keyed_span_at_depth(read, 8, 60, 0, 10090).size, read.size);
+    EXPECT_EQ(dsp::keyed_span_at_depth(read, 8, 60, 0, 10090, nullptr).size, read.size);
 }
 
 // A ball that shrank inside the key's box: Dif(key, t)'s extent is the key's
@@ -130,7 +130,7 @@ TEST(KeyedSpanAtDepth, KeepsTheReadingWithinOnePercent) {
 // [c + s - W/2, c + s + W/2) with W = W0 d_now / d_key and |s| under half the
 // shrink; its silhouette (read 1 px wider or narrower, either side) places
 // it within a pixel on each end. Built here in floating point.
-TEST(KeyedSpanOnOutline, PlacesABallThatShrankInsideTheKeysBox) {
+TEST(KeyedSpanAtDepth, PlacesABallThatShrankInsideTheKeysBox) {
     struct sample {
         double key_size, ratio, shift;
         int outline_grow_start, outline_grow_end;  // the silhouette's misreading, px
@@ -142,15 +142,13 @@ TEST(KeyedSpanOnOutline, PlacesABallThatShrankInsideTheKeysBox) {
         const int key_size = static_cast<int>(std::lround(c.key_size));
         const dsp::span both{200, key_size};
         const int64_t key_q8 = 10000, now_q8 = std::llround(10000 * c.ratio);
-        const dsp::span keyed = dsp::keyed_span_at_depth(both, 0, key_size, key_q8, now_q8);
         const double now_size = c.key_size * c.ratio;
         const double now_start = 200.0 + 0.5 * c.key_size + c.shift - 0.5 * now_size;
         const int outline_start = static_cast<int>(std::lround(now_start)) - c.outline_grow_start;
         const int outline_end =
             static_cast<int>(std::lround(now_start + now_size)) + c.outline_grow_end;
         const dsp::span outline{outline_start, outline_end - outline_start};
-        const dsp::span now =
-            dsp::keyed_span_on_outline(keyed, 0, key_size, key_q8, now_q8, outline);
+        const dsp::span now = dsp::keyed_span_at_depth(both, 0, key_size, key_q8, now_q8, &outline);
         EXPECT_LE(std::fabs(now.start - now_start), 1.0) << c.key_size << " shift " << c.shift;
         EXPECT_LE(std::fabs(now.end() - (now_start + now_size)), 1.0)
             << c.key_size << " shift " << c.shift;
@@ -159,11 +157,14 @@ TEST(KeyedSpanOnOutline, PlacesABallThatShrankInsideTheKeysBox) {
 
 // Where the silhouette is not the object at the depth, or the object did not
 // shrink inside the key's box, the key's reading stands.
-TEST(KeyedSpanOnOutline, KeepsTheKeysReadingOtherwise) {
-    const dsp::span keyed{207, 44};  // a 58 px key's ball at 0.75 of its disparity, centred
+TEST(KeyedSpanAtDepth, KeepsTheKeysReadingOtherwise) {
+    // Dif(key, t) of a 58 px key's ball: at 0.75 of its disparity the ball
+    // moved as read is [207, 251).
+    const dsp::span read{200, 58};
     const auto on = [&](int shift, int64_t now_q8, dsp::span outline) {
-        const dsp::span s = dsp::keyed_span_on_outline(keyed, shift, 58, 10000, now_q8, outline);
-        return s.start == keyed.start && s.size == keyed.size;
+        const dsp::span with = dsp::keyed_span_at_depth(read, shift, 58, 10000, now_q8, &outline);
+        const dsp::span without = dsp::keyed_span_at_depth(read, shift, 58, 10000, now_q8, nullptr);
+        return with.start == without.start && with.size == without.size;
     };
     EXPECT_FALSE(on(0, 7500, {211, 44}));  // placed: inside the key's box, its size
     EXPECT_TRUE(on(0, 7500, {211, 30}));   // a part of the outline
