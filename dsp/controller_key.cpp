@@ -188,7 +188,8 @@ void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
                                            measured_disparity_q8, seen.outlined ? &sx : nullptr),
                        keyed_span_at_depth(y_span(outlined), dy, k.height, key_sized_q8,
                                            measured_disparity_q8, seen.outlined ? &sy : nullptr));
-        *cycles += cycles_of(cost::size_at_depth_profile(2));
+        // At most two divides an axis (the key's size, and a shrunk extent's).
+        *cycles += cycles_of(cost::size_at_depth_profile(4));
         if (outline_x) b = from_spans(x_span(outlined), y_span(b));
         if (outline_y) b = from_spans(x_span(b), y_span(outlined));
     }
