@@ -40,22 +40,21 @@
 
 #include "model/scene/ball_paths.h"
 #include "tb/platform/scoring/error_metrics.h"
-#include "tests/support/box_bounds.h"
 #include "tests/support/data_path.h"
+#include "tests/support/host/box_judge.h"
 #include "tests/support/host/scenarios.h"
 #include "tests/support/host/stereo_runner.h"
 #include "tests/support/photo_texture.h"
 
 namespace {
 
-using test_support::frame_period_ms;
-using test_support::max_box_error_px;
-using test_support::max_depth_error_pct;
-using test_support::max_mean_box_error_px;
-using test_support::max_side_error;
-using test_support::min_side_error_px;
-using test_support::side_error_allowed_px;
-using test_support::untracked_start_pairs;
+using host::frame_period_ms;
+using host::max_box_error_px;
+using host::max_depth_error_pct;
+using host::max_mean_box_error_px;
+using host::max_side_error;
+using host::min_side_error_px;
+using host::untracked_start_pairs;
 
 enum class path_kind { pass, pass_left, thrown, circle, enter, recede, approach };
 enum class backdrop { procedural, cones, kodim23, kodim19, teddy, tsukuba, venus, aloe };
@@ -159,12 +158,10 @@ scene::scenario scenario_of(const motion_case& c) {
 
 struct motion_result {
     int detection = -1;
-    int after_detection = 0, tracked = 0, points = 0, scored = 0;
-    double box_mean_px = 0.0, box_max_px = 0.0, depth_max_pct = 0.0, processing_max_ms = 0.0;
+    int after_detection = 0, tracked = 0, points = 0;
+    double processing_max_ms = 0.0;
     double motion_max_px = 0.0;  // the truth's largest move between two frames
-    // The box's sides against the object's: the most a side is off by, and
-    // by how much more than the bound allows (side_error_allowed_px).
-    double side_max_pct = 0.0, side_over_px = -1.0;
+    host::box_errors judged;     // the scored pairs
 };
 
 motion_result run_case(const motion_case& c) {
@@ -175,9 +172,7 @@ motion_result run_case(const motion_case& c) {
     r.detection = platform::summarize(host::scored(records),
                                       platform::first_motion_frame(runner.sequence(), c.frames))
                       .detection_frame;
-    double box_sum = 0.0;
     std::string per_pair;  // box centre error (dx, dy) of each tracked pair
-    std::string sides;     // box side - object side (w, h) of each scored pair
     for (const host::host_record& rec : records) {
         if (rec.index > 0) {
             const scene::sphere_image now = runner.sequence().truth(rec.index).front().right;
@@ -191,9 +186,7 @@ motion_result run_case(const motion_case& c) {
         // the left view first, and stereo then rightly gives no point.
         if (!runner.sequence().truth(rec.index).front().in_both_views) continue;
         ++r.after_detection;
-        uint64_t cycles = 0;
-        for (uint64_t stage : rec.firmware.stage_cycles) cycles += stage;
-        r.processing_max_ms = std::max(r.processing_max_ms, platform::cycles_to_ms(cycles));
+        r.processing_max_ms = std::max(r.processing_max_ms, host::processing_ms(rec));
         if (rec.firmware.state != dsp::tracker_state::track) continue;
         ++r.tracked;
         const platform::frame_errors e = platform::score_frame(rec);
@@ -202,30 +195,18 @@ motion_result run_case(const motion_case& c) {
         std::snprintf(text, sizeof text, " %d:(%.1f,%.1f)%.2f%%", rec.index, e.box_centre_dx_px,
                       e.box_centre_dy_px, e.depth_err_pct);
         per_pair += text;
-        if (r.tracked <= untracked_start_pairs || !e.box_scored || !e.point_scored) continue;
-        ++r.scored;
-        box_sum += e.box_centre_err_px;
-        r.box_max_px = std::max(r.box_max_px, e.box_centre_err_px);
-        const stereosim_box& b = rec.out.box_right;
-        const dsp::box& t = rec.truth.right.pixel_box;
-        const int off_w = b.w - t.width, off_h = b.h - t.height;
-        std::snprintf(text, sizeof text, " %d:(%+d,%+d)", rec.index, off_w, off_h);
-        sides += text;
-        r.side_max_pct = std::max({r.side_max_pct, 100.0 * std::abs(off_w) / t.width,
-                                   100.0 * std::abs(off_h) / t.height});
-        r.side_over_px = std::max({r.side_over_px, std::abs(off_w) - side_error_allowed_px(t.width),
-                                   std::abs(off_h) - side_error_allowed_px(t.height)});
-        r.depth_max_pct = std::max(r.depth_max_pct, std::fabs(e.depth_err_pct));
+        if (r.tracked > untracked_start_pairs && e.box_scored && e.point_scored)
+            r.judged.score(rec, e);
     }
-    r.box_mean_px = r.scored > 0 ? box_sum / r.scored : 0.0;
+    const host::box_errors& j = r.judged;
     std::printf(
         "%s: motion up to %.1f px/frame, detected %d, tracked %d of %d, box centre error mean "
         "%.2f max %.2f px over %d pairs, |depth| max %.2f %%, processing max %.2f ms\n",
-        c.name, r.motion_max_px, r.detection, r.tracked, r.after_detection, r.box_mean_px,
-        r.box_max_px, r.scored, r.depth_max_pct, r.processing_max_ms);
+        c.name, r.motion_max_px, r.detection, r.tracked, r.after_detection, j.box_mean_px(),
+        j.box_max_px, j.scored, j.depth_max_pct, r.processing_max_ms);
     std::printf("  pair:(box dx,dy px)depth:%s\n", per_pair.c_str());
-    std::printf("  box sides off by up to %.1f %%, pair:(w,h px):%s\n", r.side_max_pct,
-                sides.c_str());
+    std::printf("  box sides off by up to %.1f %%, pair:(w,h px):%s\n", j.side_max_pct,
+                j.sides.c_str());
     return r;
 }
 
@@ -240,12 +221,13 @@ TEST_P(BoxOnMotion, StaysOnTheObject) {
     ASSERT_GE(r.detection, 0) << "never detected";
     EXPECT_EQ(r.tracked, r.after_detection) << "a pair after the detection not in TRACK";
     EXPECT_EQ(r.points, r.tracked) << "a tracked pair without a 3D point";
-    ASSERT_GE(r.scored, 5);
-    EXPECT_LE(r.box_mean_px, max_mean_box_error_px);
-    EXPECT_LE(r.box_max_px, max_box_error_px);
-    EXPECT_LE(r.side_over_px, 0.0) << "a box side off the object's by more than "
-                                   << 100 * max_side_error << " % (" << min_side_error_px << " px)";
-    EXPECT_LE(r.depth_max_pct, max_depth_error_pct);
+    ASSERT_GE(r.judged.scored, 5);
+    EXPECT_LE(r.judged.box_mean_px(), max_mean_box_error_px);
+    EXPECT_LE(r.judged.box_max_px, max_box_error_px);
+    EXPECT_LE(r.judged.side_over_px, 0.0)
+        << "a box side off the object's by more than " << 100 * max_side_error << " % ("
+        << min_side_error_px << " px)";
+    EXPECT_LE(r.judged.depth_max_pct, max_depth_error_pct);
     EXPECT_LE(r.processing_max_ms, frame_period_ms);
 }
 

@@ -8,7 +8,7 @@
 // "A key's disparity"; over aloe, with the last track's, the box fails).
 //
 // Each track is judged as the box cases are (tests/dsp/test_box_on_motion.cpp,
-// tests/support/box_bounds.h) over its pairs from its third tracked pair on
+// tests/support/host/box_judge.h) over its pairs from its third tracked pair on
 // while the ball is wholly in both views; the ball is tracked from the first
 // detection for as long as it is wholly in both views, nothing is reported
 // while it is wholly out of the right one, it is found again within
@@ -18,7 +18,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <ostream>
@@ -27,8 +26,8 @@
 
 #include "model/scene/ball_paths.h"
 #include "tb/platform/scoring/error_metrics.h"
-#include "tests/support/box_bounds.h"
 #include "tests/support/data_path.h"
+#include "tests/support/host/box_judge.h"
 #include "tests/support/host/scenarios.h"
 #include "tests/support/host/stereo_runner.h"
 #include "tests/support/photo_texture.h"
@@ -78,12 +77,11 @@ scene::scenario turntable_scenario(const return_case& c) {
     return s;
 }
 
-// One track's pairs, judged while the ball is wholly in both views.
+// One track: its first pair, its pairs, and the errors of those scored.
 struct track_score {
-    int first = -1, tracked = 0, scored = 0;
-    double box_sum = 0.0, box_max = 0.0, depth_max = 0.0, side_over = -1.0;
-    std::string pairs;
-    double box_mean() const { return scored > 0 ? box_sum / scored : 0.0; }
+    int first = -1, tracked = 0;
+    host::box_errors judged;
+    std::string pairs;  // box centre error (dx, dy) and depth of each scored pair
 };
 
 // A pair of the track: counted, and scored from its third while the ball is
@@ -91,22 +89,13 @@ struct track_score {
 void score_pair(const host::host_record& rec, bool in_both_views, track_score& t) {
     ++t.tracked;
     const platform::frame_errors e = platform::score_frame(rec);
-    if (t.tracked <= test_support::untracked_start_pairs || !in_both_views || !e.box_scored ||
+    if (t.tracked <= host::untracked_start_pairs || !in_both_views || !e.box_scored ||
         !e.point_scored)
         return;
-    ++t.scored;
-    t.box_sum += e.box_centre_err_px;
-    t.box_max = std::max(t.box_max, e.box_centre_err_px);
-    t.depth_max = std::max(t.depth_max, std::fabs(e.depth_err_pct));
-    const stereosim_box& b = rec.out.box_right;
-    const dsp::box& o = rec.truth.right.pixel_box;
-    const int off_w = b.w - o.width, off_h = b.h - o.height;
-    t.side_over =
-        std::max({t.side_over, std::abs(off_w) - test_support::side_error_allowed_px(o.width),
-                  std::abs(off_h) - test_support::side_error_allowed_px(o.height)});
-    char text[96];
-    std::snprintf(text, sizeof text, " %d:(%.1f,%.1f)(%+d,%+d)%.2f%%", rec.index,
-                  e.box_centre_dx_px, e.box_centre_dy_px, off_w, off_h, e.depth_err_pct);
+    t.judged.score(rec, e);
+    char text[64];
+    std::snprintf(text, sizeof text, " %d:(%.1f,%.1f)%.2f%%", rec.index, e.box_centre_dx_px,
+                  e.box_centre_dy_px, e.depth_err_pct);
     t.pairs += text;
 }
 
@@ -130,9 +119,7 @@ TEST_P(BoxOnReturn, BothTracksStayOnTheObject) {
     std::string states;
     double processing_max_ms = 0.0;
     for (const host::host_record& rec : records) {
-        uint64_t cycles = 0;
-        for (uint64_t stage : rec.firmware.stage_cycles) cycles += stage;
-        processing_max_ms = std::max(processing_max_ms, platform::cycles_to_ms(cycles));
+        processing_max_ms = std::max(processing_max_ms, host::processing_ms(rec));
         const bool tracking = rec.firmware.state == tracker_state::track;
         const bool in_both = runner.sequence().truth(rec.index).front().in_both_views;
         if (in_both && rec.index < when.first_outside) last_in_both = rec.index;
@@ -162,20 +149,23 @@ TEST_P(BoxOnReturn, BothTracksStayOnTheObject) {
     for (const track_score& t : tracks)
         std::printf(
             "  track from %d: box centre error mean %.2f max %.2f px over %d pairs, "
-            "|depth| max %.2f %%, sides over the bound by %.1f px\n   %s\n",
-            t.first, t.box_mean(), t.box_max, t.scored, t.depth_max, t.side_over, t.pairs.c_str());
+            "|depth| max %.2f %%, sides off by up to %.1f %%\n    pair:(box dx,dy px)depth:%s\n"
+            "    pair:(w,h px):%s\n",
+            t.first, t.judged.box_mean_px(), t.judged.box_max_px, t.judged.scored,
+            t.judged.depth_max_pct, t.judged.side_max_pct, t.pairs.c_str(), t.judged.sides.c_str());
     ASSERT_GE(tracks[0].first, 0) << "never detected";
     ASSERT_GE(tracks[1].first, 0) << "not found again once back";
     EXPECT_LE(tracks[1].first - when.first_inside_again, max_redetection_pairs);
-    EXPECT_LE(processing_max_ms, test_support::frame_period_ms);
+    EXPECT_LE(processing_max_ms, host::frame_period_ms);
     for (int n = tracks[0].first; n <= last_in_both; ++n)
         EXPECT_EQ(records[n].firmware.state, tracker_state::track) << "pair " << n;
     for (const track_score& t : tracks) {
-        ASSERT_GE(t.scored, 5) << "track from " << t.first;
-        EXPECT_LE(t.box_mean(), test_support::max_mean_box_error_px) << "track from " << t.first;
-        EXPECT_LE(t.box_max, test_support::max_box_error_px) << "track from " << t.first;
-        EXPECT_LE(t.side_over, 0.0) << "a box side off the object's, track from " << t.first;
-        EXPECT_LE(t.depth_max, test_support::max_depth_error_pct) << "track from " << t.first;
+        const host::box_errors& j = t.judged;
+        ASSERT_GE(j.scored, 5) << "track from " << t.first;
+        EXPECT_LE(j.box_mean_px(), host::max_mean_box_error_px) << "track from " << t.first;
+        EXPECT_LE(j.box_max_px, host::max_box_error_px) << "track from " << t.first;
+        EXPECT_LE(j.side_over_px, 0.0) << "a box side off the object's, track from " << t.first;
+        EXPECT_LE(j.depth_max_pct, host::max_depth_error_pct) << "track from " << t.first;
     }
 }
 
