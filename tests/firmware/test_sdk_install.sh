@@ -12,7 +12,8 @@ source=$2
 work=$(mktemp -d /tmp/stereosim-sdk-XXXXXX)
 trap 'rm -rf "$work"' EXIT
 
-cmake --install "$build" --prefix "$work/prefix" > "$work/install.log"
+cmake --install "$build" --prefix "$work/prefix" > "$work/install.log" 2>&1 ||
+  { echo "cmake --install $build failed:"; cat "$work/install.log"; exit 1; }
 for f in include/stereosim/firmware.h lib/cmake/stereosim/stereosimConfig.cmake \
          bin/stereosim lib/stereosim/libstereosim_fw_reference.so; do
   [ -e "$work/prefix/$f" ] || { echo "not installed: $f"; exit 1; }
@@ -27,8 +28,9 @@ find_package(stereosim 1.0 REQUIRED)
 stereosim_add_firmware(myfw SOURCES myfw.c)
 target_compile_options(myfw PRIVATE -std=c11 -Wall -Wextra -pedantic -Werror)
 CMAKE
-cmake -S "$work/myfw" -B "$work/myfw/build" -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log"
-cmake --build "$work/myfw/build" > "$work/build.log"
+cmake -S "$work/myfw" -B "$work/myfw/build" -DCMAKE_PREFIX_PATH="$work/prefix" \
+  > "$work/configure.log" 2>&1 || { cat "$work/configure.log"; exit 1; }
+cmake --build "$work/myfw/build" > "$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
 plugin="$work/myfw/build/libmyfw.so"
 [ -f "$plugin" ] || { echo "no $plugin"; cat "$work/build.log"; exit 1; }
 
@@ -49,7 +51,7 @@ echo "sdk: installed, an outside C firmware built against it and loaded by the i
 cp -r "$source/examples/firmware-c" "$work/paper"
 rm -rf "$work/paper/build"
 cmake -S "$work/paper" -B "$work/paper/build" -DCMAKE_PREFIX_PATH="$work/prefix" \
-  > "$work/paper-configure.log"
+  > "$work/paper-configure.log" 2>&1 || { cat "$work/paper-configure.log"; exit 1; }
 cmake --build "$work/paper/build" > "$work/paper-build.log" ||
   { cat "$work/paper-build.log"; exit 1; }
 paper="$work/paper/build/libpaper_fw.so"
