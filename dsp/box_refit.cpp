@@ -116,4 +116,17 @@ span pull_axis(span found, span last, span mask, int min_size, int max_size, int
     return span{max_int(0, min_int(limit - new_size, new_start)), new_size};
 }
 
+span hold_axis(span found, span mask, int size, int limit) {
+    const int step = max_int(1, max_int(size, mask.size) / 8);
+    const int centred = (2 * found.start + found.size - size) >> 1;  // floor, also below 0
+    // The starts that leave least of the mask outside the box lie between
+    // these two (all of it inside when it is the smaller); the nearest to the
+    // centred start, within a step of it.
+    const int lo = min_int(mask.start, mask.end() - size);
+    const int hi = max_int(mask.start, mask.end() - size);
+    int start = max_int(lo, min_int(hi, centred));
+    start = max_int(centred - step, min_int(centred + step, start));
+    return span{max_int(0, min_int(limit - size, start)), size};
+}
+
 }  // namespace dsp

@@ -188,6 +188,7 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
             if (has_object) {  // a new track: its size stands for no depth yet, nor a key's
                 m_state = tracker_state::track;
                 s.measured_disparity_q8 = s.sized_disparity_q8 = s.key_sized_q8 = 0;
+                s.size_from_key = false;
             }
             break;
         case tracker_state::track:

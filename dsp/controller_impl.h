@@ -138,6 +138,11 @@ struct controller::impl {
     bool key_first_seen = false;   // Dif(key, t) found since the key was taken
     char outline_key_across = 0;   // a key of the outline: 'x' or 'y' across the motion, 0 unknown
     bool box_may_be_part = false;  // a detection's box no silhouette of its size has confirmed
+    // The box's size is a key's outline (follow_slow_object) and the object
+    // has not moved fast since in this track: where the differences do not
+    // give object(t), a size their extent reads shorter is a rim they missed
+    // (pull_box).
+    bool size_from_key = false;
     extent_window recent_extents;  // Dif(t-1,t)'s extents of this track's last pairs
     // The object's size carried with its depth (dsp/size_at_depth.h): the
     // latest pair's disparity (Q8, 0 none yet in this track), the one the
@@ -239,7 +244,7 @@ struct controller::impl {
                        box* followed, follow_reading* reading = nullptr) const;
     int fit_to_window(bool fit_x, bool fit_y, int size_x, int size_y, box last, span* object_x,
                       span* object_y) const;
-    box pull_box(const motion_extents& motion, box last, box found) const;
+    box pull_box(const motion_extents& motion, box last, box found, bool hold_size) const;
     void stereo_sad(box object, bool outlined, frame_output& out);
     void stereo_edge(box object, frame_output& out);
     bool choose_disparity(frame_output& out) const;

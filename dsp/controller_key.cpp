@@ -142,6 +142,7 @@ void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
     // ball moving 5 px a pair whose pattern matched where it had been.
     if (seen.window_moving && !seen.outline_slow) {
         key.drop();
+        size_from_key = false;
         return;
     }
     if (key.valid() && key.outline_only()) {
@@ -195,6 +196,7 @@ void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
     }
     b.x = max_int(0, min_int(b.x, width - b.width));
     b.y = max_int(0, min_int(b.y, height - b.height));
+    size_from_key = true;
     if (!same_box(b, tracker.position())) {
         tracker.start(history(0), b);
         *cycles += cycles_of(

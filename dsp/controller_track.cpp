@@ -134,7 +134,7 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
     if (follows) {
         resized = followed;
     } else if (motion.found) {
-        resized = pull_box(motion, last, found);
+        resized = pull_box(motion, last, found, size_from_key);
     } else if (last.width != tracked.width || last.height != tracked.height) {
         resized = resized_about_centre(found, last.width, last.height);
     }
@@ -337,13 +337,26 @@ int controller::impl::fit_to_window(bool fit_x, bool fit_y, int size_x, int size
 // pull keeps the box on the object: re-taking the pattern at an integer
 // position every frame makes the box drift by the rounding of the object's
 // motion (0.3 px per frame at 0.7 px/frame, measured 9 px after 30 frames
-// without it; 0.8 px per frame on a ball 160 px wide).
-box controller::impl::pull_box(const motion_extents& motion, box last, box found) const {
+// without it; 0.8 px per frame on a ball 160 px wide). A size a key
+// outlined (`hold_size`) is held: not below the last box's, which is at the
+// latest depth, and the box moved only to hold object(t-1)'s extent
+// (hold_axis), which is then a slow ball's thin differences, short where a
+// rim is under the threshold (a 40 px ball coming nearer lost 15 px of its
+// height in three pairs after its key was dropped).
+box controller::impl::pull_box(const motion_extents& motion, box last, box found,
+                               bool hold_size) const {
     const track_params& p = config.track;
-    return from_spans(
-        pull_axis(x_span(found), x_span(last), x_span(motion.previous), p.min_size, width, width),
-        pull_axis(y_span(found), y_span(last), y_span(motion.previous), p.min_size, height,
-                  height));
+    const span mask_x = x_span(motion.previous), mask_y = y_span(motion.previous);
+    if (hold_size) {
+        const int w = min_int(width, max_int(last.width, step_size(found.width, mask_x.size,
+                                                                   p.min_size, width, width)));
+        const int h = min_int(height, max_int(last.height, step_size(found.height, mask_y.size,
+                                                                     p.min_size, height, height)));
+        return from_spans(hold_axis(x_span(found), mask_x, w, width),
+                          hold_axis(y_span(found), mask_y, h, height));
+    }
+    return from_spans(pull_axis(x_span(found), x_span(last), mask_x, p.min_size, width, width),
+                      pull_axis(y_span(found), y_span(last), mask_y, p.min_size, height, height));
 }
 
 }  // namespace dsp

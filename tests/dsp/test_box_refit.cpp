@@ -6,6 +6,10 @@
 // reaches past the key's box and the other does not.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
 #include "dsp/box_refit.h"
 
 namespace {
@@ -275,6 +279,53 @@ TEST(PullAxis, SizeStepsAndTheCentreIsPulledHalfTheOffsetAtMostAStep) {
     // Kept inside [0, limit).
     EXPECT_TRUE(
         is_span(dsp::pull_axis(span{0, 60}, span{10, 60}, span{0, 60}, 8, 640, 640), 0, 60));
+}
+
+// hold_axis against a search of every start: within a step of the box's
+// centred start, the one leaving least of the mask outside, the nearest to
+// the centred start among those.
+span held_by_search(span found, span mask, int size, int limit) {
+    const int step = std::max(1, std::max(size, mask.size) / 8);
+    const int centred = static_cast<int>(std::floor((found.start + found.size / 2.0) - size / 2.0));
+    int best = centred, best_out = -1;
+    for (int s = centred - step; s <= centred + step; ++s) {
+        const int out = std::max(0, s - mask.start) + std::max(0, mask.end() - (s + size));
+        if (best_out < 0 || out < best_out ||
+            (out == best_out && std::abs(s - centred) < std::abs(best - centred))) {
+            best = s;
+            best_out = out;
+        }
+    }
+    return span{std::clamp(best, 0, limit - size), size};
+}
+
+TEST(HoldAxis, MovedOnlyToHoldTheMaskAtMostAStep) {
+    // A mask inside the box: not moved (pull_axis would move it towards the
+    // mask's centre). found [199, 248), object(t-1) [208, 248).
+    EXPECT_TRUE(is_span(dsp::hold_axis(span{200, 48}, span{208, 40}, 49, 480), 199, 49));
+    // The mask past the box's end by 3 px: moved 3 px.
+    EXPECT_TRUE(is_span(dsp::hold_axis(span{200, 50}, span{210, 43}, 50, 480), 203, 50));
+    // 20 px past: moved a step, 50 / 8 = 6 px.
+    EXPECT_TRUE(is_span(dsp::hold_axis(span{200, 50}, span{230, 40}, 50, 480), 206, 50));
+    // A mask larger than the box on both sides: not moved.
+    EXPECT_TRUE(is_span(dsp::hold_axis(span{120, 50}, span{100, 100}, 50, 480), 120, 50));
+    // Kept inside [0, limit).
+    EXPECT_TRUE(is_span(dsp::hold_axis(span{0, 40}, span{0, 30}, 44, 480), 0, 44));
+    int compared = 0;
+    for (int found_start = 0; found_start < 120; found_start += 7)
+        for (int found_size = 10; found_size < 90; found_size += 9)
+            for (int mask_start = 0; mask_start < 160; mask_start += 5)
+                for (int mask_size = 4; mask_size < 120; mask_size += 11)
+                    for (int size = found_size; size < found_size + 20; size += 3) {
+                        const span found{found_start, found_size}, mask{mask_start, mask_size};
+                        const span want = held_by_search(found, mask, size, 200);
+                        ASSERT_TRUE(
+                            is_span(dsp::hold_axis(found, mask, size, 200), want.start, want.size))
+                            << "found [" << found_start << ", +" << found_size << "), mask ["
+                            << mask_start << ", +" << mask_size << "), size " << size;
+                        ++compared;
+                    }
+    EXPECT_GT(compared, 10000);
 }
 
 }  // namespace
