@@ -221,9 +221,10 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
         // For the next pair's size (dsp/size_at_depth.h): the part of the
         // disparity inversely proportional to depth.
         s.measured_disparity_q8 = out.disparity_q8 - cfg.rig.principal_offset_q8();
-        // A key taken before the track had a disparity (at its detection)
-        // stands for the first one measured.
+        // A key taken, and the window's extents read, before the track had a
+        // disparity (at its detection) stand for the first one measured.
         if (s.key.valid() && s.key_sized_q8 <= 0) s.key_sized_q8 = s.measured_disparity_q8;
+        s.recent_extents.give_depth(s.measured_disparity_q8);
         s.xyz(out.box_right, out);
     }
     return out;

@@ -97,6 +97,11 @@ void extent_window::push(span new_x, span new_y, int64_t disparity_q8) {
     if (count < capacity) ++count;
 }
 
+void extent_window::give_depth(int64_t disparity_q8) {
+    for (int k = 0; k < count; ++k)
+        if (depth_q8[k] <= 0) depth_q8[k] = disparity_q8;
+}
+
 bool window_axis(const span* extents, int count, int size, span last, span* object) {
     if (count < 3) return false;
     const int median2 = median_step2(extents, count);

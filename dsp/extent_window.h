@@ -28,6 +28,8 @@ struct extent_window {
 
     void clear() { count = 0; }
     void push(span new_x, span new_y, int64_t disparity_q8 = 0);
+    // Extents read with no disparity (0) take `disparity_q8`.
+    void give_depth(int64_t disparity_q8);
 };
 
 // The object's motion per pair on one axis as the window reads it: the

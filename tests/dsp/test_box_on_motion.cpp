@@ -904,16 +904,22 @@ INSTANTIATE_TEST_SUITE_P(PrincipalOffsetKeyed, BoxOnMotion,
 // (dsp/size_at_depth.h) and run once on it: more balls going away from
 // the rig or towards it, over the other photographs. These three passed
 // (two had passed without it, the 130 px ball over venus not); three
-// failed (DISABLED_Open).
-INSTANTIATE_TEST_SUITE_P(HeldOutDepth24, BoxOnMotion,
-                         ::testing::Values(motion_case{"heldout24_recede40px_10pxpf_3rps_z_tsukuba",
-                                                       40, 2.6, recede, 2.0, 3.0, 'z', tsukuba, 20},
-                                           motion_case{"heldout24_approach80px_1pxpf_1rps_x_aloe",
-                                                       80, 2.6, approach, 0.2, 1.0, 'x', aloe, 24},
-                                           motion_case{"heldout24_approach130px_8pxpf_2rps_z_venus",
-                                                       130, 2.6, approach, 1.6, 2.0, 'z', venus,
-                                                       20}),
-                         case_name);
+// failed (DISABLED_Open). The 170 px and 130 px balls going away pass since
+// the window's extents read at the detection stand for the first disparity
+// (extent_window::give_depth; the 130 px ball was traced for it).
+INSTANTIATE_TEST_SUITE_P(
+    HeldOutDepth24, BoxOnMotion,
+    ::testing::Values(motion_case{"heldout24_recede40px_10pxpf_3rps_z_tsukuba", 40, 2.6, recede,
+                                  2.0, 3.0, 'z', tsukuba, 20},
+                      motion_case{"heldout24_approach80px_1pxpf_1rps_x_aloe", 80, 2.6, approach,
+                                  0.2, 1.0, 'x', aloe, 24},
+                      motion_case{"heldout24_approach130px_8pxpf_2rps_z_venus", 130, 2.6, approach,
+                                  1.6, 2.0, 'z', venus, 20},
+                      motion_case{"heldout24_recede170px_8pxpf_photo2", 170, 2.2, recede, 1.6, 0.0,
+                                  'x', photo2, 20},
+                      motion_case{"heldout24_recede130px_4pxpf_5rps_x_photo3", 130, 2.6, recede,
+                                  0.8, 5.0, 'x', photo3, 24}),
+    case_name);
 
 // Held out, round 25: written before they were run, on a key's outline
 // brought to the depth (keyed_span_at_depth), and run once on it and once
@@ -949,38 +955,33 @@ INSTANTIATE_TEST_SUITE_P(HeldOutDepth25, BoxOnMotion,
 // 6.00 at pair 20): its lower rim is shaded, Dif(t-1,t) 6-7 px short there,
 // and the window's step (3 px a pair) under the fast rule's. Balls going
 // away from the rig (docs/firmware.md, "An object going away or coming
-// nearer"): the 120 px ball over teddy stalls 16 px behind where its
-// shaded leading rim stands still in Dif(t-1,t) (4.17 / 15.72); held out,
+// nearer"): the 120 px ball over teddy stalls 19 px behind where its
+// shaded leading rim stands still in Dif(t-1,t) (4.69 / 19.25); held out,
 // the 100 px ball at 1 px a frame over cones is detected only at its 23rd
-// frame (no pair scored), the 170 px ball at 8 px a frame over kodim23
-// 3.02 / 10.64, the 130 px ball at 4 px a frame spinning 5 rev/s over
-// kodim19 1.92 / 7.08 (depth 0.79 %). Round 25's three: the 110 px ball going away at 2 px a frame over tsukuba is never
-// detected; the 140 px ball over kodim23 is 7.25 px off in its first
-// tracked pairs (depth 1.17 %); the 120 px ball coming nearer over kodim19
+// frame (no pair scored). Round 25's three: the 110 px ball going away at
+// 2 px a frame over tsukuba is never detected; the 140 px ball over
+// kodim23 is within 2.65 px but 1.04 % off in depth, its box 4-7 px too
+// large (from its detection) for 8 pairs; the 120 px ball coming nearer over kodim19
 // is detected on a part of it and kept 14-22 px right of it, its box
 // 31-45 px narrow.
-INSTANTIATE_TEST_SUITE_P(
-    DISABLED_Open, BoxOnMotion,
-    ::testing::Values(motion_case{"heldout6_circle100px_1pxpf_venus", 100, 2.6, circle, 0.125, 0.0,
-                                  'x', venus, 30},
-                      motion_case{"heldout21_throw140px_0_6_3rps_x_teddy", 140, 2.6, thrown, 0.6,
-                                  3.0, 'x', photo4, 36},
-                      motion_case{"heldout22_throw60px_0_7_2rps_x_venus", 60, 2.6, thrown, 0.7, 2.0,
-                                  'x', venus, 36},
-                      motion_case{"heldout23_recede120px_5pxpf_2rps_x_teddy", 120, 2.6, recede, 1.0,
-                                  2.0, 'x', photo4, 24},
-                      motion_case{"heldout24_recede100px_1pxpf_2rps_y_photo", 100, 2.6, recede, 0.2,
-                                  2.0, 'y', photo, 24},
-                      motion_case{"heldout24_recede170px_8pxpf_photo2", 170, 2.2, recede, 1.6, 0.0,
-                                  'x', photo2, 20},
-                      motion_case{"heldout24_recede130px_4pxpf_5rps_x_photo3", 130, 2.6, recede,
-                                  0.8, 5.0, 'x', photo3, 24},
-                      motion_case{"heldout25_recede110px_2pxpf_1rps_y_tsukuba", 110, 2.6, recede,
-                                  0.4, 1.0, 'y', tsukuba, 24},
-                      motion_case{"heldout25_recede140px_3pxpf_kodim23", 140, 2.6, recede, 0.6, 0.0,
-                                  'x', photo2, 24},
-                      motion_case{"heldout25_approach120px_2pxpf_kodim19", 120, 2.6, approach, 0.4,
-                                  0.0, 'x', photo3, 20}),
-    case_name);
+INSTANTIATE_TEST_SUITE_P(DISABLED_Open, BoxOnMotion,
+                         ::testing::Values(motion_case{"heldout6_circle100px_1pxpf_venus", 100, 2.6,
+                                                       circle, 0.125, 0.0, 'x', venus, 30},
+                                           motion_case{"heldout21_throw140px_0_6_3rps_x_teddy", 140,
+                                                       2.6, thrown, 0.6, 3.0, 'x', photo4, 36},
+                                           motion_case{"heldout22_throw60px_0_7_2rps_x_venus", 60,
+                                                       2.6, thrown, 0.7, 2.0, 'x', venus, 36},
+                                           motion_case{"heldout23_recede120px_5pxpf_2rps_x_teddy",
+                                                       120, 2.6, recede, 1.0, 2.0, 'x', photo4, 24},
+                                           motion_case{"heldout24_recede100px_1pxpf_2rps_y_photo",
+                                                       100, 2.6, recede, 0.2, 2.0, 'y', photo, 24},
+                                           motion_case{"heldout25_recede110px_2pxpf_1rps_y_tsukuba",
+                                                       110, 2.6, recede, 0.4, 1.0, 'y', tsukuba,
+                                                       24},
+                                           motion_case{"heldout25_recede140px_3pxpf_kodim23", 140,
+                                                       2.6, recede, 0.6, 0.0, 'x', photo2, 24},
+                                           motion_case{"heldout25_approach120px_2pxpf_kodim19", 120,
+                                                       2.6, approach, 0.4, 0.0, 'x', photo3, 20}),
+                         case_name);
 
 }  // namespace
