@@ -77,12 +77,12 @@ span part_axis(span both, span last);
 // cut by the image border needed ~20 frames to grow to the object.
 span pull_axis(span found, span last, span mask, int min_size, int max_size, int limit);
 
-// The SAD box `found` at a size held (`size`), about its centre, moved only
-// as far as leaves least of `mask` (object(t-1)) outside it, at most a step
-// (as pull_axis's; of the nearest such places); then kept inside [0, limit). A mask
+// The SAD box `found` at a size held (`size`), about its centre, moved to
+// the nearest place that leaves least of `mask` (object(t-1)) outside it,
+// at most a step (as pull_axis's); then kept inside [0, limit). A mask
 // shorter than the box is a slow ball's thin differences, which miss a rim:
 // its centre is not the object's (pulled towards it, the box of a 52 px
-// ball whose top 10 px the differences missed went 6 px down in two pairs).
+// ball whose top 12 px the differences missed went 6 px down in two pairs).
 span hold_axis(span found, span mask, int size, int limit);
 
 // object(t) on one axis from `both`, the extent of Dif(key, t), which spans

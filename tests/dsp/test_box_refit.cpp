@@ -301,7 +301,7 @@ span held_by_search(span found, span mask, int size, int limit) {
 
 TEST(HoldAxis, MovedOnlyToHoldTheMaskAtMostAStep) {
     // A mask inside the box: not moved (pull_axis would move it towards the
-    // mask's centre). found [199, 248), object(t-1) [208, 248).
+    // mask's centre). found [200, 248) held at 49 px, object(t-1) [208, 248).
     EXPECT_TRUE(is_span(dsp::hold_axis(span{200, 48}, span{208, 40}, 49, 480), 199, 49));
     // The mask past the box's end by 3 px: moved 3 px.
     EXPECT_TRUE(is_span(dsp::hold_axis(span{200, 50}, span{210, 43}, 50, 480), 203, 50));

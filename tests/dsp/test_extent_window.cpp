@@ -13,6 +13,7 @@
 
 #include "dsp/box_refit.h"
 #include "dsp/extent_window.h"
+#include "dsp/size_at_depth.h"
 
 namespace {
 
@@ -148,27 +149,29 @@ TEST(WindowAxis, CrossingBoundsGiveTheirMiddle) {
     EXPECT_NEAR(got.start, m.start(t) + 5.0, 1.5);
 }
 
-// The 140 px ball over teddy at 6.1 px per pair: its leading rim 12-29 px
-// short in the last pairs. The reach of Dif(t-1,t) past object(t-1), the
-// firmware's first measure of a motion, then reads none; the window's
-// median step still reads the motion.
 // Extents read before the track had a disparity (its detection's) take the
 // first one measured; those read with one keep it.
 TEST(ExtentWindow, ExtentsReadWithoutADisparityTakeTheFirstMeasured) {
     dsp::extent_window w;
-    w.push(span{100, 50}, span{80, 50});        // at the detection: none
-    w.push(span{104, 49}, span{80, 49}, 9800);  // newest first from here
-    w.give_depth(9900);
-    ASSERT_EQ(w.count, 2);
+    w.push(span{100, 50}, span{80, 50});  // at the detection: none yet
+    w.give_depth(9900);                   // the detection pair's, measured after
+    w.push(span{104, 49}, span{80, 49}, 9900);
+    w.push(span{108, 48}, span{81, 48}, 9800);
+    w.give_depth(9700);  // none left without one
+    ASSERT_EQ(w.count, 3);
     EXPECT_EQ(w.depth_q8[0], 9800);
     EXPECT_EQ(w.depth_q8[1], 9900);
-    w.push(span{108, 48}, span{81, 48}, 9600);
-    w.give_depth(9500);  // none left without one
-    EXPECT_EQ(w.depth_q8[0], 9600);
-    EXPECT_EQ(w.depth_q8[1], 9800);
     EXPECT_EQ(w.depth_q8[2], 9900);
+    // Narrowed to the depth now as the others are (dsp/size_at_depth.h).
+    span now[3];
+    dsp::extents_at_depth(w.x, w.depth_q8, w.count, 48, 9700, now);
+    EXPECT_LT(now[2].size, 50);
 }
 
+// The 140 px ball over teddy at 6.1 px per pair: its leading rim 12-29 px
+// short in the last pairs. The reach of Dif(t-1,t) past object(t-1), the
+// firmware's first measure of a motion, then reads none; the window's
+// median step still reads the motion.
 TEST(WindowStep, AShortLeadingRimDoesNotHideTheMotion) {
     const motion m{260.0, 6.1, 140};
     const int t = 16;
