@@ -348,10 +348,10 @@ box controller::impl::pull_box(const motion_extents& motion, box last, box found
     const track_params& p = config.track;
     const span mask_x = x_span(motion.previous), mask_y = y_span(motion.previous);
     if (hold_size) {
-        const int w = min_int(width, max_int(last.width, step_size(found.width, mask_x.size,
-                                                                   p.min_size, width, width)));
-        const int h = min_int(height, max_int(last.height, step_size(found.height, mask_y.size,
-                                                                     p.min_size, height, height)));
+        const int w =
+            step_size(found.width, mask_x.size, max_int(p.min_size, last.width), width, width);
+        const int h =
+            step_size(found.height, mask_y.size, max_int(p.min_size, last.height), height, height);
         return from_spans(hold_axis(x_span(found), mask_x, w, width),
                           hold_axis(y_span(found), mask_y, h, height));
     }
