@@ -238,6 +238,7 @@ struct controller::impl {
     // motion of min_shift px a pair or more on an axis.
     struct follow_reading {
         int fitted_axes = 0;
+        int edge_axes = 0;  // axes whose moving edge was read (moving_edge_step2)
         bool window_moving = false;
     };
     bool follow_object(const motion_extents& motion, box last, bool may_be_part, bool keyed,

@@ -106,6 +106,8 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
     if (measured_disparity_q8 > 0)  // sizes at the depth, at most: the last box's and a key's
         *cycles += cycles_of(cost::size_at_depth_profile(4 + 2 * recent_extents.count));
     *cycles += reading.fitted_axes * cycles_of(cost::window_fit_profile(recent_extents.count));
+    // A moving edge is read as the window's step is, over the same extents.
+    *cycles += reading.edge_axes * cycles_of(cost::window_step_profile(recent_extents.count));
     const track_status status =
         follows ? tracker.update_near(history(0), followed) : tracker.update(history(0));
     *cycles += cycles_of(
@@ -294,6 +296,15 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
                            : follow_axis(previous_x, x_span(motion.both), x_span(last), size_x);
     span object_y = part_y ? part_axis(y_span(motion.both), y_span(last))
                            : follow_axis(previous_y, y_span(motion.both), y_span(last), size_y);
+    // A slow object's rim missed more from pair to pair: its trailing edge.
+    const int n = recent_extents.count;
+    const bool edge_x = !fast && !part_x && motion.both.width < size_x;
+    const bool edge_y = !fast && !part_y && motion.both.height < size_y;
+    bool edge_moved =
+        edge_x && trailing_edge_axis(recent_extents.x, n, size_x, x_span(last), &object_x);
+    edge_moved =
+        (edge_y && trailing_edge_axis(recent_extents.y, n, size_y, y_span(last), &object_y)) ||
+        edge_moved;
     // A fast object's box from the last pairs' extents (dsp/extent_window.h):
     // across the image at any time, down it only across a fast motion across
     // it. Its velocity is taken constant over the window, which gravity
@@ -303,7 +314,9 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
                                      size_x, size_y, last, &object_x, &object_y);
     if (reading) {
         reading->fitted_axes = fitted;
-        reading->window_moving = speed.window_moving;
+        reading->edge_axes = edge_x + edge_y;
+        // An edge that moved steadily is a motion the window read.
+        reading->window_moving = speed.window_moving || edge_moved;
     }
     const box b = from_spans(object_x, object_y);
     if (at_border(b)) return false;

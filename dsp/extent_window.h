@@ -42,6 +42,23 @@ struct extent_window {
 // `size` (pieces of a slowly turning texture, not the object's outline).
 int window_step2(const span* extents, int count, int size);
 
+// object(t) on one axis, `size` wide, where the window's newest extent
+// (Dif(t-1,t)'s, `extents[0]`) is narrower than the object, a rim missed,
+// and missed more from pair to pair: the object moves steadily, its
+// trailing edge stepped at least 2 px every pair of the window the way it
+// moves, its leading edge moved under a third as far in all, and the
+// trailing edge is within 4 px of the last box's (a receding ball's shaded
+// side entering a dark background: over teddy the leading edge of a 90 px
+// ball stood while the ball moved 3.7 px a pair, and the median of both
+// edges' steps read 1.5 px). The trailing edge is then object(t-1)'s, and
+// object(t)'s is that edge moved by the mean of its steps. Not where the
+// leading edge moved a third as far (a slow ball going away: it moves and
+// shrinks), nor where the trailing edge is inside the last box (a spinning
+// ball's texture, whose pieces cross the ball 2-8 px a pair). False, and
+// nothing written, then, where a leading edge moves (it is object(t)'s
+// own), or with fewer than three extents.
+bool trailing_edge_axis(const span* extents, int count, int size, span last, span* object);
+
 // object(t)'s extent on one axis, `size` wide, from the window's extents
 // on that axis (`extents[k]`: Dif(t-1-k, t-k)'s) and the last box `last`.
 // At a constant velocity v (px per pair) the extent k pairs back spans

@@ -203,4 +203,79 @@ TEST(WindowStep, PiecesOfTheObjectReadNoMotion) {
     EXPECT_NEAR(dsp::window_step2(whole.data(), 4, m.size) / 2.0, m.v, 0.5);
 }
 
+// A leading rim missed more from pair to pair (a shaded side entering a dark
+// background): extent t shortened at its leading side by `missed` px more
+// each pair, so that side stands while the object moves.
+std::vector<span> fading_window(const motion& m, int t, int count, int missed) {
+    std::vector<span> w = window_at(m, t, count);
+    for (int k = 0; k < count; ++k) {
+        const int cut = missed * (count - k);
+        w[k] = m.v > 0 ? shortened(w[k], 0, cut) : shortened(w[k], cut, 0);
+    }
+    return w;
+}
+
+// The last box: object(t-1), where the box stood when it was right.
+span trailing(const std::vector<span>& w, int size, span last) {
+    span object{-1000, 0};
+    EXPECT_TRUE(dsp::trailing_edge_axis(w.data(), static_cast<int>(w.size()), size, last, &object));
+    return object;
+}
+
+TEST(TrailingEdge, ALeadingRimMissedMoreEachPairLeavesTheTrailingEdgeToPlaceTheObject) {
+    for (const motion m : {motion{297.3, 3.7, 82}, motion{400.6, -2.6, 60}, motion{120.0, 5.4, 140},
+                           motion{250.2, -3.1, 40}}) {
+        const int t = 10;
+        // The leading edge standing, or moving up to a quarter of the
+        // object's step either way.
+        const double speed = std::fabs(m.v);
+        for (const int missed :
+             {static_cast<int>(std::ceil(3 * speed / 4)), static_cast<int>(std::lround(speed)),
+              static_cast<int>(std::floor(5 * speed / 4))}) {
+            const std::vector<span> w = fading_window(m, t, 4, missed);
+            const span got = trailing(w, m.size, m.object(t - 1));
+            EXPECT_NEAR(got.start, m.start(t), 1.0)
+                << "v " << m.v << " size " << m.size << " missed " << missed;
+            EXPECT_EQ(got.size, m.size);
+        }
+    }
+}
+
+TEST(TrailingEdge, NotReadWhereTheRimsAreReadOrTheObjectDoesNotMoveSteadily) {
+    span object{-1000, 0};
+    const motion m{297.3, 3.7, 82};
+    const span last = m.object(9);
+    const std::vector<span> whole = window_at(m, 10, 4);
+    EXPECT_FALSE(dsp::trailing_edge_axis(whole.data(), 4, m.size, last, &object))
+        << "every rim read: the extent spans the object";
+    const std::vector<span> w = fading_window(m, 10, 4, 4);
+    EXPECT_FALSE(dsp::trailing_edge_axis(w.data(), 2, m.size, last, &object))
+        << "fewer than three extents";
+    // Both edges moving alike: the rim missed by as much in every pair.
+    std::vector<span> alike = window_at(m, 10, 4);
+    for (span& e : alike) e = shortened(e, 0, 10);
+    EXPECT_FALSE(dsp::trailing_edge_axis(alike.data(), 4, m.size, last, &object))
+        << "a steady miss";
+    // A slow ball going away: its trailing edge 2-3 px a pair, its leading
+    // edge 1 px (a third of that or more: it moves, and shrinks).
+    const std::vector<span> receding{{251, 51}, {248, 53}, {246, 54}, {244, 55}};
+    EXPECT_FALSE(dsp::trailing_edge_axis(receding.data(), 4, 60, span{250, 60}, &object))
+        << "the leading edge moved a third as far";
+    // A slow object's texture: pieces stepping under 2 px in a pair.
+    const std::vector<span> slow{{223, 70}, {222, 71}, {219, 74}, {217, 76}};
+    EXPECT_FALSE(dsp::trailing_edge_axis(slow.data(), 4, 90, span{222, 90}, &object))
+        << "a step of 1 px";
+    // A spinning ball's texture: a piece inside the box moving across it.
+    const std::vector<span> piece{{195, 71}, {191, 75}, {189, 77}, {187, 79}};
+    EXPECT_FALSE(dsp::trailing_edge_axis(piece.data(), 4, 81, span{186, 81}, &object))
+        << "the trailing edge 9 px inside the last box";
+    // The leading edge moving, the trailing one standing: follow_axis's.
+    const motion back{400.6, -3.6, 60};
+    std::vector<span> lead = window_at(back, 10, 4);
+    for (int k = 0; k < 4; ++k) lead[k] = shortened(lead[k], 0, 4 * k + 5);
+    EXPECT_FALSE(dsp::trailing_edge_axis(lead.data(), 4, back.size, back.object(9), &object))
+        << "the leading edge moved";
+    EXPECT_EQ(object.start, -1000) << "nothing written";
+}
+
 }  // namespace
