@@ -55,25 +55,12 @@ std::string case_name(const ::testing::TestParamInfo<return_case>& info) {
 }
 
 scene::scenario turntable_scenario(const return_case& c) {
-    scene::scenario s;
+    scene::scenario s = host::turntable_return_scenario();
     if (c.photograph) {
         s.scene.background = scene::background_desc::image_plane(
             testsupport::load_photo_texture(test_support::data_path(c.photograph)), s.scene.rig,
             5.0);
-    } else {
-        s.scene.background =
-            scene::background_desc::procedural_plane(scene::procedural_texture_params{}, 5.0);
     }
-    const double radius_m = 0.5, speed_m_s = 0.25, pi = std::acos(-1.0);
-    // From 20 degrees before the circle's nearest point (2.5 m), x = 0.85 + r sin a,
-    // z = 3 - r cos a: rightwards and nearer, then out past the right edge.
-    scene::ball_desc ball;
-    ball.radius_m = 0.08;
-    ball.path = scene::trajectory::circle({0.85, 0.0, 3.0}, radius_m, {0.0, 0.0, -1.0},
-                                          {1.0, 0.0, 0.0}, speed_m_s / radius_m, -pi / 9.0,
-                                          scene::motion_start_s(3, s.frame_period_s));
-    s.scene.balls.push_back(ball);
-    s.frame_count = 255;
     return s;
 }
 

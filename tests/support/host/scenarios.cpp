@@ -57,6 +57,17 @@ scene::scenario exit_return_scenario(int still_frames) {
         still_frames + 110);
 }
 
+scene::scenario turntable_return_scenario() {
+    const double period = scene::scenario{}.frame_period_s;
+    const double radius_m = 0.5, speed_m_s = 0.25, pi = std::acos(-1.0);
+    // From 20 degrees before the circle's nearest point (2.5 m), x = 0.85 + r sin a,
+    // z = 3 - r cos a: rightwards and nearer, then out past the right edge.
+    return one_ball_scenario(scene::trajectory::circle({0.85, 0.0, 3.0}, radius_m, {0.0, 0.0, -1.0},
+                                                       {1.0, 0.0, 0.0}, speed_m_s / radius_m,
+                                                       -pi / 9.0, scene::motion_start_s(3, period)),
+                             255, 0.08);
+}
+
 exit_return_frames exit_return_timing(const scene::sequence& sequence, int frames) {
     exit_return_frames f;
     for (int n = 0; n < frames; ++n) {

@@ -36,6 +36,14 @@ scene::scenario pass_scenario(double depth_m, double ball_radius_m, int still_fr
 // view and comes back: see exit_return_timing() for when.
 scene::scenario exit_return_scenario(int still_frames = 4);
 
+// A slow ball that leaves the view and comes back at another depth:
+// carried round a horizontal circle 0.5 m in radius at 0.25 m/s (a toy on a
+// turntable, 2 px a frame or less in the image), it leaves the right edge on
+// the circle's near side, 2.5 m from the rig, and comes back on its far
+// side, 3.35 m away (51 px wide, then 38). A slow ball: its tracks are
+// keyed (dsp/key_frame.h). exit_return_timing() applies to it too.
+scene::scenario turntable_return_scenario();
+
 // Frame indices of exit_return_scenario(still_frames), from the scene's
 // closed-form ellipse: the last frame fully inside the image before the
 // exit, the first frame with no pixel in the image, the last such frame,
