@@ -238,9 +238,15 @@ struct controller::impl {
     // motion of min_shift px a pair or more on an axis.
     struct follow_reading {
         int fitted_axes = 0;
-        int edge_axes = 0;  // axes whose moving edge was read (moving_edge_step2)
+        int edge_axes = 0;  // axes whose fading rim was read (fading_rim_step2)
         bool window_moving = false;
     };
+    // The trailing edge's step per axis where a leading rim fades, in half
+    // pixels (0: none), and how many axes were read.
+    struct fading_rims {
+        int x2 = 0, y2 = 0, read_axes = 0;
+    };
+    fading_rims read_fading_rims(bool fast, bool part_x, bool part_y, box last) const;
     bool follow_object(const motion_extents& motion, box last, bool may_be_part, bool keyed,
                        box* followed, follow_reading* reading = nullptr) const;
     int fit_to_window(bool fit_x, bool fit_y, int size_x, int size_y, box last, span* object_x,

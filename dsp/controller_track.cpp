@@ -46,6 +46,17 @@ axis_speed read_speed(int moved_x, int moved_y, const extent_window& window, box
     return s;
 }
 
+// object(t) placed from Dif(t-1,t)'s (`both`) trailing edge on each axis
+// whose leading rim fades and where `both` is narrower than the object.
+bool on_trailing_edges(box both, int step_x2, int step_y2, int size_x, int size_y, span* object_x,
+                       span* object_y) {
+    const bool edge_x = step_x2 != 0 && both.width < size_x;
+    const bool edge_y = step_y2 != 0 && both.height < size_y;
+    if (edge_x) *object_x = from_trailing_edge(x_span(both), step_x2, size_x);
+    if (edge_y) *object_y = from_trailing_edge(y_span(both), step_y2, size_y);
+    return edge_x || edge_y;
+}
+
 }  // namespace
 
 // Stage track: SAD search around the last position (the tracker keeps the
@@ -270,8 +281,10 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
     const bool fast_x = speed.fast_x, fast = speed.fast_x || speed.fast_y;
     // Its size measured short is a rim the differences missed, not a
     // difference that did not outline it.
-    const bool short_x = fast && previous_x.size < last.width;
-    const bool short_y = fast && previous_y.size < last.height;
+    // So is a slower object's where its leading rim fades (dsp/extent_window.h).
+    const fading_rims fading = read_fading_rims(fast, part_x, part_y, last);
+    const bool short_x = (fast || fading.x2 != 0) && previous_x.size < last.width;
+    const bool short_y = (fast || fading.y2 != 0) && previous_y.size < last.height;
     if ((!part_x && !grown_x && !short_x && !near_size(previous_x.size, last.width, tolerance_x)) ||
         (!part_y && !grown_y && !short_y && !near_size(previous_y.size, last.height, tolerance_y)))
         return false;
@@ -288,23 +301,19 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
     if (motion.both.width - w > reach || motion.both.height - h > reach) return false;
     // Across the motion a size the differences measured short is not taken.
     const bool unmoved = keyed && moved_x < slow && moved_y < slow;
-    const int size_x =
-        fast || unmoved || across_motion(moved_x, moved_y) ? max_int(w, last.width) : w;
-    const int size_y =
-        fast || unmoved || across_motion(moved_y, moved_x) ? max_int(h, last.height) : h;
+    const int size_x = fast || unmoved || fading.x2 || across_motion(moved_x, moved_y)
+                           ? max_int(w, last.width)
+                           : w;
+    const int size_y = fast || unmoved || fading.y2 || across_motion(moved_y, moved_x)
+                           ? max_int(h, last.height)
+                           : h;
     span object_x = part_x ? part_axis(x_span(motion.both), x_span(last))
                            : follow_axis(previous_x, x_span(motion.both), x_span(last), size_x);
     span object_y = part_y ? part_axis(y_span(motion.both), y_span(last))
                            : follow_axis(previous_y, y_span(motion.both), y_span(last), size_y);
-    // A slow object's rim missed more from pair to pair: its trailing edge.
-    const int n = recent_extents.count;
-    const bool edge_x = !fast && !part_x && motion.both.width < size_x;
-    const bool edge_y = !fast && !part_y && motion.both.height < size_y;
-    bool edge_moved =
-        edge_x && trailing_edge_axis(recent_extents.x, n, size_x, x_span(last), &object_x);
-    edge_moved =
-        (edge_y && trailing_edge_axis(recent_extents.y, n, size_y, y_span(last), &object_y)) ||
-        edge_moved;
+    // A rim missed more from pair to pair: object(t) from the trailing edge.
+    const bool edge_moved =
+        on_trailing_edges(motion.both, fading.x2, fading.y2, size_x, size_y, &object_x, &object_y);
     // A fast object's box from the last pairs' extents (dsp/extent_window.h):
     // across the image at any time, down it only across a fast motion across
     // it. Its velocity is taken constant over the window, which gravity
@@ -314,14 +323,29 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
                                      size_x, size_y, last, &object_x, &object_y);
     if (reading) {
         reading->fitted_axes = fitted;
-        reading->edge_axes = edge_x + edge_y;
-        // An edge that moved steadily is a motion the window read.
+        reading->edge_axes = fading.read_axes;
+        // A trailing edge that moved steadily is a motion the window read.
         reading->window_moving = speed.window_moving || edge_moved;
     }
     const box b = from_spans(object_x, object_y);
     if (at_border(b)) return false;
     *followed = b;
     return true;
+}
+
+// The trailing edge's step on each axis where a slower object's leading rim
+// fades (fading_rim_step2): none for a fast object, nor on a part's axis.
+controller::impl::fading_rims controller::impl::read_fading_rims(bool fast, bool part_x,
+                                                                 bool part_y, box last) const {
+    fading_rims f;
+    const int n = recent_extents.count;
+    if (fast) return f;
+    if (!part_x)
+        f.x2 = fading_rim_step2(recent_extents.x, recent_extents.depth_q8, n, x_span(last));
+    if (!part_y)
+        f.y2 = fading_rim_step2(recent_extents.y, recent_extents.depth_q8, n, y_span(last));
+    f.read_axes = !part_x + !part_y;
+    return f;
 }
 
 // object(t) on the axes asked from the extent window (dsp/extent_window.h),

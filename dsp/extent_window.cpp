@@ -76,37 +76,6 @@ bool steady_side(const span* extents, int count, int size, int v2, start_bounds 
     return false;
 }
 
-// The step per pair of the window's moving edge in half pixels (towards the
-// axis's end positive), *start_edge saying which: the one that stepped at
-// least min_step px every pair one way while the other moved under a third
-// as far in all. 0 where neither did.
-int moving_edge_step2(const span* extents, int count, bool* start_edge) {
-    constexpr int min_step = 2;  // px: over a pixel's rounding in every pair
-    if (count < 3) return 0;
-    int start_total = 0, end_total = 0;
-    const int start_sign = extents[0].start > extents[count - 1].start ? 1 : -1;
-    const int end_sign = extents[0].end() > extents[count - 1].end() ? 1 : -1;
-    bool start_steady = true, end_steady = true;
-    for (int k = 0; k + 1 < count; ++k) {
-        const int ds = extents[k].start - extents[k + 1].start;
-        const int de = extents[k].end() - extents[k + 1].end();
-        start_total += ds;
-        end_total += de;
-        start_steady = start_steady && start_sign * ds >= min_step;
-        end_steady = end_steady && end_sign * de >= min_step;
-    }
-    const int steps = count - 1;
-    if (start_steady && 3 * abs_int(end_total) < abs_int(start_total)) {
-        *start_edge = true;
-        return 2 * start_total / steps;
-    }
-    if (end_steady && 3 * abs_int(start_total) < abs_int(end_total)) {
-        *start_edge = false;
-        return 2 * end_total / steps;
-    }
-    return 0;
-}
-
 }  // namespace
 
 int window_step2(const span* extents, int count, int size) {
@@ -159,21 +128,38 @@ bool window_axis(const span* extents, int count, int size, span last, span* obje
     return true;
 }
 
-bool trailing_edge_axis(const span* extents, int count, int size, span last, span* object) {
-    constexpr int near = 4;  // px (key_frame::min_shift): the last box a step off object(t-1)
-    if (count < 3 || extents[0].size >= size) return false;
-    bool start_edge = false;
-    const int step2 = moving_edge_step2(extents, count, &start_edge);
+int fading_rim_step2(const span* extents, const int64_t* depth_q8, int count, span last) {
+    constexpr int min_step = 3;  // px: over a slow object's (key_frame::max_step) every pair
+    constexpr int near = 4;      // px (key_frame::min_shift): the last box a step off object(t-1)
+    if (count < 3) return 0;
+    bool towards_end = true, towards_start = true;
+    int start_total = 0, end_total = 0;
+    for (int k = 0; k + 1 < count; ++k) {
+        const int ds = extents[k].start - extents[k + 1].start;
+        const int de = extents[k].end() - extents[k + 1].end();
+        start_total += ds;
+        end_total += de;
+        towards_end = towards_end && ds >= min_step;       // the start trails
+        towards_start = towards_start && de <= -min_step;  // the end trails
+    }
+    if (towards_end == towards_start) return 0;
     const span now = extents[0];
-    if (start_edge && step2 > 0 && distance(now.start, last.start) <= near) {
-        *object = span{(2 * now.start + step2 + 1) >> 1, size};
-        return true;
-    }
-    if (!start_edge && step2 < 0 && distance(now.end(), last.end()) <= near) {
-        *object = span{(2 * (now.end() - size) + step2 + 1) >> 1, size};
-        return true;
-    }
-    return false;
+    if (towards_end ? distance(now.start, last.start) > near
+                    : distance(now.end(), last.end()) > near)
+        return 0;
+    // The newest extent's shortfall against the oldest's size carried by the
+    // disparities (an object's size is proportional to its disparity).
+    const int oldest = count - 1;
+    int64_t expected = extents[oldest].size;
+    if (depth_q8[0] > 0 && depth_q8[oldest] > 0)
+        expected = (expected * depth_q8[0] + depth_q8[oldest] / 2) / depth_q8[oldest];
+    if (expected - now.size < oldest) return 0;  // under 1 px a pair
+    return 2 * (towards_end ? start_total : end_total) / oldest;
+}
+
+span from_trailing_edge(span now, int step2, int size) {
+    return step2 > 0 ? span{(2 * now.start + step2 + 1) >> 1, size}
+                     : span{(2 * (now.end() - size) + step2 + 1) >> 1, size};
 }
 
 }  // namespace dsp

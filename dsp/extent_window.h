@@ -42,22 +42,26 @@ struct extent_window {
 // `size` (pieces of a slowly turning texture, not the object's outline).
 int window_step2(const span* extents, int count, int size);
 
-// object(t) on one axis, `size` wide, where the window's newest extent
-// (Dif(t-1,t)'s, `extents[0]`) is narrower than the object, a rim missed,
-// and missed more from pair to pair: the object moves steadily, its
-// trailing edge stepped at least 2 px every pair of the window the way it
-// moves, its leading edge moved under a third as far in all, and the
-// trailing edge is within 4 px of the last box's (a receding ball's shaded
-// side entering a dark background: over teddy the leading edge of a 90 px
-// ball stood while the ball moved 3.7 px a pair, and the median of both
-// edges' steps read 1.5 px). The trailing edge is then object(t-1)'s, and
-// object(t)'s is that edge moved by the mean of its steps. Not where the
-// leading edge moved a third as far (a slow ball going away: it moves and
-// shrinks), nor where the trailing edge is inside the last box (a spinning
-// ball's texture, whose pieces cross the ball 2-8 px a pair). False, and
-// nothing written, then, where a leading edge moves (it is object(t)'s
-// own), or with fewer than three extents.
-bool trailing_edge_axis(const span* extents, int count, int size, span last, span* object);
+// A slower object's leading rim missed more from pair to pair (a receding
+// ball's shaded side entering a dark background: over teddy the leading
+// edge of a 90 px ball stood while the ball moved 3.7 px a pair, and the
+// median of both edges' steps read 1.5 px): its trailing edge stepped at
+// least 3 px every pair of the window the way it moves (more than a slow
+// object moves: key_frame::max_step; at 2 px a 150 px ball passing at 1.5 px a
+// frame was read so, one step of 4 px and 2 px short) and stands within
+// 4 px of the last box's, and the newest extent is short of the oldest's
+// size carried by the disparities (`depth_q8`, 0 none) by 1 px a pair or
+// more. Returns the trailing edge's mean step in half pixels (towards the
+// axis's end positive), 0 where the rim does not fade or with fewer than
+// three extents. Not a slow ball going away (its extents shrink as its
+// disparity does), nor a spinning ball's texture (its pieces cross the ball
+// 2-8 px a pair, inside the last box), nor a leading edge that moves while
+// the trailing one stands (it is object(t)'s own).
+int fading_rim_step2(const span* extents, const int64_t* depth_q8, int count, span last);
+
+// object(t), `size` wide, from Dif(t-1,t)'s extent `now` whose trailing
+// edge (object(t-1)'s) moves step2 half pixels a pair: that edge one step on.
+span from_trailing_edge(span now, int step2, int size);
 
 // object(t)'s extent on one axis, `size` wide, from the window's extents
 // on that axis (`extents[k]`: Dif(t-1-k, t-k)'s) and the last box `last`.

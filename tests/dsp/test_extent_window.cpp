@@ -205,7 +205,7 @@ TEST(WindowStep, PiecesOfTheObjectReadNoMotion) {
 
 // A leading rim missed more from pair to pair (a shaded side entering a dark
 // background): extent t shortened at its leading side by `missed` px more
-// each pair, so that side stands while the object moves.
+// each pair, so that side moves `missed` px a pair less than the object.
 std::vector<span> fading_window(const motion& m, int t, int count, int missed) {
     std::vector<span> w = window_at(m, t, count);
     for (int k = 0; k < count; ++k) {
@@ -215,25 +215,29 @@ std::vector<span> fading_window(const motion& m, int t, int count, int missed) {
     return w;
 }
 
-// The last box: object(t-1), where the box stood when it was right.
-span trailing(const std::vector<span>& w, int size, span last) {
-    span object{-1000, 0};
-    EXPECT_TRUE(dsp::trailing_edge_axis(w.data(), static_cast<int>(w.size()), size, last, &object));
-    return object;
+// object(t) where the window reads a fading rim (the test fails where it
+// does not); `last` is object(t-1), where the box stood when it was right.
+span from_fading(const std::vector<span>& w, const std::vector<int64_t>& depth_q8, int size,
+                 span last) {
+    const int step2 =
+        dsp::fading_rim_step2(w.data(), depth_q8.data(), static_cast<int>(w.size()), last);
+    EXPECT_NE(step2, 0) << "no fading rim read";
+    return step2 ? dsp::from_trailing_edge(w[0], step2, size) : span{-1000, 0};
 }
 
-TEST(TrailingEdge, ALeadingRimMissedMoreEachPairLeavesTheTrailingEdgeToPlaceTheObject) {
-    for (const motion m : {motion{297.3, 3.7, 82}, motion{400.6, -2.6, 60}, motion{120.0, 5.4, 140},
-                           motion{250.2, -3.1, 40}}) {
+const std::vector<int64_t> no_depth(4, 0);
+
+TEST(FadingRim, ALeadingRimMissedMoreEachPairLeavesTheTrailingEdgeToPlaceTheObject) {
+    for (const motion m : {motion{297.3, 3.7, 82}, motion{400.6, -3.4, 60}, motion{120.0, 5.4, 140},
+                           motion{250.2, -4.1, 40}}) {
         const int t = 10;
-        // The leading edge standing, or moving up to a quarter of the
-        // object's step either way.
         const double speed = std::fabs(m.v);
-        for (const int missed :
-             {static_cast<int>(std::ceil(3 * speed / 4)), static_cast<int>(std::lround(speed)),
-              static_cast<int>(std::floor(5 * speed / 4))}) {
+        // From 1 px a pair (the leading edge moving on) to a quarter more
+        // than the object's step (the leading edge going back).
+        for (const int missed : {1, static_cast<int>(std::lround(speed)),
+                                 static_cast<int>(std::floor(5 * speed / 4))}) {
             const std::vector<span> w = fading_window(m, t, 4, missed);
-            const span got = trailing(w, m.size, m.object(t - 1));
+            const span got = from_fading(w, no_depth, m.size, m.object(t - 1));
             EXPECT_NEAR(got.start, m.start(t), 1.0)
                 << "v " << m.v << " size " << m.size << " missed " << missed;
             EXPECT_EQ(got.size, m.size);
@@ -241,41 +245,68 @@ TEST(TrailingEdge, ALeadingRimMissedMoreEachPairLeavesTheTrailingEdgeToPlaceTheO
     }
 }
 
-TEST(TrailingEdge, NotReadWhereTheRimsAreReadOrTheObjectDoesNotMoveSteadily) {
-    span object{-1000, 0};
+// A ball coming nearer, growing 2 px a pair about its centre while it moves
+// 4 px a pair, its disparity growing with its size: its leading rim missed
+// 2 px more each pair, so the extent read keeps its width.
+TEST(FadingRim, AGrowingObjectsRimIsJudgedAgainstItsSizeAtTheDepth) {
+    const double s0 = 250.3, v = 4.0, size0 = 100.0, growth = 2.0;
+    const int t = 12, count = 4, missed = 2;
+    auto start = [&](int n) { return s0 + v * n - growth * n / 2; };
+    auto size = [&](int n) { return size0 + growth * n; };
+    std::vector<span> w;
+    std::vector<int64_t> depth_q8;
+    for (int k = 0; k < count; ++k) {
+        const int n = t - k;
+        const int a = static_cast<int>(std::lround(start(n - 1)));
+        const int b = static_cast<int>(std::lround(start(n) + size(n)));
+        w.push_back(shortened(span{a, b - a}, 0, missed * (count - k)));
+        depth_q8.push_back(static_cast<int64_t>(std::lround(256.0 * size(n) / 4.0)));
+    }
+    const span last{static_cast<int>(std::lround(start(t - 1))),
+                    static_cast<int>(std::lround(size(t - 1)))};
+    const int now = static_cast<int>(std::lround(size(t)));
+    const span got = from_fading(w, depth_q8, now, last);
+    EXPECT_NEAR(got.start, start(t), 1.0);
+    // As read, the newest extent is as wide as the oldest: no rim missed.
+    EXPECT_EQ(dsp::fading_rim_step2(w.data(), no_depth.data(), count, last), 0);
+}
+
+TEST(FadingRim, NotReadWhereTheRimsAreReadOrTheObjectDoesNotMoveSteadily) {
     const motion m{297.3, 3.7, 82};
     const span last = m.object(9);
     const std::vector<span> whole = window_at(m, 10, 4);
-    EXPECT_FALSE(dsp::trailing_edge_axis(whole.data(), 4, m.size, last, &object))
-        << "every rim read: the extent spans the object";
+    EXPECT_EQ(dsp::fading_rim_step2(whole.data(), no_depth.data(), 4, last), 0) << "every rim read";
     const std::vector<span> w = fading_window(m, 10, 4, 4);
-    EXPECT_FALSE(dsp::trailing_edge_axis(w.data(), 2, m.size, last, &object))
+    EXPECT_EQ(dsp::fading_rim_step2(w.data(), no_depth.data(), 2, last), 0)
         << "fewer than three extents";
     // Both edges moving alike: the rim missed by as much in every pair.
     std::vector<span> alike = window_at(m, 10, 4);
     for (span& e : alike) e = shortened(e, 0, 10);
-    EXPECT_FALSE(dsp::trailing_edge_axis(alike.data(), 4, m.size, last, &object))
-        << "a steady miss";
-    // A slow ball going away: its trailing edge 2-3 px a pair, its leading
-    // edge 1 px (a third of that or more: it moves, and shrinks).
-    const std::vector<span> receding{{251, 51}, {248, 53}, {246, 54}, {244, 55}};
-    EXPECT_FALSE(dsp::trailing_edge_axis(receding.data(), 4, 60, span{250, 60}, &object))
-        << "the leading edge moved a third as far";
-    // A slow object's texture: pieces stepping under 2 px in a pair.
-    const std::vector<span> slow{{223, 70}, {222, 71}, {219, 74}, {217, 76}};
-    EXPECT_FALSE(dsp::trailing_edge_axis(slow.data(), 4, 90, span{222, 90}, &object))
-        << "a step of 1 px";
+    EXPECT_EQ(dsp::fading_rim_step2(alike.data(), no_depth.data(), 4, last), 0) << "a steady miss";
+    // A ball going away: its trailing edge 3 px a pair, its leading edge
+    // 1-2 px, its extent shrinking 1.3 px a pair as its disparity does (2.45 %
+    // a pair); read without the disparities, a rim missed.
+    const std::vector<span> receding{{253, 51}, {250, 53}, {247, 54}, {244, 55}};
+    const std::vector<int64_t> receding_q8{2560, 2624, 2690, 2757};
+    EXPECT_EQ(dsp::fading_rim_step2(receding.data(), receding_q8.data(), 4, span{252, 52}), 0)
+        << "shrinking with its disparity";
+    EXPECT_NE(dsp::fading_rim_step2(receding.data(), no_depth.data(), 4, span{252, 52}), 0)
+        << "the disparities not read";
+    // A slow object: a step of 2 px in a pair (a 150 px ball passing at
+    // 1.5 px a frame read 4, 2, 2 px, its extent 4 px short once).
+    const std::vector<span> slow{{197, 148}, {193, 151}, {191, 152}, {189, 152}};
+    EXPECT_EQ(dsp::fading_rim_step2(slow.data(), no_depth.data(), 4, span{194, 150}), 0)
+        << "a step of 2 px";
     // A spinning ball's texture: a piece inside the box moving across it.
-    const std::vector<span> piece{{195, 71}, {191, 75}, {189, 77}, {187, 79}};
-    EXPECT_FALSE(dsp::trailing_edge_axis(piece.data(), 4, 81, span{186, 81}, &object))
-        << "the trailing edge 9 px inside the last box";
+    const std::vector<span> piece{{197, 71}, {193, 75}, {190, 78}, {187, 81}};
+    EXPECT_EQ(dsp::fading_rim_step2(piece.data(), no_depth.data(), 4, span{186, 82}), 0)
+        << "the trailing edge 11 px inside the last box";
     // The leading edge moving, the trailing one standing: follow_axis's.
     const motion back{400.6, -3.6, 60};
     std::vector<span> lead = window_at(back, 10, 4);
     for (int k = 0; k < 4; ++k) lead[k] = shortened(lead[k], 0, 4 * k + 5);
-    EXPECT_FALSE(dsp::trailing_edge_axis(lead.data(), 4, back.size, back.object(9), &object))
+    EXPECT_EQ(dsp::fading_rim_step2(lead.data(), no_depth.data(), 4, back.object(9)), 0)
         << "the leading edge moved";
-    EXPECT_EQ(object.start, -1000) << "nothing written";
 }
 
 }  // namespace

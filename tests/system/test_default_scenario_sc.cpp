@@ -247,16 +247,16 @@ TEST(default_scenario, golden_stage_cycles_and_one_timeline) {
     // window extents' software divides charged each tracked pair with a
     // disparity, cost::size_at_depth_profile) moved track alone: the same
     // boxes (2,888,942 before).
-    // The trailing edge read where Dif(t-1,t) is narrower than the ball
-    // (dsp/extent_window.h, trailing_edge_axis: charged as the window's step,
-    // cost::window_step_profile, on each such axis) moved track alone:
-    // stereo_sad and stereo_edge, which follow the boxes, did not move
-    // (2,889,736 before).
+    // A fading leading rim read on each axis of a slower object
+    // (dsp/extent_window.h, fading_rim_step2: charged as the window's step,
+    // cost::window_step_profile) moved track alone: the boxes and depths
+    // reported did not move, nor stereo_sad and stereo_edge, which follow
+    // the boxes (2,889,736 before).
     constexpr uint64_t golden[dsp::stage_count] = {
         6000,      // capture: 10 pairs x 600
         23511756,  // preprocess
         3742377,   // detect
-        2889871,   // track
+        2890276,   // track
         214116,    // stereo_sad
         1867416,   // stereo_edge
         1884,      // xyz
