@@ -117,7 +117,7 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
     if (measured_disparity_q8 > 0)  // sizes at the depth, at most: the last box's and a key's
         *cycles += cycles_of(cost::size_at_depth_profile(4 + 2 * recent_extents.count));
     *cycles += reading.fitted_axes * cycles_of(cost::window_fit_profile(recent_extents.count));
-    // A moving edge is read as the window's step is, over the same extents.
+    // A fading rim is read as the window's step is, over the same extents.
     *cycles += reading.edge_axes * cycles_of(cost::window_step_profile(recent_extents.count));
     const track_status status =
         follows ? tracker.update_near(history(0), followed) : tracker.update(history(0));

@@ -133,28 +133,29 @@ int fading_rim_step2(const span* extents, const int64_t* depth_q8, int count, sp
     constexpr int near = 4;      // px (key_frame::min_shift): the last box a step off object(t-1)
     if (count < 3) return 0;
     bool towards_end = true, towards_start = true;
-    int start_total = 0, end_total = 0;
     for (int k = 0; k + 1 < count; ++k) {
-        const int ds = extents[k].start - extents[k + 1].start;
-        const int de = extents[k].end() - extents[k + 1].end();
-        start_total += ds;
-        end_total += de;
-        towards_end = towards_end && ds >= min_step;       // the start trails
-        towards_start = towards_start && de <= -min_step;  // the end trails
+        towards_end = towards_end && extents[k].start - extents[k + 1].start >= min_step;
+        towards_start = towards_start && extents[k].end() - extents[k + 1].end() <= -min_step;
     }
     if (towards_end == towards_start) return 0;
-    const span now = extents[0];
-    if (towards_end ? distance(now.start, last.start) > near
-                    : distance(now.end(), last.end()) > near)
-        return 0;
-    // The newest extent's shortfall against the oldest's size carried by the
-    // disparities (an object's size is proportional to its disparity).
-    const int oldest = count - 1;
-    int64_t expected = extents[oldest].size;
-    if (depth_q8[0] > 0 && depth_q8[oldest] > 0)
-        expected = (expected * depth_q8[0] + depth_q8[oldest] / 2) / depth_q8[oldest];
-    if (expected - now.size < oldest) return 0;  // under 1 px a pair
-    return 2 * (towards_end ? start_total : end_total) / oldest;
+    const int sign = towards_end ? 1 : -1;
+    auto trailing = [&](int k) { return towards_end ? extents[k].start : extents[k].end(); };
+    auto leading = [&](int k) { return towards_end ? extents[k].end() : extents[k].start; };
+    if (distance(trailing(0), towards_end ? last.start : last.end()) > near) return 0;
+    // Extent k spans object(t-1-k) and object(t-k): its leading edge's step
+    // from extent k+1 is the object's motion in pair t-k, which the trailing
+    // edge repeats a pair later (from extent k to k-1), plus the object's
+    // growth in that pair. The lag of the leading edge behind it is the rim
+    // missed more; a speed that changes (a throw near its apex) moves both.
+    int lag = 0;
+    for (int k = 1; k + 1 < count; ++k)
+        lag += sign * (trailing(k - 1) - trailing(k)) - sign * (leading(k) - leading(k + 1));
+    const int pairs = count - 2;
+    int64_t growth = 0;  // px over those pairs, from the disparities
+    if (depth_q8[0] > 0 && depth_q8[pairs] > 0)
+        growth = last.size * (depth_q8[0] - depth_q8[pairs]) / depth_q8[pairs];
+    if (lag + growth < pairs) return 0;  // under 1 px a pair
+    return 2 * (trailing(0) - trailing(count - 1)) / (count - 1);
 }
 
 span from_trailing_edge(span now, int step2, int size) {

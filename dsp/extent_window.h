@@ -47,16 +47,19 @@ int window_step2(const span* extents, int count, int size);
 // edge of a 90 px ball stood while the ball moved 3.7 px a pair, and the
 // median of both edges' steps read 1.5 px): its trailing edge stepped at
 // least 3 px every pair of the window the way it moves (more than a slow
-// object moves: key_frame::max_step; at 2 px a 150 px ball passing at 1.5 px a
-// frame was read so, one step of 4 px and 2 px short) and stands within
-// 4 px of the last box's, and the newest extent is short of the oldest's
-// size carried by the disparities (`depth_q8`, 0 none) by 1 px a pair or
-// more. Returns the trailing edge's mean step in half pixels (towards the
-// axis's end positive), 0 where the rim does not fade or with fewer than
-// three extents. Not a slow ball going away (its extents shrink as its
-// disparity does), nor a spinning ball's texture (its pieces cross the ball
-// 2-8 px a pair, inside the last box), nor a leading edge that moves while
-// the trailing one stands (it is object(t)'s own).
+// object moves: key_frame::max_step; at 2 px a 150 px ball passing at 1.5
+// px a frame was read so, its extent once 4 px short) and stands within
+// 4 px of the last box's, and the leading edge's steps lag the trailing
+// edge's by 1 px a pair or more. Each is the object's motion in the same
+// pair, the leading edge's a pair earlier in the window, plus the object's
+// growth, read from the disparities (`depth_q8`, 0 none): a slow ball going
+// away, a ball whose speed changes (a throw near its apex) or a texture
+// piece does not lag so. Returns the trailing edge's mean step in half
+// pixels (towards the axis's end positive), 0 where the rim does not fade
+// or with fewer than three extents. Not a spinning ball's texture either
+// (its pieces cross the ball 2-8 px a pair, inside the last box), nor a
+// leading edge that moves while the trailing one stands (it is object(t)'s
+// own).
 int fading_rim_step2(const span* extents, const int64_t* depth_q8, int count, span last);
 
 // object(t), `size` wide, from Dif(t-1,t)'s extent `now` whose trailing

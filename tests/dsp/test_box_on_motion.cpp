@@ -953,8 +953,8 @@ INSTANTIATE_TEST_SUITE_P(HeldOutDepth25, BoxOnMotion,
 // and run once on it: balls at 3-5 px a frame whose leading rim may enter
 // a dark part of the backdrop (over teddy and its dark red box, venus,
 // cones), going away, coming nearer or passing, both ways. Four passed,
-// as on the tree before; four failed. The fading rim judged against the
-// size at the depth since (extent_window.h, fading_rim_step2): the 100 px
+// as on the tree before; four failed. The fading rim read from the leading
+// edge's lag since (extent_window.h, fading_rim_step2): the 100 px
 // ball coming nearer over teddy (4.44 / 13.64 px; traced for the size read
 // short kept, a development case now) and the 120 px pass over teddy (1.66
 // / 7.95) pass; two are open (DISABLED_Open).

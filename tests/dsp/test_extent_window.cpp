@@ -292,6 +292,11 @@ TEST(FadingRim, NotReadWhereTheRimsAreReadOrTheObjectDoesNotMoveSteadily) {
         << "shrinking with its disparity";
     EXPECT_NE(dsp::fading_rim_step2(receding.data(), no_depth.data(), 4, span{252, 52}), 0)
         << "the disparities not read";
+    // A throw near its apex, rising 21, 15, then 9 px a pair (its top
+    // turning): both edges slow down alike.
+    const std::vector<span> apex{{164, 29}, {163, 39}, {170, 47}, {186, 52}};
+    EXPECT_EQ(dsp::fading_rim_step2(apex.data(), no_depth.data(), 4, span{163, 31}), 0)
+        << "a speed that changes";
     // A slow object: a step of 2 px in a pair (a 150 px ball passing at
     // 1.5 px a frame read 4, 2, 2 px, its extent 4 px short once).
     const std::vector<span> slow{{197, 148}, {193, 151}, {191, 152}, {189, 152}};
