@@ -283,8 +283,9 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
     // difference that did not outline it.
     // So is a slower object's where its leading rim fades (dsp/extent_window.h).
     const fading_rims fading = read_fading_rims(fast, part_x, part_y, last);
-    const bool short_x = (fast || fading.x2 != 0) && previous_x.size < last.width;
-    const bool short_y = (fast || fading.y2 != 0) && previous_y.size < last.height;
+    const bool rim_missed_x = fast || fading.x2 != 0, rim_missed_y = fast || fading.y2 != 0;
+    const bool short_x = rim_missed_x && previous_x.size < last.width;
+    const bool short_y = rim_missed_y && previous_y.size < last.height;
     if ((!part_x && !grown_x && !short_x && !near_size(previous_x.size, last.width, tolerance_x)) ||
         (!part_y && !grown_y && !short_y && !near_size(previous_y.size, last.height, tolerance_y)))
         return false;
@@ -301,12 +302,10 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
     if (motion.both.width - w > reach || motion.both.height - h > reach) return false;
     // Across the motion a size the differences measured short is not taken.
     const bool unmoved = keyed && moved_x < slow && moved_y < slow;
-    const int size_x = fast || unmoved || fading.x2 || across_motion(moved_x, moved_y)
-                           ? max_int(w, last.width)
-                           : w;
-    const int size_y = fast || unmoved || fading.y2 || across_motion(moved_y, moved_x)
-                           ? max_int(h, last.height)
-                           : h;
+    const int size_x =
+        rim_missed_x || unmoved || across_motion(moved_x, moved_y) ? max_int(w, last.width) : w;
+    const int size_y =
+        rim_missed_y || unmoved || across_motion(moved_y, moved_x) ? max_int(h, last.height) : h;
     span object_x = part_x ? part_axis(x_span(motion.both), x_span(last))
                            : follow_axis(previous_x, x_span(motion.both), x_span(last), size_x);
     span object_y = part_y ? part_axis(y_span(motion.both), y_span(last))

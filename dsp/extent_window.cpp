@@ -1,6 +1,7 @@
 #include "dsp/extent_window.h"
 
 #include "dsp/int_bounds.h"
+#include "dsp/key_frame.h"
 
 namespace dsp {
 namespace {
@@ -129,8 +130,8 @@ bool window_axis(const span* extents, int count, int size, span last, span* obje
 }
 
 int fading_rim_step2(const span* extents, const int64_t* depth_q8, int count, span last) {
-    constexpr int min_step = 3;  // px: over a slow object's (key_frame::max_step) every pair
-    constexpr int near = 4;      // px (key_frame::min_shift): the last box a step off object(t-1)
+    constexpr int min_step = key_frame::max_step + 1;  // more than a slow object, every pair
+    constexpr int near = key_frame::min_shift;         // the last box a step off object(t-1)
     if (count < 3) return 0;
     bool towards_end = true, towards_start = true;
     for (int k = 0; k + 1 < count; ++k) {
