@@ -21,6 +21,10 @@ bool controller::impl::detect(frame_output& out) {
     const bool waiting = slow_candidate;
     uint64_t cycles = 0;
     sdram_traffic traffic;
+    if (found.object_found) {
+        detection_edges.push(found.object_box, frame_index);
+        cycles += cycles_of(cost::detection_steps_profile());
+    }
     out.detected = found.object_found && start_detection(found, out, &cycles, &traffic);
     if (!out.detected && waiting && slow_candidate)
         out.detected = confirm_slow_object(&cycles, &traffic);
@@ -127,15 +131,17 @@ bool controller::impl::start_detection(const detection& found, frame_output& out
 // placed where Dif(t-1,t) reaches past object(t-1), as in TRACK
 // (track_object), with object(t-1)'s size; without such an extent, where
 // the SAD found the pattern. Where the SAD moved at most key_frame::max_step
-// px the object is slow, and its detection, made of one pair's thin
-// differences, may hold a part of it only (a 110 px ball at 1 px per frame
-// over a cluttered photograph: a 23 x 86 px crescent, or a 22 x 39 px
-// piece); it is not started but keyed (confirm_slow_object), the key's
-// region grown by twice the detection's longer side, where the rest of its
-// object may lie (a crescent is as long as its ball is wide; a smaller
-// piece's ball reached further). One candidate at a time: while one waits,
-// a slow detection is left to it, and a faster one starts its track (a
-// candidate must not hold a thrown ball back for its 10 pairs).
+// px, and the last detections' outline does not step on (a turning texture
+// read still: dsp/detection_steps.h), the object is slow, and its
+// detection, made of one pair's thin differences, may hold a part of it
+// only (a 110 px ball at 1 px per frame over a cluttered photograph: a
+// 23 x 86 px crescent, or a 22 x 39 px piece); it is not started but keyed
+// (confirm_slow_object), the key's region grown by twice the detection's
+// longer side, where the rest of its object may lie (a crescent is as long
+// as its ball is wide; a smaller piece's ball reached further). One
+// candidate at a time: while one waits, a slow detection is left to it,
+// and a faster one starts its track (a candidate must not hold a thrown
+// ball back for its 10 pairs).
 bool controller::impl::start_track(box detected, uint64_t* cycles, sdram_traffic* traffic) {
     tracker.start(history(1), detected);
     const box pattern = tracker.pattern_box();
@@ -146,7 +152,10 @@ bool controller::impl::start_track(box detected, uint64_t* cycles, sdram_traffic
     if (status == track_status::tracking) {
         *cycles += cycles_of(
             cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
-        if (moved_at_most(detected, tracker.position(), key_frame::max_step)) {
+        // Still by the SAD, but its outline stepping on (dsp/detection_steps.h):
+        // a moving object whose texture or background corners matched in place.
+        const bool outline_moves = detection_edges.edge_keeps_stepping(key_frame::max_step + 1);
+        if (moved_at_most(detected, tracker.position(), key_frame::max_step) && !outline_moves) {
             if (slow_candidate) return false;  // one at a time: the waiting one goes on
             take_key(cycles, traffic,
                      2 * max_int(detected.width, detected.height) + key_frame::max_shift +

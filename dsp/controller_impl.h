@@ -8,6 +8,7 @@
 
 #include "dsp/box_refit.h"
 #include "dsp/controller.h"
+#include "dsp/detection_steps.h"
 #include "dsp/extent_window.h"
 #include "dsp/int_bounds.h"
 #include "dsp/kernel_costs.h"
@@ -126,8 +127,9 @@ struct controller::impl {
     sad_tracker tracker;
     key_frame key;          // a slow object's older frame (dsp/key_frame.h), SDRAM
     stride_history stride;  // DETECT: frames a stride apart (dsp/stride_history.h), in left_gray
-    bool slow_candidate = false;  // DETECT: a slow object's key, waiting for its outline
-    int candidate_pairs = 0;      // pairs the candidate has waited
+    bool slow_candidate = false;      // DETECT: a slow object's key, waiting for its outline
+    detection_steps detection_edges;  // DETECT: the last pairs' detections (moving, SAD still)
+    int candidate_pairs = 0;          // pairs the candidate has waited
     // What Dif(key, t) has said of the key's box on one axis (key_axis_shift).
     struct key_axis {
         bool unfit = false;      // the key's box did not outline the object there

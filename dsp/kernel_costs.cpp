@@ -467,6 +467,16 @@ kernel_profile window_step_profile(int extents) {
     return p;
 }
 
+kernel_profile detection_steps_profile() {
+    // dsp/detection_steps.h: the box kept (4 words), then each of the 4
+    // edges' 3 steps, a subtract and two compares against the step.
+    kernel_profile p("detection_steps");
+    p.add(block("keep box", op_mix{0, 0, 0, /*d*/ 2, 0, 0}, latency_load + latency_store, 4));
+    p.add(block("edge step", op_mix{/*l*/ 2, /*s*/ 1, 0, /*d*/ 2, 0, /*lsd*/ 1},
+                latency_load + latency_alu, 4 * 3));
+    return p;
+}
+
 kernel_profile size_at_depth_profile(int divides) {
     // dsp/size_at_depth.h: each size carried or extent narrowed is one __divu
     // of a size times a disparity by a disparity (a quotient of at most

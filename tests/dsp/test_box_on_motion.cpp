@@ -933,7 +933,10 @@ INSTANTIATE_TEST_SUITE_P(
 // away from the rig or coming nearer, keyed, over every backdrop. Two of
 // eight passed, both ways. Development cases since: a key taken at the
 // detection now stands for a disparity, and a key's outline takes the
-// key's size at the depth; five pass, three are open.
+// key's size at the depth; five pass, three are open. The 110 px ball
+// over tsukuba (never detected: its SAD pattern read it still, keyed again
+// and again) passes since a detection whose box steps on is started
+// (dsp/detection_steps.h; traced on it); two are open.
 INSTANTIATE_TEST_SUITE_P(HeldOutDepth25, BoxOnMotion,
                          ::testing::Values(motion_case{"heldout25_recede60px_1pxpf_aloe", 60, 2.6,
                                                        recede, 0.2, 0.0, 'x', aloe, 24},
@@ -944,7 +947,10 @@ INSTANTIATE_TEST_SUITE_P(HeldOutDepth25, BoxOnMotion,
                                            motion_case{"heldout25_approach70px_3pxpf_1rps_x_cones",
                                                        70, 2.6, approach, 0.6, 1.0, 'x', photo, 24},
                                            motion_case{"heldout25_recede80px_2pxpf_3rps_z", 80, 2.6,
-                                                       recede, 0.4, 3.0, 'z', procedural, 24}),
+                                                       recede, 0.4, 3.0, 'z', procedural, 24},
+                                           motion_case{"heldout25_recede110px_2pxpf_1rps_y_tsukuba",
+                                                       110, 2.6, recede, 0.4, 1.0, 'y', tsukuba,
+                                                       24}),
                          case_name);
 
 // Held out, round 26: written before they were run, on the box placed
@@ -957,7 +963,9 @@ INSTANTIATE_TEST_SUITE_P(HeldOutDepth25, BoxOnMotion,
 // edge's lag since (extent_window.h, fading_rim_step2): the 100 px
 // ball coming nearer over teddy (4.44 / 13.64 px; traced for the size read
 // short kept, a development case now) and the 120 px pass over teddy (1.66
-// / 7.95) pass; two are open (DISABLED_Open).
+// / 7.95) pass; the 140 px ball going away (detected at its 20th frame)
+// since a detection whose box steps on is started (dsp/detection_steps.h;
+// traced on it); one is open (DISABLED_Open).
 INSTANTIATE_TEST_SUITE_P(HeldOutFading26, BoxOnMotion,
                          ::testing::Values(motion_case{"heldout26_recede100px_4pxpf_teddy", 100,
                                                        2.6, recede, 0.8, 0.0, 'x', photo4, 24},
@@ -970,7 +978,10 @@ INSTANTIATE_TEST_SUITE_P(HeldOutFading26, BoxOnMotion,
                                            motion_case{"heldout26_recede120px_4pxpf_venus", 120,
                                                        2.6, recede, 0.8, 0.0, 'x', venus, 24},
                                            motion_case{"heldout26_recede110px_5pxpf_2rps_x_cones",
-                                                       110, 2.6, recede, 1.0, 2.0, 'x', photo, 24}),
+                                                       110, 2.6, recede, 1.0, 2.0, 'x', photo, 24},
+                                           motion_case{"heldout26_recede140px_5pxpf_1rps_y_teddy",
+                                                       140, 2.6, recede, 1.0, 1.0, 'y', photo4,
+                                                       24}),
                          case_name);
 
 // Held out, round 27: written before they were run, on the detections'
@@ -980,6 +991,11 @@ INSTANTIATE_TEST_SUITE_P(HeldOutFading26, BoxOnMotion,
 // frame spinning about y (the texture across the path, with or against
 // it), passing both ways, going away or coming nearer, over every
 // photograph; the slowest, 1 px a frame, for a slow ball read as moving.
+// Run once on the rule's first form (one edge stepping, alone or not): all
+// eight passed; on the tree before, seven (the 130 px ball going away over
+// kodim19 never detected). On the rule as kept (the opposite edge along:
+// three slow balls' growing pieces had been started as moving), the same
+// but the 100 px pass over teddy, 1.04 / 2.41 -> 1.25 / 2.80 px.
 INSTANTIATE_TEST_SUITE_P(
     HeldOutSpinningSteps27, BoxOnMotion,
     ::testing::Values(motion_case{"heldout27_pass100px_3pxpf_2rps_y_teddy", 100, 2.6, pass, 0.6,
@@ -1002,7 +1018,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 // Open: the issue of the box on fast, large and spinning objects stays open
 // on these (docs/firmware.md, "Open"; run with
-// --gtest_also_run_disabled_tests, all nine fail). A 100 px ball circling
+// --gtest_also_run_disabled_tests, all seven fail). A 100 px ball circling
 // over venus keeps a box 3.5 px left of it (mean 3.53, max 4.13; its right
 // rim never in Dif(key, t): from 35 px above its centre down to its bottom
 // the shaded limb is 0-18 grey levels off venus's dark frame, under the
@@ -1015,14 +1031,11 @@ INSTANTIATE_TEST_SUITE_P(
 // and the window's step (3 px a pair) under the fast rule's. A ball going
 // away from the rig (docs/firmware.md, "An object going away or coming
 // nearer"), held out: the 100 px ball at 1 px a frame over cones is
-// detected only at its 23rd frame (no pair scored). Round 25's three: the 110 px ball going away at
-// 2 px a frame over tsukuba is never detected; the 140 px ball over
-// kodim23 is within 2.65 px but 1.04 % off in depth, its box 4-7 px too
-// large (from its detection) for 8 pairs; the 120 px ball coming nearer over kodim19
-// is detected on a part of it and kept 14-22 px right of it, its box
-// 31-45 px narrow.
-// Round 26's two: the 140 px ball going away at 5 px a frame over teddy is
-// detected only at its 20th frame (2 pairs scored), and the 100 px ball
+// detected only at its 23rd frame (no pair scored). Round 25's two: the
+// 140 px ball over kodim23 is within 2.65 px but 1.04 % off in depth, its
+// box 4-7 px too large (from its detection) for 8 pairs; the 120 px ball
+// coming nearer over kodim19 is detected on a part of it and kept 14-22 px
+// right of it, its box 31-45 px narrow. Round 26's one: the 100 px ball
 // passing leftwards at 4 px a frame over teddy is kept 8-9 px left of it,
 // its box 16 px narrow, for its first 12 pairs (5.47 / 10.81 px): its
 // shaded trailing side over teddy's dark red box is missed by 13 px in
@@ -1036,15 +1049,10 @@ INSTANTIATE_TEST_SUITE_P(DISABLED_Open, BoxOnMotion,
                                                        2.6, thrown, 0.7, 2.0, 'x', venus, 36},
                                            motion_case{"heldout24_recede100px_1pxpf_2rps_y_photo",
                                                        100, 2.6, recede, 0.2, 2.0, 'y', photo, 24},
-                                           motion_case{"heldout25_recede110px_2pxpf_1rps_y_tsukuba",
-                                                       110, 2.6, recede, 0.4, 1.0, 'y', tsukuba,
-                                                       24},
                                            motion_case{"heldout25_recede140px_3pxpf_kodim23", 140,
                                                        2.6, recede, 0.6, 0.0, 'x', photo2, 24},
                                            motion_case{"heldout25_approach120px_2pxpf_kodim19", 120,
                                                        2.6, approach, 0.4, 0.0, 'x', photo3, 20},
-                                           motion_case{"heldout26_recede140px_5pxpf_1rps_y_teddy",
-                                                       140, 2.6, recede, 1.0, 1.0, 'y', photo4, 24},
                                            motion_case{"heldout26_pass_left100px_4pxpf_teddy", 100,
                                                        2.6, pass_left, 0.8, 0.0, 'x', photo4, 24}),
                          case_name);
