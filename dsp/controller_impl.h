@@ -135,6 +135,7 @@ struct controller::impl {
         bool unfit = false;      // the key's box did not outline the object there
         bool has_first = false;  // `first` holds the object's outline there
         span first;              // Dif(key, t)'s extent at the key's first pair
+        int last = 0;            // the displacement read on the last pair
     };
     key_axis key_x, key_y;
     bool key_first_seen = false;   // Dif(key, t) found since the key was taken

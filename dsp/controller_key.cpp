@@ -6,6 +6,20 @@ namespace dsp {
 
 using namespace controller_parts;
 
+namespace {
+
+// A displacement since the key that came back towards it by more than a
+// slow object moves in a pair (max_step, + 1): the key's pattern matched
+// elsewhere, not the object. A 73 px ball at 3 px a pair spinning 1 rev/s
+// about y read 3, 6, 9 px, then 0 where its texture came round, and the box
+// stayed there (12 px behind; co-simulated, 34 px as the ball went on).
+bool falls_back(int last, int now) {
+    const int back = key_frame::max_step + 1;
+    return (last > 0 && now < last - back) || (last < 0 && now > last + back);
+}
+
+}  // namespace
+
 // A slow object's box from the key (dsp/key_frame.h): while the key's
 // pattern is found within max_step px of where it was last, the box is the
 // key's moved by the displacement since; once that is min_shift px, its
@@ -162,10 +176,13 @@ void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
     const box k = key.object();
     const block_group u = keyed_extent(cycles, traffic);
     key_reading r;
-    if (!key_displacement(u, matched, &r)) {
+    if (!key_displacement(u, matched, &r) || falls_back(key_x.last, r.dx) ||
+        falls_back(key_y.last, r.dy)) {
         key.drop();
         return;
     }
+    key_x.last = r.dx;
+    key_y.last = r.dy;
     const int dx = r.dx, dy = r.dy;
     // The key's box moved as its pattern did, at the latest pair's depth.
     box b = at_disparity(shifted(k, dx, dy), key_sized_q8, measured_disparity_q8);
