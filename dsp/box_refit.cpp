@@ -90,9 +90,17 @@ int bounded_shift(span both, span key, int shift, bool* bounded) {
     return max_int(-limit, min_int(limit, shift));
 }
 
-span outline_key_axis(span both, span key, int size, bool across) {
+span outline_key_axis(span both, span key, int size, bool across, span first, int toward) {
     const int lo = min_int(both.start, key.start), hi = max_int(both.end(), key.end());
-    if (across) return span{lo, min_int(hi - lo, key.size + key.size / 4 + 1)};
+    if (across) {
+        // Grown further at one end than at the other since the first reading.
+        const int drift = (both.end() - first.end()) - (first.start - both.start);
+        const int from =
+            toward > 0 && drift > key_frame::max_step ? min_int(lo + drift, hi - key.size) : lo;
+        const int to =
+            toward < 0 && drift < -key_frame::max_step ? max_int(hi + drift, lo + key.size) : hi;
+        return span{from, min_int(to - from, key.size + key.size / 4 + 1)};
+    }
     const int past_start = key.start - lo, past_end = hi - key.end();
     size = max_int(size, key.size + 2 * min_int(past_start, past_end));
     if (hi - lo <= size || past_start == past_end) return span{lo + (hi - lo - size) / 2, size};

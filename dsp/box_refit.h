@@ -162,7 +162,18 @@ int bounded_shift(span both, span key, int shift, bool* bounded);
 // twice the hull's reach past its trailing side, for a hull past the key's box
 // on both sides says that box was short by that much on each (a 160 px ball
 // spinning 2 rev/s about y was keyed short along the motion).
-span outline_key_axis(span both, span key, int size, bool across);
+// Across the motion the object may drift too (a ball circling): where
+// Dif(key, t) grew at one end more than max_step px further than at the
+// other since its first reading `first`, and the silhouette's centre moved
+// that way since the key (`toward`: +1 towards the end, -1 the start, 0
+// not min_shift px), the hull less that growth at its trailing end (not
+// under the key's box). The hull alone held where a 73 px ball circling at
+// 3 px a pair was at the key: it drifted 1 px a pair across, and its box
+// grew to 87 px, 7 px off centre. Either reading alone misleads: a key's
+// box short at one end moves the silhouette's centre (a 120 px ball keyed
+// 109 px wide), and a texture turning into one pole first grows Dif(key, t)
+// there (a 185 px ball spinning 3 rev/s, its box 4-6 px short).
+span outline_key_axis(span both, span key, int size, bool across, span first, int toward);
 
 // A size moved towards `target` by at most max(1, larger of the two / 8),
 // within [min_size, max_size] and at most `limit`.

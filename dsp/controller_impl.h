@@ -140,6 +140,7 @@ struct controller::impl {
     key_axis key_x, key_y;
     bool key_first_seen = false;   // Dif(key, t) found since the key was taken
     char outline_key_across = 0;   // a key of the outline: 'x' or 'y' across the motion, 0 unknown
+    int outline_key_drift = 0;     // which way its silhouette drifted across (judge_across)
     bool box_may_be_part = false;  // a detection's box no silhouette of its size has confirmed
     // The box's size is a key's outline (follow_slow_object) and the object
     // has not moved fast since in this track: where the differences do not

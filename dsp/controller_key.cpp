@@ -244,9 +244,15 @@ void controller::impl::follow_outline_key(track_motion seen, uint64_t* cycles,
     // Under half the key's box: a part of the object changed, not its outline.
     if (2 * u.bbox.width < k.width || 2 * u.bbox.height < k.height) return;
     const int size_x = max_int(s.width, k.width), size_y = max_int(s.height, k.height);
-    box b =
-        from_spans(outline_key_axis(x_span(u.bbox), x_span(k), size_x, outline_key_across == 'x'),
-                   outline_key_axis(y_span(u.bbox), y_span(k), size_y, outline_key_across == 'y'));
+    if (!key_first_seen) {
+        key_first_seen = true;
+        key_x.first = x_span(u.bbox);
+        key_y.first = y_span(u.bbox);
+    }
+    box b = from_spans(outline_key_axis(x_span(u.bbox), x_span(k), size_x,
+                                        outline_key_across == 'x', key_x.first, outline_key_drift),
+                       outline_key_axis(y_span(u.bbox), y_span(k), size_y,
+                                        outline_key_across == 'y', key_y.first, outline_key_drift));
     b.x = max_int(0, min_int(b.x, width - b.width));
     b.y = max_int(0, min_int(b.y, height - b.height));
     if (!same_box(b, s)) {
@@ -269,12 +275,20 @@ void controller::impl::judge_across(track_motion seen, box silhouette) {
     const int move_x = moved.x2 / 2, move_y = moved.y2 / 2;
     if (2 * move_y <= move_x && move_x >= key_frame::min_shift) outline_key_across = 'y';
     if (2 * move_x <= move_y && move_y >= key_frame::min_shift) outline_key_across = 'x';
+    const box k = key.object();
+    const int across2 = outline_key_across == 'x'   ? silhouette.center_x2() - k.center_x2()
+                        : outline_key_across == 'y' ? silhouette.center_y2() - k.center_y2()
+                                                    : 0;
+    outline_key_drift = across2 >= 2 * key_frame::min_shift    ? 1
+                        : across2 <= -2 * key_frame::min_shift ? -1
+                                                               : 0;
 }
 
 void controller::impl::take_outline_key(uint64_t* cycles, sdram_traffic* traffic) {
     take_key(cycles, traffic);
     key.set_outline_only();
     outline_key_across = 0;
+    outline_key_drift = 0;
 }
 
 }  // namespace dsp

@@ -211,31 +211,73 @@ TEST(OutlineKeyAxis, AcrossTheMotionTheHull) {
     // The trace of a 140 px ball about y: the key's box missed 6 px at the
     // top, Dif(key, t) 1 (y 156..293 against the key's 161..292).
     EXPECT_TRUE(
-        is_span(dsp::outline_key_axis(span{156, 137}, span{161, 131}, 131, true), 156, 137));
+        is_span(dsp::outline_key_axis(span{156, 137}, span{161, 131}, 131, true, span{156, 137}, 0),
+                156, 137));
     // At most a quarter more than the key's box, + 1.
     EXPECT_TRUE(
-        is_span(dsp::outline_key_axis(span{100, 200}, span{120, 100}, 100, true), 100, 126));
+        is_span(dsp::outline_key_axis(span{100, 200}, span{120, 100}, 100, true, span{100, 200}, 0),
+                100, 126));
+}
+
+// The traced 73 px ball circling at 3 px a pair, spinning 1 rev/s about y:
+// keyed at x 166..241, Dif(key, t) first 167..242, later 167..245: grown
+// 3 px at its end and none at its start, and its silhouette's centre moved
+// right (toward +1): it drifted 3 px right. The hull [166, 245) less 3 px
+// at its start.
+TEST(OutlineKeyAxis, AcrossTheMotionTheHullLessADrift) {
+    EXPECT_TRUE(is_span(
+        dsp::outline_key_axis(span{167, 78}, span{166, 75}, 75, true, span{167, 75}, 1), 169, 76));
+    // Towards the start: [160, 241) less 4 px at its end.
+    EXPECT_TRUE(is_span(
+        dsp::outline_key_axis(span{160, 80}, span{166, 75}, 75, true, span{164, 76}, -1), 160, 77));
+    // A drift never takes the box under the key's: grown 21 px at the end of
+    // [166, 251), the key's box 75 px wide at that end.
+    EXPECT_TRUE(is_span(
+        dsp::outline_key_axis(span{166, 85}, span{166, 75}, 75, true, span{166, 64}, 1), 176, 75));
+}
+
+TEST(OutlineKeyAxis, AcrossTheMotionNoDriftTheHull) {
+    // Grown 3 px at the end, but the silhouette did not move that way (a
+    // 185 px ball whose texture turned into one pole first): the hull.
+    EXPECT_TRUE(is_span(
+        dsp::outline_key_axis(span{167, 78}, span{166, 75}, 75, true, span{167, 75}, 0), 166, 79));
+    EXPECT_TRUE(is_span(
+        dsp::outline_key_axis(span{167, 78}, span{166, 75}, 75, true, span{167, 75}, -1), 166, 79));
+    // Grown max_step px further at one end: noise, the hull.
+    EXPECT_TRUE(is_span(
+        dsp::outline_key_axis(span{167, 77}, span{166, 75}, 75, true, span{167, 75}, 1), 166, 78));
+    // The traced 120 px ball keyed 109 px wide (141..250), its silhouette
+    // 109-122 px: Dif(key, t) reads 13 px past the key's box from the first
+    // reading on, and grows no further. The hull.
+    EXPECT_TRUE(
+        is_span(dsp::outline_key_axis(span{141, 122}, span{141, 109}, 109, true, span{141, 122}, 1),
+                141, 122));
+    // Grown alike at both ends (the texture turned into the poles): the hull.
+    EXPECT_TRUE(is_span(
+        dsp::outline_key_axis(span{160, 90}, span{166, 75}, 75, true, span{165, 80}, 1), 160, 90));
 }
 
 TEST(OutlineKeyAxis, AlongTheMotionTheSizeAtTheLeadingEnd) {
     // Moved 10 px towards the end: [193, 344) less the size from its end,
     // never under the key's box (141).
-    EXPECT_TRUE(
-        is_span(dsp::outline_key_axis(span{194, 150}, span{193, 141}, 140, false), 203, 141));
-    EXPECT_TRUE(
-        is_span(dsp::outline_key_axis(span{194, 150}, span{193, 141}, 145, false), 199, 145));
+    EXPECT_TRUE(is_span(
+        dsp::outline_key_axis(span{194, 150}, span{193, 141}, 140, false, span{}, 0), 203, 141));
+    EXPECT_TRUE(is_span(
+        dsp::outline_key_axis(span{194, 150}, span{193, 141}, 145, false, span{}, 0), 199, 145));
     // Towards the start.
-    EXPECT_TRUE(
-        is_span(dsp::outline_key_axis(span{180, 150}, span{190, 140}, 140, false), 180, 140));
+    EXPECT_TRUE(is_span(
+        dsp::outline_key_axis(span{180, 150}, span{190, 140}, 140, false, span{}, 0), 180, 140));
     // Equally far on both sides: the key's box was 2 px short on each; the
     // hull [100, 164).
-    EXPECT_TRUE(is_span(dsp::outline_key_axis(span{100, 64}, span{102, 60}, 60, false), 100, 64));
+    EXPECT_TRUE(is_span(dsp::outline_key_axis(span{100, 64}, span{102, 60}, 60, false, span{}, 0),
+                        100, 64));
     // Past it by 6 px ahead and 2 behind: 4 px more than the key's box, at the
     // leading end of the hull [98, 166).
-    EXPECT_TRUE(is_span(dsp::outline_key_axis(span{98, 68}, span{100, 60}, 60, false), 102, 64));
-    // A part inside the key's box (a leading crescent 41 px of 129): the key's box.
     EXPECT_TRUE(
-        is_span(dsp::outline_key_axis(span{289, 41}, span{201, 129}, 129, false), 201, 129));
+        is_span(dsp::outline_key_axis(span{98, 68}, span{100, 60}, 60, false, span{}, 0), 102, 64));
+    // A part inside the key's box (a leading crescent 41 px of 129): the key's box.
+    EXPECT_TRUE(is_span(dsp::outline_key_axis(span{289, 41}, span{201, 129}, 129, false, span{}, 0),
+                        201, 129));
 }
 
 TEST(PreviousAxis, TheCommonPartOfBothDifferences) {
