@@ -268,7 +268,9 @@ void controller::impl::follow_outline_key(track_motion seen, uint64_t* cycles,
 // The axis across the motion for a key of the outline: the one along which
 // the silhouette's centre moved at most half as far since the key as along
 // the other, that one at least min_shift px; none before (both axes then
-// take the object's size at the hull's leading end, or centred).
+// take the object's size at the hull's leading end, or centred). With it,
+// which way the silhouette's centre moved across since the key, once
+// min_shift px (outline_key_axis); both kept on a pair without a silhouette.
 void controller::impl::judge_across(track_motion seen, box silhouette) {
     if (!seen.outlined) return;
     const centre_gap moved = centre_offset2(silhouette, key.object());
@@ -287,8 +289,7 @@ void controller::impl::judge_across(track_motion seen, box silhouette) {
 void controller::impl::take_outline_key(uint64_t* cycles, sdram_traffic* traffic) {
     take_key(cycles, traffic);
     key.set_outline_only();
-    outline_key_across = 0;
-    outline_key_drift = 0;
+    outline_key_across = 0;  // its drift is read again with it (judge_across)
 }
 
 }  // namespace dsp
