@@ -95,10 +95,8 @@ span outline_key_axis(span both, span key, int size, bool across, span first, in
     if (across) {
         // Grown further at one end than at the other since the first reading.
         const int drift = (both.end() - first.end()) - (first.start - both.start);
-        const int from =
-            toward > 0 && drift > key_frame::max_step ? min_int(lo + drift, hi - key.size) : lo;
-        const int to =
-            toward < 0 && drift < -key_frame::max_step ? max_int(hi + drift, lo + key.size) : hi;
+        const int from = toward > 0 && drift > 0 ? min_int(lo + drift, hi - key.size) : lo;
+        const int to = toward < 0 && drift < 0 ? max_int(hi + drift, lo + key.size) : hi;
         return span{from, min_int(to - from, key.size + key.size / 4 + 1)};
     }
     const int past_start = key.start - lo, past_end = hi - key.end();
