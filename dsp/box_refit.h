@@ -166,9 +166,10 @@ int bounded_shift(span both, span key, int shift, bool* bounded);
 // Dif(key, t) grew further at one end than at the other since its first
 // reading `first`, and the silhouette's centre moved that way since the key
 // (`toward`: +1 towards the end, -1 the start, 0 not min_shift px), the
-// hull less that growth at its trailing end (not under the key's box). The hull alone held where a 73 px ball circling at
-// 3 px a pair was at the key: it drifted 1 px a pair across, and its box
-// grew to 87 px, 7 px off centre. Either reading alone misleads: a key's
+// hull less that growth at its trailing end (not under the key's box). The
+// hull alone held where a 73 px ball circling at 3 px a pair was at the
+// key: it drifted 1 px a pair across, and its box grew to 87 px, 7 px off
+// centre. Either reading alone misleads: a key's
 // box short at one end moves the silhouette's centre (a 120 px ball keyed
 // 109 px wide), and a texture turning into one pole first grows Dif(key, t)
 // there (a 185 px ball spinning 3 rev/s, its box 4-6 px short).

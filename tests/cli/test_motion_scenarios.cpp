@@ -132,7 +132,7 @@ TEST(MotionScenarios, SpinningPassBetweenSlowAndMoving) {
 
 // The same ball circling at 3 px per frame: its key of the outline took the
 // hull across the motion, which held where the ball was at the key while it
-// drifted 1 px a pair across, and the box fell behind from pair 13 (3.71 px
+// drifted 1 px a pair across, and the box fell behind from pair 13 (3.70 px
 // mean, 8.10 px max, seed 3) until the hull was trimmed by that drift
 // (docs/firmware.md, "A key of the outline drifting across the motion"):
 // 1.98 / 3.98 px.

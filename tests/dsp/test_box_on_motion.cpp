@@ -1046,10 +1046,10 @@ INSTANTIATE_TEST_SUITE_P(
 // the tree as it was (that rule was not kept: docs/firmware.md, "A key's
 // displacement that falls back"): seven pass; the 80 px ball circling over
 // cones fails (3.70 / 7.45 px; not traced). The same on the displacement
-// that falls back dropping the key. The 80 px circle passes (1.92 / 2.96
+// that falls back dropping the key. The 80 px circle passes (1.88 / 2.96
 // px) since a key of the outline takes a drift across off its hull
 // (dsp/box_refit.h, outline_key_axis), found on the 73 px circle about y of
-// BetweenSlowAndMoving (3.55 / 7.16 -> 1.46 / 3.88 px).
+// BetweenSlowAndMoving (3.55 / 7.16 -> 1.26 / 2.15 px).
 INSTANTIATE_TEST_SUITE_P(
     HeldOutBetween28, BoxOnMotion,
     ::testing::Values(motion_case{"heldout28_pass60px_3pxpf_2rps_y", 60, 2.6, pass, 0.6, 2.0, 'y',
@@ -1076,7 +1076,7 @@ INSTANTIATE_TEST_SUITE_P(
 // 1-3 rev/s about every axis, over the procedural plane and the
 // photographs. On the tree before, five of eight passed; on the rule's
 // first form (the silhouette's drift alone) six, on its kept form six:
-// the 90 px ball over kodim19 passes (4.50 / 7.90 -> 2.48 / 3.90 px). The
+// the 90 px ball over kodim19 passes (4.50 / 7.90 -> 2.46 / 3.90 px). The
 // 120 px ball at 1 px a frame over cones (traced for the second form) and
 // the 70 px ball over venus fail, as before the rule (DISABLED_Open).
 INSTANTIATE_TEST_SUITE_P(
