@@ -56,7 +56,7 @@ using host::max_side_error;
 using host::min_side_error_px;
 using host::untracked_start_pairs;
 
-enum class path_kind { pass, pass_left, thrown, circle, enter, recede, approach };
+enum class path_kind { pass, pass_left, thrown, circle, circle_back, enter, recede, approach };
 enum class backdrop { procedural, cones, kodim23, kodim19, teddy, tsukuba, venus, aloe };
 
 struct motion_case {
@@ -125,6 +125,14 @@ scene::trajectory depth_path(const motion_case& c, double start_s) {
                                    {0.26 * d * c.speed, 0.02 * d * c.speed, z_rate * d}, start_s);
 }
 
+// The circle of scene::circling_path from its other side (its rightmost
+// point): it goes down drifting leftwards, where the circle drifts right.
+scene::trajectory circle_from_right(const motion_case& c, double start_s) {
+    const double d = c.depth_m, radius = 0.15 * d;
+    return scene::trajectory::circle({0.0, 0.0, d}, radius, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0},
+                                     0.41 * d * c.speed / radius, 0.0, start_s);
+}
+
 scene::scenario scenario_of(const motion_case& c) {
     scene::scenario s;
     s.scene.rig.principal_dx_left = c.principal_dx_left_px;
@@ -148,8 +156,9 @@ scene::scenario scenario_of(const motion_case& c) {
                 : c.path == path_kind::pass_left ? leftward_pass(c, start)
                 : c.path == path_kind::recede || c.path == path_kind::approach
                     ? depth_path(c, start)
-                : c.path == path_kind::circle
-                    ? scene::circling_path(c.depth_m, c.speed, start)
+                : c.path == path_kind::circle ? scene::circling_path(c.depth_m, c.speed, start)
+                : c.path == path_kind::circle_back
+                    ? circle_from_right(c, start)
                     : scene::thrown_ball_path(c.depth_m, ball.radius_m, c.speed, start);
     s.scene.balls.push_back(ball);
     s.frame_count = c.frames;
@@ -235,6 +244,7 @@ constexpr path_kind pass = path_kind::pass;
 constexpr path_kind pass_left = path_kind::pass_left;
 constexpr path_kind thrown = path_kind::thrown;
 constexpr path_kind circle = path_kind::circle;
+constexpr path_kind circle_back = path_kind::circle_back;
 constexpr path_kind enter = path_kind::enter;
 constexpr path_kind recede = path_kind::recede;
 constexpr path_kind approach = path_kind::approach;
@@ -1028,7 +1038,11 @@ INSTANTIATE_TEST_SUITE_P(
 // rule, looking for a case of its y axis (mutant fw-149): before it 3.54 /
 // 23.09 and 5.65 / 12.36 px. The 73 px circle about y, found with them,
 // failed (3.55 / 7.16 px) until a key of the outline took a drift across
-// off its hull (dsp/box_refit.h, outline_key_axis; traced on it).
+// off its hull (dsp/box_refit.h, outline_key_axis; traced on it). The two
+// balls on the circle's other side (drifting towards the start, leftwards)
+// were written after that rule, looking for a case of its other end
+// (mutant fw-156): before it 2.37 / 5.65 and 4.92 / 12.98 px, with it
+// 1.32 / 3.35 and 2.12 / 4.63.
 INSTANTIATE_TEST_SUITE_P(
     BetweenSlowAndMoving, BoxOnMotion,
     ::testing::Values(
@@ -1036,7 +1050,11 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"pass73px_3pxpf_1rps_y", 73, 2.6, pass, 0.6, 1.0, 'y', procedural, 30},
         motion_case{"circle73px_3pxpf_1rps_x", 73, 2.6, circle, 0.375, 1.0, 'x', procedural, 30},
         motion_case{"circle90px_3pxpf_1rps_x", 90, 2.6, circle, 0.375, 1.0, 'x', procedural, 30},
-        motion_case{"circle73px_3pxpf_1rps_y", 73, 2.6, circle, 0.375, 1.0, 'y', procedural, 30}),
+        motion_case{"circle73px_3pxpf_1rps_y", 73, 2.6, circle, 0.375, 1.0, 'y', procedural, 30},
+        motion_case{"circle_back73px_3pxpf_1rps_y", 73, 2.6, circle_back, 0.375, 1.0, 'y',
+                    procedural, 30},
+        motion_case{"circle_back90px_3pxpf_1rps_y_cones", 90, 2.6, circle_back, 0.375, 1.0, 'y',
+                    photo, 30}),
     case_name);
 
 // Held out, round 28: written before they were run, for a key taken only
