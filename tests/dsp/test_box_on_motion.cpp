@@ -1140,8 +1140,9 @@ INSTANTIATE_TEST_SUITE_P(
 // 120 px ball circling at 1 px a frame over cones is keyed 109 px wide and
 // its box stays 10-13 px narrow, 2-6 px off (3.80 / 5.74 px; 2.81 / 6.52
 // before the drift rule); the 70 px ball circling over venus keeps a box
-// 7-9 px narrow, 2-7 px left of it (4.04 / 9.21 px; not traced, the dark
-// frame as the 100 px circle's above).
+// 7-9 px narrow, 2-7 px left of it (4.04 / 9.21 px): traced, no
+// difference ever holds its right rim (extents 61-67 px wide), as the
+// 100 px circle's above.
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
     ::testing::Values(motion_case{"heldout6_circle100px_1pxpf_venus", 100, 2.6, circle, 0.125, 0.0,
