@@ -169,10 +169,10 @@ int bounded_shift(span both, span key, int shift, bool* bounded);
 // hull less that growth at its trailing end (not under the key's box). The
 // hull alone held where a 73 px ball circling at 3 px a pair was at the
 // key: it drifted 1 px a pair across, and its box grew to 87 px, 7 px off
-// centre. Either reading alone misleads: a key's
-// box short at one end moves the silhouette's centre (a 120 px ball keyed
-// 109 px wide), and a texture turning into one pole first grows Dif(key, t)
-// there (a 185 px ball spinning 3 rev/s, its box 4-6 px short).
+// centre. Either reading alone misleads: a key's box short at one end moves
+// the silhouette's centre (a 120 px ball keyed 109 px wide), and a texture
+// turning into one pole first grows Dif(key, t) there (a 185 px ball
+// spinning 3 rev/s, its box 4-6 px short).
 span outline_key_axis(span both, span key, int size, bool across, span first, int toward);
 
 // A size moved towards `target` by at most max(1, larger of the two / 8),

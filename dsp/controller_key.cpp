@@ -273,14 +273,13 @@ void controller::impl::follow_outline_key(track_motion seen, uint64_t* cycles,
 // min_shift px (outline_key_axis); both kept on a pair without a silhouette.
 void controller::impl::judge_across(track_motion seen, box silhouette) {
     if (!seen.outlined) return;
-    const centre_gap moved = centre_offset2(silhouette, key.object());
-    const int move_x = moved.x2 / 2, move_y = moved.y2 / 2;
+    const box k = key.object();
+    const int x2 = silhouette.center_x2() - k.center_x2();  // half pixels
+    const int y2 = silhouette.center_y2() - k.center_y2();
+    const int move_x = abs_int(x2) / 2, move_y = abs_int(y2) / 2;
     if (2 * move_y <= move_x && move_x >= key_frame::min_shift) outline_key_across = 'y';
     if (2 * move_x <= move_y && move_y >= key_frame::min_shift) outline_key_across = 'x';
-    const box k = key.object();
-    const int across2 = outline_key_across == 'x'   ? silhouette.center_x2() - k.center_x2()
-                        : outline_key_across == 'y' ? silhouette.center_y2() - k.center_y2()
-                                                    : 0;
+    const int across2 = outline_key_across == 'x' ? x2 : outline_key_across == 'y' ? y2 : 0;
     outline_key_drift = across2 >= 2 * key_frame::min_shift    ? 1
                         : across2 <= -2 * key_frame::min_shift ? -1
                                                                : 0;
