@@ -134,8 +134,10 @@ struct controller::impl {
     struct key_axis {
         bool unfit = false;      // the key's box did not outline the object there
         bool has_first = false;  // `first` holds the object's outline there
-        span first;              // Dif(key, t)'s extent at the key's first pair
-        int last = 0;            // the displacement read on the last pair
+        // Dif(key, t)'s extent at the key's first pair (a key of the outline's:
+        // at its first pair that held the key's box there, first_outline)
+        span first;
+        int last = 0;  // the displacement read on the last pair
     };
     key_axis key_x, key_y;
     bool key_first_seen = false;   // Dif(key, t) found since the key was taken
@@ -199,6 +201,7 @@ struct controller::impl {
     bool track_object(uint64_t* cycles, sdram_traffic* traffic, track_motion* seen);
     void follow_slow_object(track_motion seen, uint64_t* cycles, sdram_traffic* traffic);
     void follow_outline_key(track_motion seen, uint64_t* cycles, sdram_traffic* traffic);
+    span first_outline(key_axis& axis, span both, span key_box);
     void judge_across(track_motion seen, box silhouette);
     void take_outline_key(uint64_t* cycles, sdram_traffic* traffic);
     void take_key(uint64_t* cycles, sdram_traffic* traffic,

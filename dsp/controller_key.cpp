@@ -244,15 +244,12 @@ void controller::impl::follow_outline_key(track_motion seen, uint64_t* cycles,
     // Under half the key's box: a part of the object changed, not its outline.
     if (2 * u.bbox.width < k.width || 2 * u.bbox.height < k.height) return;
     const int size_x = max_int(s.width, k.width), size_y = max_int(s.height, k.height);
-    if (!key_first_seen) {
-        key_first_seen = true;
-        key_x.first = x_span(u.bbox);
-        key_y.first = y_span(u.bbox);
-    }
+    const span first_x = first_outline(key_x, x_span(u.bbox), x_span(k));
+    const span first_y = first_outline(key_y, y_span(u.bbox), y_span(k));
     box b = from_spans(outline_key_axis(x_span(u.bbox), x_span(k), size_x,
-                                        outline_key_across == 'x', key_x.first, outline_key_drift),
+                                        outline_key_across == 'x', first_x, outline_key_drift),
                        outline_key_axis(y_span(u.bbox), y_span(k), size_y,
-                                        outline_key_across == 'y', key_y.first, outline_key_drift));
+                                        outline_key_across == 'y', first_y, outline_key_drift));
     b.x = max_int(0, min_int(b.x, width - b.width));
     b.y = max_int(0, min_int(b.y, height - b.height));
     if (!same_box(b, s)) {
@@ -263,6 +260,17 @@ void controller::impl::follow_outline_key(track_motion seen, uint64_t* cycles,
     if (max_int(key_reach(x_span(u.bbox), x_span(k)), key_reach(y_span(u.bbox), y_span(k))) >=
         key_frame::max_shift)
         take_outline_key(cycles, traffic);
+}
+
+// Dif(key, t)'s first extent on an axis that held the key's box there: a
+// partial one is the turning texture filling in, no place to drift from
+// (until then the extent itself: no drift read).
+span controller::impl::first_outline(key_axis& axis, span both, span key_box) {
+    if (!axis.has_first && holds_key_box(both, key_box)) {
+        axis.has_first = true;
+        axis.first = both;
+    }
+    return axis.has_first ? axis.first : both;
 }
 
 // The axis across the motion for a key of the outline: the one along which
