@@ -1,6 +1,8 @@
 // Stereo on the object box (the core's SAD match, its tiles, the edge
 // match), the disparity chosen, and the 3D point.
 #include "dsp/controller_impl.h"
+#include "dsp/object_depth.h"
+#include "dsp/stereo_reach.h"
 
 namespace dsp {
 
@@ -36,7 +38,9 @@ box object_core(box object) {
 // Stage stereo_sad: the object's core (the right pattern) along the same rows
 // (+-row_slack) of the left image over the depth range; a large
 // object's disparity is then its tiles' mean depth around the core's
-// (dsp/object_depth.h), the core's when too few tiles matched.
+// (dsp/object_depth.h), the core's when too few tiles matched. A tracked
+// box is then widened to where the object's disparity reaches past its
+// sides (dsp/stereo_reach.h).
 void controller::impl::stereo_sad(box object, bool outlined, frame_output& out) {
     stage_scope scope(*hardware, stage::stereo_sad, out);
     const box core = object_core(object);
@@ -48,21 +52,59 @@ void controller::impl::stereo_sad(box object, bool outlined, frame_output& out) 
     if (config.stereo.subpixel && out.sad_match.valid)
         scope.charge(cycles_of(cost::subpixel_profile()));
     if (!out.sad_match.valid || out.sad_at_range_end) return;
-    if (!object_is_tiled(object, config.surface)) return;
+    if (object_is_tiled(object, config.surface)) scope.charge(match_surface(object, outlined, out));
+    if (outlined) scope.charge(widen_to_stereo_reach(out));
+}
+
+// The tiled disparity of a large object (dsp/object_depth.h), its cycles.
+uint64_t controller::impl::match_surface(box object, bool outlined, frame_output& out) {
     const object_depth_result& r = out.surface =
         match_object_surface(history(0), left(), object, out.sad_match.disparity_q8, config.stereo,
                              config.rig, config.surface, outlined);
+    uint64_t cycles = 0;
     // Each tile a search of its own (the mean of their positions: they
     // differ only where the left image's border clips one).
     if (r.tiles > 0)
-        scope.charge(r.tiles * cycles_of(cost::sad_search_profile(r.tile_width, r.tile_height,
-                                                                  r.positions / r.tiles)));
-    if (config.stereo.subpixel) scope.charge(r.tiles * cycles_of(cost::subpixel_profile()));
+        cycles += r.tiles * cycles_of(cost::sad_search_profile(r.tile_width, r.tile_height,
+                                                               r.positions / r.tiles));
+    if (config.stereo.subpixel) cycles += r.tiles * cycles_of(cost::subpixel_profile());
     if (outlined)
-        scope.charge(
-            cycles_of(cost::surface_outline_profile(r.rows * r.tile_height, r.columns, r.inside)));
-    scope.charge(cycles_of(cost::surface_mean_profile(r.inside, r.matched)));
+        cycles +=
+            cycles_of(cost::surface_outline_profile(r.rows * r.tile_height, r.columns, r.inside));
+    cycles += cycles_of(cost::surface_mean_profile(r.inside, r.matched));
     if (r.valid) out.sad_match.disparity_q8 = r.disparity_q8;
+    return cycles;
+}
+
+// A side no difference outlines (it does not move, or fades into what it
+// passes) is still where the object's disparity ends: the reported box is
+// widened there, at most half its width a side. The tracker's box is not:
+// handed to it, the wider box was placed by the difference rules from its
+// other edge, and walked off the object (docs/firmware.md).
+uint64_t controller::impl::widen_to_stereo_reach(frame_output& out) {
+    const box b = out.box_right;
+    const int32_t d_q8 = out.sad_match.disparity_q8;
+    const stereo_reach_params params;
+    const box core = object_core(b);
+    object_match match;
+    match.disparity = (d_q8 + 128) >> 8;
+    match.spread = surface_spread_px(d_q8, max_int(b.width, b.height), config.rig);
+    match.sad_per_pixel_q8 =
+        static_cast<uint32_t>((uint64_t{out.sad_match.sad} << 8) /
+                              static_cast<uint64_t>(max_int(1, core.width * core.height)));
+    const stereo_reach r =
+        reach_past_sides(history(0), left(), b, match, b.width / 2, config.stereo, params);
+    uint64_t cycles = 0;
+    if (r.tiles > 0)
+        cycles += r.tiles * cycles_of(cost::sad_search_profile(
+                                params.tile_width, params.band_height, r.positions / r.tiles));
+    if (r.split_columns > 0)
+        cycles += cycles_of(cost::sad_search_profile(r.split_columns, params.band_height, 3));
+    if (r.left == 0 && r.right == 0) return cycles;
+    const int x = max_int(0, b.x - r.left);
+    const box widened{x, b.y, min_int(width, b.right() + r.right) - x, b.height};
+    out.box_right = widened;
+    return cycles;
 }
 
 // Stage stereo_edge: Sobel on a band of the pattern's rows of both images

@@ -17,15 +17,6 @@ int tiles_along(int length, const object_depth_params& params) {
     return std::max(1, std::min(per_side, length / params.min_tile_side));
 }
 
-// The disparity span, px, of an object as deep as it is wide around the
-// core's disparity (see the header), plus two pixels of sub-pixel margin.
-int surface_spread_px(int32_t core_q8, int side, const camera_rig& rig) {
-    const int64_t true_q8 = core_q8 - rig.principal_offset_q8();
-    const int64_t focal_q8 = rig.focal_px_q8();
-    if (true_q8 <= 0 || focal_q8 <= 0) return 2;
-    return static_cast<int>(true_q8 * side / (2 * focal_q8)) + 2;
-}
-
 // A tile matched on the object has a SAD near the object's other tiles'; one
 // of background in the object's range (its true minimum lies outside it)
 // is far above (measured on the 320 px ball: 0.2-1.5 a pixel on the ball
@@ -84,6 +75,13 @@ int clip_to_tile(const row_span* object_rows, box tile, row_span* spans) {
 }
 
 }  // namespace
+
+int surface_spread_px(int32_t core_q8, int side, const camera_rig& rig) {
+    const int64_t true_q8 = core_q8 - rig.principal_offset_q8();
+    const int64_t focal_q8 = rig.focal_px_q8();
+    if (true_q8 <= 0 || focal_q8 <= 0) return 2;
+    return static_cast<int>(true_q8 * side / (2 * focal_q8)) + 2;
+}
 
 bool object_is_tiled(box object, const object_depth_params& params) {
     return object.width >= params.min_object_side || object.height >= params.min_object_side;

@@ -90,6 +90,11 @@ struct object_depth_result {
     int rows = 0;
 };
 
+// The disparity span, px, of an object `side` px wide as deep as it is wide
+// around the core's disparity (spread, above), plus two pixels of sub-pixel
+// margin.
+int surface_spread_px(int32_t core_q8, int side, const camera_rig& rig);
+
 // Whether `object` is large enough to be tiled.
 bool object_is_tiled(box object, const object_depth_params& params);
 

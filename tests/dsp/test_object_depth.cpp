@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "dsp/object_depth.h"
+#include "tests/support/layer_texture.h"
 
 namespace {
 
@@ -24,16 +25,7 @@ struct pair_images {
     dsp::gray_cplane left_view() const { return {left.data(), width, height, width}; }
 };
 
-uint8_t texture(int layer, int x, int y) {
-    // A fixed pseudo-random value per layer and right-image pixel.
-    // Unsigned arithmetic: wraps, where int products would overflow.
-    uint32_t h = static_cast<uint32_t>(layer) * 73856093u ^ static_cast<uint32_t>(x) * 19349663u ^
-                 static_cast<uint32_t>(y) * 83492791u;
-    h ^= h >> 13;
-    h *= 0x5bd1e995u;
-    h ^= h >> 15;
-    return static_cast<uint8_t>(h & 0xff);
-}
+using test_support::layer_texture;
 
 // Right (x, y) shows the layer there; left (x, y) shows the layer whose
 // right-image point x - d lands on it (the object in front of the background).
@@ -45,11 +37,12 @@ pair_images make_pair() {
     };
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
-            p.right[y * width + x] = on_object(x, y) ? texture(1, x, y) : texture(0, x, y);
+            p.right[y * width + x] =
+                on_object(x, y) ? layer_texture(1, x, y) : layer_texture(0, x, y);
             const int x_near = x - near_half, x_far = x - far_half;
-            uint8_t v = texture(0, x - background, y);
-            if (on_object(x_near, y) && x_near < split) v = texture(1, x_near, y);
-            if (on_object(x_far, y) && x_far >= split) v = texture(1, x_far, y);
+            uint8_t v = layer_texture(0, x - background, y);
+            if (on_object(x_near, y) && x_near < split) v = layer_texture(1, x_near, y);
+            if (on_object(x_far, y) && x_far >= split) v = layer_texture(1, x_far, y);
             p.left[y * width + x] = v;
         }
     }
@@ -150,10 +143,13 @@ pair_images make_disc_pair(int disparity, int wall, int wall_contrast_shift = 0)
     const double cx = object.x + 0.5 * object.width, cy = object.y + 0.5 * object.height;
     const double radius = 0.5 * object.width;
     auto on_disc = [&](int x, int y) { return std::hypot(x + 0.5 - cx, y + 0.5 - cy) <= radius; };
-    auto faint = [](int x, int y) { return static_cast<uint8_t>(120 + texture(1, x, y) / 16); };
+    auto faint = [](int x, int y) {
+        return static_cast<uint8_t>(120 + layer_texture(1, x, y) / 16);
+    };
     // The wall's texture around mid-grey, its contrast divided by 2^shift.
     auto wall_at = [&](int x, int y) {
-        return static_cast<uint8_t>(128 + (texture(0, x, y) - 128) / (1 << wall_contrast_shift));
+        return static_cast<uint8_t>(128 +
+                                    (layer_texture(0, x, y) - 128) / (1 << wall_contrast_shift));
     };
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {

@@ -1,0 +1,166 @@
+#include "dsp/stereo_reach.h"
+
+#include <cstdint>
+#include <cstdlib>
+
+#include "dsp/int_bounds.h"
+
+namespace dsp {
+
+namespace {
+
+uint32_t min_u32(uint32_t a, uint32_t b) {
+    return a < b ? a : b;
+}
+
+// One side's band of columns in the image whose camera sees past that side
+// (`ref`), matched in the other image at column x + sign * d, counted by
+// distance from `start` outwards (`dir`).
+struct side_probe {
+    gray_cplane ref, other;
+    int sign;   // +1: ref is the right image; -1: the left one
+    int start;  // the first column read outwards (dir +1), or one past it (dir -1)
+    int dir;
+    int band_y, band_height;
+
+    int column(int distance) const { return dir < 0 ? start - 1 - distance : start + distance; }
+    bool in_ref(int from, int to) const {
+        const int a = column(from), b = column(to - 1);
+        return min_int(a, b) >= 0 && max_int(a, b) < ref.width;
+    }
+    // Columns [from, to) by distance inside ref, and inside `other` at d.
+    bool fits(int from, int to, int d) const {
+        const int a = column(from), b = column(to - 1);
+        const int lo = min_int(a, b), hi = max_int(a, b);
+        return lo >= 0 && hi < ref.width && lo + sign * d >= 0 && hi + sign * d < other.width;
+    }
+    uint32_t sad(int distance, int d) const {
+        const int x = column(distance), xo = x + sign * d;
+        uint32_t sum = 0;
+        for (int y = band_y; y < band_y + band_height; ++y)
+            sum += static_cast<uint32_t>(std::abs(ref.at(x, y) - other.at(xo, y)));
+        return sum;
+    }
+    uint32_t tile_sad(int from, int width, int d) const {
+        uint32_t sum = 0;
+        for (int j = from; j < from + width; ++j) sum += sad(j, d);
+        return sum;
+    }
+};
+
+struct tile_reading {
+    bool object = false;
+    int positions = 0;
+    int d_in = -1;   // its best disparity within the object's span (-1: none searched)
+    int d_out = -1;  // ... and elsewhere
+};
+
+// Whether the tile of columns [from, from + width) matches clearly at the
+// object's disparity (see the header).
+tile_reading read_tile(const side_probe& p, int from, const object_match& match, uint64_t gate,
+                       const stereo_params& search, const stereo_reach_params& params) {
+    tile_reading t;
+    uint32_t best_in = UINT32_MAX, best_out = UINT32_MAX;
+    for (int d = search.min_disparity; d <= search.max_disparity; ++d) {
+        if (!p.fits(from, from + params.tile_width, d)) continue;
+        const uint32_t s = p.tile_sad(from, params.tile_width, d);
+        ++t.positions;
+        const bool in = std::abs(d - match.disparity) <= match.spread;
+        uint32_t& best = in ? best_in : best_out;
+        if (s < best) {
+            best = s;
+            (in ? t.d_in : t.d_out) = d;
+        }
+    }
+    t.object = best_in <= gate && best_out != UINT32_MAX &&
+               static_cast<uint64_t>(best_in) * params.clear_den <
+                   static_cast<uint64_t>(best_out) * params.clear_num;
+    return t;
+}
+
+// Where the object ends between distances `from` and `to`: the split whose
+// columns nearer the box match best at d_in and the others as background,
+// a column of background costing its SAD at d_out, at most column_gate.
+int split_at(const side_probe& p, int from, int to, int d_in, int d_out, uint32_t column_gate) {
+    auto background = [&](int j) { return min_u32(p.sad(j, d_out), column_gate); };
+    uint32_t cost = 0;  // all of [from, to) read as background
+    for (int j = from; j < to; ++j) cost += background(j);
+    uint32_t best = cost;
+    int at = from;
+    for (int j = from; j < to; ++j) {  // column j moved to the object
+        cost = cost - background(j) + p.sad(j, d_in);
+        if (cost < best) {
+            best = cost;
+            at = j + 1;
+        }
+    }
+    return at;
+}
+
+struct object_end {
+    int distance = -1;  // from the probe's start to the object's end (-1: no tile the object's)
+    int disparity = 0;  // the last object tile's best disparity (the rim's)
+};
+
+// Tiles outwards while they are the object's; the object's end is then
+// split between the last of them and the first that is not.
+object_end find_end(const side_probe& p, const object_match& match, int max_distance,
+                    uint32_t gate_q8, const stereo_params& search,
+                    const stereo_reach_params& params, stereo_reach* r) {
+    const int w = params.tile_width;
+    const uint64_t tile_gate = (uint64_t{gate_q8} * w * params.band_height) >> 8;
+    const uint32_t column_gate =
+        static_cast<uint32_t>((uint64_t{gate_q8} * params.band_height) >> 8);
+    object_end end;
+    for (int k = 0; k * params.step < max_distance; ++k) {
+        const int from = k * params.step;
+        if (!p.in_ref(from, from + w)) break;
+        const tile_reading t = read_tile(p, from, match, tile_gate, search, params);
+        ++r->tiles;
+        r->positions += t.positions;
+        if (t.object) {
+            end.distance = from + w;
+            end.disparity = t.d_in;
+            continue;
+        }
+        if (end.distance < 0 || t.d_out < 0 || !p.fits(from - params.step, from + w, end.disparity))
+            break;
+        r->split_columns += params.step + w;
+        end.distance =
+            split_at(p, from - params.step, from + w, end.disparity, t.d_out, column_gate);
+        break;
+    }
+    return end;
+}
+
+}  // namespace
+
+stereo_reach reach_past_sides(gray_cplane right, gray_cplane left, box object,
+                              const object_match& match, int max_reach, const stereo_params& search,
+                              const stereo_reach_params& params) {
+    stereo_reach r;
+    const int band_y = object.y + (object.height - params.band_height) / 2;
+    if (object.empty() || band_y < 0 || band_y + params.band_height > right.height ||
+        right.height != left.height)
+        return r;
+    const uint32_t gate_q8 =
+        params.gate_factor * match.sad_per_pixel_q8 + params.gate_floor_per_pixel * 256u;
+    // Both probes start `inset` px inside the box, on the object where the
+    // box is short of it.
+    const int inset = match.spread;
+    const int max_distance = inset + max_reach + match.spread + params.tile_width;
+    // Left of the object: the right camera sees past it (x + d in the left).
+    const side_probe left_side{right, left, +1, object.x + inset, -1, band_y, params.band_height};
+    const object_end l = find_end(left_side, match, max_distance, gate_q8, search, params, &r);
+    if (l.distance >= 0) r.left = max_int(0, min_int(max_reach, l.distance - inset));
+    // Right of it: the left camera (x - d in the right); its end there,
+    // less the rim's disparity, is the end in the right image.
+    const int start = object.right() + match.disparity - inset;
+    const side_probe right_side{left, right, -1, start, +1, band_y, params.band_height};
+    const object_end e = find_end(right_side, match, max_distance, gate_q8, search, params, &r);
+    if (e.distance >= 0)
+        r.right = max_int(0, min_int(max_reach, start + e.distance - e.disparity - object.right()));
+    return r;
+}
+
+}  // namespace dsp

@@ -1,0 +1,79 @@
+// How far an object reaches past its box's left and right sides, read from
+// the stereo pair rather than from the differences.
+//
+// A side of an object that does not move in the image is outlined by no
+// difference: a ball coming nearer while it moves right grows at its left
+// as fast as it goes right, so its left rim stands still (held-out round
+// 25's 120 px ball over kodim19: 0.2-0.3 px a frame; its box 23-31 px
+// narrow for its whole run), and a trailing rim the colour of what it
+// passes fades from both differences (round 26's 100 px ball over teddy's
+// dark box, 13 px short). The stereo pair still outlines it: the object
+// stands nearer than what is behind it, so a tile of the object matches
+// in the left image at the object's disparity, a tile of background at
+// its own (round 25 at frame 12: 8 x 16 px tiles left of the box matched
+// at 43-46 px on the ball, 19 px on the background, the rim's tile at 43).
+//
+// Computes, per side, tiles of tile_width x band_height px on the box's
+// centre rows (a round object's widest chord), the first just outside the
+// side and each next one `step` px further, as long as a tile is the
+// object's:
+//   SAD(d) over the search's disparities (the tile inside the left image),
+//   the tile's: min over |d - d_object| <= spread  <  clear_num / clear_den
+//               x min over the other disparities,
+//   and at most gate_factor x the object's SAD a pixel + gate_floor_per_pixel
+//   a pixel of the tile
+// (a flat tile of background matches about equally everywhere, and is not
+// taken; background right of the object is hidden from the left camera for
+// d_object - d_background px, matches nowhere, and fails the gate). Where
+// a tile is not, the object ends between it and the last tile that was:
+// each column of the two is read at the last one's best disparity (the
+// object's) and at its own best elsewhere (what is behind, its SAD at most
+// the gate), and the end is the split with the least SAD, the columns
+// nearer the box the object's (a tile part object, part background is taken by whichever
+// has the stronger texture, so its middle misses the end by up to half a
+// tile). The reach is at most max_reach px; no tile the object's: 0.
+// d_object is the object's integer disparity (its core's), spread its
+// disparity span (object_depth.h).
+// Assumes: a rectified pair (the tile's rows only); the object nearer
+//   than its background by more than `spread`.
+// Costs: per tile a SAD search (dsp::cost::sad_search_cycles); per split
+//   its columns read at two disparities and summed once more (charged as a
+//   SAD search of split_columns x band_height at 3 positions).
+#pragma once
+
+#include "dsp/image.h"
+#include "dsp/stereo_sad.h"
+
+namespace dsp {
+
+struct stereo_reach_params {
+    int tile_width = 8;
+    int band_height = 16;
+    int step = 4;
+    int clear_num = 3;             // a tile is the object's when its minimum there is
+    int clear_den = 4;             // under clear_num / clear_den of the best elsewhere
+    int gate_factor = 4;           // ... and at most this x the object's SAD a pixel
+    int gate_floor_per_pixel = 4;  // ... plus this (object_depth.h's gate)
+};
+
+struct stereo_reach {
+    int left = 0;           // px the object reaches past the box's left side
+    int right = 0;          // ... past its right side
+    int tiles = 0;          // tiles searched
+    int positions = 0;      // SAD positions over all tiles (for the cost model)
+    int split_columns = 0;  // columns read where the object's end was split
+};
+
+// The object's stereo match: its integer disparity, its disparity span
+// (object_depth.h's spread) and its SAD a pixel (Q8, 256 = 1 grey level).
+struct object_match {
+    int disparity = 0;
+    int spread = 2;
+    uint32_t sad_per_pixel_q8 = 0;
+};
+
+stereo_reach reach_past_sides(gray_cplane right, gray_cplane left, box object,
+                              const object_match& match, int max_reach, const stereo_params& search,
+                              const stereo_reach_params& params);
+
+}  // namespace dsp

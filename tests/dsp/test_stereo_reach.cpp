@@ -1,0 +1,166 @@
+// How far an object reaches past its box's sides in the stereo pair
+// (dsp/stereo_reach.h), on synthetic pairs whose layout is known by
+// construction: an object at disparity 40 over columns [object_x0,
+// object_x1) in front of a background at disparity 10, each its own random
+// texture, or a flat background. The expected reach is the distance from
+// the given box's side to the object's, computed here.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "dsp/stereo_reach.h"
+#include "tests/support/layer_texture.h"
+
+namespace {
+
+constexpr int width = 320, height = 120;
+constexpr int object_disparity = 40, background_disparity = 10;
+constexpr int object_x0 = 100, object_x1 = 220, object_y0 = 20, object_y1 = 100;
+
+using test_support::layer_texture;
+
+struct pair_images {
+    std::vector<uint8_t> right, left;
+    dsp::gray_cplane right_view() const { return {right.data(), width, height, width}; }
+    dsp::gray_cplane left_view() const { return {left.data(), width, height, width}; }
+};
+
+bool on_object(int x, int y) {
+    return x >= object_x0 && x < object_x1 && y >= object_y0 && y < object_y1;
+}
+
+enum class backdrop { textured, flat, faint, periodic };
+
+// The period of the periodic backdrop: the object's disparity less the
+// background's, so that right of the object, where the left camera sees
+// no background, the right image's background matches the left image's at
+// the object's disparity.
+constexpr int period = object_disparity - background_disparity;
+
+// flat: the background one grey level (it matches everywhere); faint: a
+// texture of 6 grey levels (any two of its pixels within the gate's floor).
+pair_images make_pair(backdrop kind) {
+    pair_images p{std::vector<uint8_t>(width * height), std::vector<uint8_t>(width * height)};
+    auto back = [&](int x, int y) {
+        if (kind == backdrop::periodic)
+            return layer_texture(0, ((x % period) + period) % period, y);
+        return kind == backdrop::flat    ? uint8_t{90}
+               : kind == backdrop::faint ? static_cast<uint8_t>(88 + layer_texture(0, x, y) % 6)
+                                         : layer_texture(0, x, y);
+    };
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            p.right[y * width + x] = on_object(x, y) ? layer_texture(1, x, y) : back(x, y);
+            const int x_object = x - object_disparity;
+            p.left[y * width + x] = on_object(x_object, y) ? layer_texture(1, x_object, y)
+                                                           : back(x - background_disparity, y);
+        }
+    }
+    return p;
+}
+
+dsp::stereo_params depth_range_search() {
+    dsp::stereo_params s;
+    s.min_disparity = 0;
+    s.max_disparity = 80;
+    return s;
+}
+
+// The object's match as the controller gives it: a spread of 3 px, a SAD
+// of 0 a pixel (the synthetic pair is noise-free: the gate is its floor).
+dsp::object_match at_disparity(int d) {
+    dsp::object_match m;
+    m.disparity = d;
+    m.spread = 3;
+    return m;
+}
+
+dsp::stereo_reach reach(const pair_images& p, dsp::box b, int max_reach = 60) {
+    return dsp::reach_past_sides(p.right_view(), p.left_view(), b, at_disparity(object_disparity),
+                                 max_reach, depth_range_search(), dsp::stereo_reach_params{});
+}
+
+TEST(StereoReach, ABoxShortAtBothSidesReachesTheObjectsSides) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::box narrow{object_x0 + 24, object_y0, 120 - 24 - 13, 80};  // 24 and 13 px short
+    const dsp::stereo_reach r = reach(p, narrow);
+    EXPECT_NEAR(r.left, 24, 2);
+    EXPECT_NEAR(r.right, 13, 2);
+    // The tiles wholly on the object (5 left, 2 right), a part-object one
+    // either way, and the first not the object's a side, each over the depth
+    // range (81 disparities); both ends split.
+    EXPECT_GE(r.tiles, 9);
+    EXPECT_LE(r.tiles, 11);
+    EXPECT_EQ(r.positions, 81 * r.tiles);
+    EXPECT_EQ(r.split_columns, 2 * 12);
+}
+
+TEST(StereoReach, ABoxOnTheObjectsSidesReachesNoFurther) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::stereo_reach r = reach(p, dsp::box{object_x0, object_y0, 120, 80});
+    EXPECT_LE(r.left, 2);
+    EXPECT_LE(r.right, 2);
+    EXPECT_EQ(r.tiles, 2);  // the first tile past each side is background
+}
+
+TEST(StereoReach, AFlatBackgroundIsNotTheObject) {
+    const pair_images p = make_pair(backdrop::flat);
+    const dsp::box narrow{object_x0 + 20, object_y0, 80, 80};
+    const dsp::stereo_reach r = reach(p, narrow);
+    EXPECT_NEAR(r.left, 20, 2);
+    EXPECT_NEAR(r.right, 20, 2);  // not on into the flat background
+}
+
+// Right of the object the background is hidden from the left camera for
+// 40 - 10 px: in the right image's tiles it matches nowhere, and a faint one
+// matches within the gate at the object's disparity too. Read from the left
+// image, which shows what lies past that side, it matches at its own.
+TEST(StereoReach, ABackgroundHiddenFromOneCameraIsReadFromTheOther) {
+    const pair_images p = make_pair(backdrop::faint);
+    const dsp::box narrow{object_x0 + 9, object_y0, 120 - 9 - 13, 80};
+    const dsp::stereo_reach r = reach(p, narrow);
+    EXPECT_NEAR(r.left, 9, 2);
+    EXPECT_NEAR(r.right, 13, 2);
+}
+
+// A background repeating every `period` px: right of the object the right
+// image's tiles match it at the object's disparity (40) and, within a
+// search up to 60 px, at no other but 10, where the left image shows the
+// object: they would read as the object's for the 30 px the left camera
+// cannot see. The left image's, past the object there, match at 10 and at
+// 40 alike, and are not taken.
+TEST(StereoReach, ARepeatingBackgroundHiddenFromOneCameraIsNotTheObject) {
+    const pair_images p = make_pair(backdrop::periodic);
+    dsp::stereo_params search = depth_range_search();
+    search.max_disparity = 60;
+    const dsp::box narrow{object_x0 + 9, object_y0, 120 - 9 - 13, 80};
+    const dsp::stereo_reach r =
+        dsp::reach_past_sides(p.right_view(), p.left_view(), narrow, at_disparity(object_disparity),
+                              60, search, dsp::stereo_reach_params{});
+    EXPECT_NEAR(r.left, 9, 2);
+    EXPECT_NEAR(r.right, 13, 2);
+}
+
+TEST(StereoReach, AtMostMaxReach) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::box narrow{object_x0 + 40, object_y0, 40, 80};
+    const dsp::stereo_reach r = reach(p, narrow, 10);
+    EXPECT_LE(r.left, 10);
+    EXPECT_GE(r.left, 6);
+    EXPECT_LE(r.right, 10);
+    EXPECT_GE(r.right, 6);
+}
+
+TEST(StereoReach, AnObjectAtTheBackgroundsDisparityIsNotWidened) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::box narrow{object_x0 + 24, object_y0, 60, 80};
+    // Asked at the background's disparity: the object's tiles match elsewhere.
+    const dsp::stereo_reach r = dsp::reach_past_sides(
+        p.right_view(), p.left_view(), narrow, at_disparity(background_disparity), 60,
+        depth_range_search(), dsp::stereo_reach_params{});
+    EXPECT_EQ(r.left, 0);
+    EXPECT_EQ(r.right, 0);
+}
+
+}  // namespace
