@@ -14,24 +14,29 @@
 // at 43-46 px on the ball, 19 px on the background, the rim's tile at 43).
 //
 // Computes, per side, tiles of tile_width x band_height px on the box's
-// centre rows (a round object's widest chord), the first just outside the
-// side and each next one `step` px further, as long as a tile is the
-// object's:
-//   SAD(d) over the search's disparities (the tile inside the left image),
+// centre rows (a round object's widest chord), read in the image whose
+// camera sees past that side: left of the object the right image (matched
+// at x + d in the left), right of it the left image (at x - d in the
+// right; there the right camera's background is hidden by the object for
+// d_object - d_background px, and matches nowhere). The first tile starts
+// `spread` px inside the box's side (the right side's at x + d_object in
+// the left image), each next one `step` px further out, as long as a tile
+// is the object's:
+//   SAD(d) over the search's disparities (the tile inside both images),
 //   the tile's: min over |d - d_object| <= spread  <  clear_num / clear_den
 //               x min over the other disparities,
 //   and at most gate_factor x the object's SAD a pixel + gate_floor_per_pixel
 //   a pixel of the tile
 // (a flat tile of background matches about equally everywhere, and is not
-// taken; background right of the object is hidden from the left camera for
-// d_object - d_background px, matches nowhere, and fails the gate). Where
-// a tile is not, the object ends between it and the last tile that was:
-// each column of the two is read at the last one's best disparity (the
-// object's) and at its own best elsewhere (what is behind, its SAD at most
-// the gate), and the end is the split with the least SAD, the columns
-// nearer the box the object's (a tile part object, part background is taken by whichever
-// has the stronger texture, so its middle misses the end by up to half a
-// tile). The reach is at most max_reach px; no tile the object's: 0.
+// taken). Where a tile is not, the object ends between it and the last
+// tile that was: each column of the two is read at the last one's best
+// disparity (the object's, the rim's) and at its own best elsewhere (what
+// is behind, its SAD at most the gate), and the end is the split with the
+// least SAD, the columns nearer the box the object's (a tile part object,
+// part background is taken by whichever has the stronger texture, so its
+// middle misses the end by up to half a tile). The right side's end is
+// brought back to the right image at the rim's disparity. The reach is
+// from the box's side, 0 to max_reach px; no tile the object's: 0.
 // d_object is the object's integer disparity (its core's), spread its
 // disparity span (object_depth.h).
 // Assumes: a rectified pair (the tile's rows only); the object nearer

@@ -2,8 +2,9 @@
 // (dsp/stereo_reach.h), on synthetic pairs whose layout is known by
 // construction: an object at disparity 40 over columns [object_x0,
 // object_x1) in front of a background at disparity 10, each its own random
-// texture, or a flat background. The expected reach is the distance from
-// the given box's side to the object's, computed here.
+// texture (the background also flat, faint or repeating). The expected
+// reach is the distance from the given box's side to the object's,
+// computed here.
 #include <gtest/gtest.h>
 
 #include <cstdint>
