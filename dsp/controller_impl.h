@@ -261,7 +261,8 @@ struct controller::impl {
     box pull_box(const motion_extents& motion, box last, box found, bool hold_size) const;
     void stereo_sad(box object, bool outlined, frame_output& out);
     uint64_t match_surface(box object, bool outlined, frame_output& out);
-    uint64_t widen_to_stereo_reach(frame_output& out);
+    // core: the box's core, whose SAD match `out` holds.
+    uint64_t widen_to_stereo_reach(box core, frame_output& out);
     void stereo_edge(box object, frame_output& out);
     bool choose_disparity(frame_output& out) const;
     void xyz(box object, frame_output& out);

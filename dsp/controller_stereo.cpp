@@ -53,7 +53,7 @@ void controller::impl::stereo_sad(box object, bool outlined, frame_output& out) 
         scope.charge(cycles_of(cost::subpixel_profile()));
     if (!out.sad_match.valid || out.sad_at_range_end) return;
     if (object_is_tiled(object, config.surface)) scope.charge(match_surface(object, outlined, out));
-    if (outlined) scope.charge(widen_to_stereo_reach(out));
+    if (outlined) scope.charge(widen_to_stereo_reach(core, out));
 }
 
 // The tiled disparity of a large object (dsp/object_depth.h), its cycles.
@@ -81,11 +81,10 @@ uint64_t controller::impl::match_surface(box object, bool outlined, frame_output
 // widened there, at most half its width a side. The tracker's box is not:
 // handed to it, the wider box was placed by the difference rules from its
 // other edge, and walked off the object (docs/firmware.md).
-uint64_t controller::impl::widen_to_stereo_reach(frame_output& out) {
+uint64_t controller::impl::widen_to_stereo_reach(box core, frame_output& out) {
     const box b = out.box_right;
     const int32_t d_q8 = out.sad_match.disparity_q8;
     const stereo_reach_params params;
-    const box core = object_core(b);
     object_match match;
     match.disparity = (d_q8 + 128) >> 8;
     match.spread = surface_spread_px(d_q8, max_int(b.width, b.height), config.rig);
@@ -99,7 +98,7 @@ uint64_t controller::impl::widen_to_stereo_reach(frame_output& out) {
         cycles += r.tiles * cycles_of(cost::sad_search_profile(
                                 params.tile_width, params.band_height, r.positions / r.tiles));
     if (r.split_columns > 0)
-        cycles += cycles_of(cost::sad_search_profile(r.split_columns, params.band_height, 3));
+        cycles += cycles_of(cost::sad_search_profile(r.split_columns, params.band_height, 2));
     if (r.left == 0 && r.right == 0) return cycles;
     const int x = max_int(0, b.x - r.left);
     const box widened{x, b.y, min_int(width, b.right() + r.right) - x, b.height};

@@ -82,15 +82,14 @@ tile_reading read_tile(const side_probe& p, int from, const object_match& match,
 // columns nearer the box match best at d_in and the others as background,
 // a column of background costing its SAD at d_out, at most column_gate.
 int split_at(const side_probe& p, int from, int to, int d_in, int d_out, uint32_t column_gate) {
-    auto background = [&](int j) { return min_u32(p.sad(j, d_out), column_gate); };
-    uint32_t cost = 0;  // all of [from, to) read as background
-    for (int j = from; j < to; ++j) cost += background(j);
-    uint32_t best = cost;
+    // The cost of columns [from, at) read as the object's less as
+    // background: each column read once at each disparity.
+    int64_t gain = 0, best = 0;
     int at = from;
-    for (int j = from; j < to; ++j) {  // column j moved to the object
-        cost = cost - background(j) + p.sad(j, d_in);
-        if (cost < best) {
-            best = cost;
+    for (int j = from; j < to; ++j) {
+        gain += int64_t{p.sad(j, d_in)} - int64_t{min_u32(p.sad(j, d_out), column_gate)};
+        if (gain < best) {
+            best = gain;
             at = j + 1;
         }
     }

@@ -42,8 +42,8 @@
 // Assumes: a rectified pair (the tile's rows only); the object nearer
 //   than its background by more than `spread`.
 // Costs: per tile a SAD search (dsp::cost::sad_search_cycles); per split
-//   its columns read at two disparities and summed once more (charged as a
-//   SAD search of split_columns x band_height at 3 positions).
+//   its columns read at two disparities (charged as a SAD search of
+//   split_columns x band_height at 2 positions).
 #pragma once
 
 #include "dsp/image.h"
