@@ -78,7 +78,7 @@ uint64_t controller::impl::match_surface(box object, bool outlined, frame_output
 
 // A side no difference outlines (it does not move, or fades into what it
 // passes) is still where the object's disparity ends: the reported box is
-// widened there, at most half its width a side. The tracker's box is not:
+// widened there, at most half its size a side. The tracker's box is not:
 // handed to it, the wider box was placed by the difference rules from its
 // other edge, and walked off the object (docs/firmware.md).
 uint64_t controller::impl::widen_to_stereo_reach(box core, frame_output& out) {
@@ -93,15 +93,27 @@ uint64_t controller::impl::widen_to_stereo_reach(box core, frame_output& out) {
                               static_cast<uint64_t>(max_int(1, core.width * core.height)));
     const stereo_reach r =
         reach_past_sides(history(0), left(), b, match, b.width / 2, config.stereo, params);
-    uint64_t cycles = 0;
-    if (r.tiles > 0)
-        cycles += r.tiles * cycles_of(cost::sad_search_profile(
-                                params.tile_width, params.band_height, r.positions / r.tiles));
-    if (r.split_columns > 0)
-        cycles += cycles_of(cost::sad_search_profile(r.split_columns, params.band_height, 2));
-    if (r.left == 0 && r.right == 0) return cycles;
-    const int x = max_int(0, b.x - r.left);
-    const box widened{x, b.y, min_int(width, b.right() + r.right) - x, b.height};
+    const stereo_reach v =
+        reach_past_ends(history(0), left(), b, match, b.height / 2, config.stereo, params);
+    // Each tile a SAD search; each split's lines read at two disparities
+    // (a line a column of band_height px past a side, a row past an end).
+    auto searched = [&](const stereo_reach& reach, bool rows) {
+        const int along = params.tile_width, across = params.band_height;
+        uint64_t c = 0;
+        if (reach.tiles > 0)
+            c += reach.tiles *
+                 cycles_of(cost::sad_search_profile(rows ? across : along, rows ? along : across,
+                                                    reach.positions / reach.tiles));
+        if (reach.split_columns > 0)
+            c += cycles_of(cost::sad_search_profile(rows ? across : reach.split_columns,
+                                                    rows ? reach.split_columns : across, 2));
+        return c;
+    };
+    const uint64_t cycles = searched(r, false) + searched(v, true);
+    if (r.left == 0 && r.right == 0 && v.up == 0 && v.down == 0) return cycles;
+    const int x = max_int(0, b.x - r.left), y = max_int(0, b.y - v.up);
+    const box widened{x, y, min_int(width, b.right() + r.right) - x,
+                      min_int(height, b.bottom() + v.down) - y};
     out.box_right = widened;
     return cycles;
 }

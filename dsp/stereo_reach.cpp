@@ -13,32 +13,40 @@ uint32_t min_u32(uint32_t a, uint32_t b) {
     return a < b ? a : b;
 }
 
-// One side's band of columns in the image whose camera sees past that side
-// (`ref`), matched in the other image at column x + sign * d, counted by
-// distance from `start` outwards (`dir`).
+// One side's band of lines (columns past a left or right side, rows past
+// the top or bottom) in the image whose camera sees past that side (`ref`),
+// matched in the other image at column x + sign * d, counted by distance
+// from `start` outwards (`dir`).
 struct side_probe {
     gray_cplane ref, other;
     int sign;   // +1: ref is the right image; -1: the left one
-    int start;  // the first column read outwards (dir +1), or one past it (dir -1)
+    int start;  // the first line read outwards (dir +1), or one past it (dir -1)
     int dir;
-    int band_y, band_height;
+    int band_y, band_height;  // the band across the lines (its columns, reading rows)
+    bool rows = false;        // reads rows (above or below the object), not columns
 
     int column(int distance) const { return dir < 0 ? start - 1 - distance : start + distance; }
+    int lines() const { return rows ? ref.height : ref.width; }
     bool in_ref(int from, int to) const {
         const int a = column(from), b = column(to - 1);
-        return min_int(a, b) >= 0 && max_int(a, b) < ref.width;
+        return min_int(a, b) >= 0 && max_int(a, b) < lines();
     }
-    // Columns [from, to) by distance inside ref, and inside `other` at d.
+    // Lines [from, to) by distance inside ref, and inside `other` at d.
     bool fits(int from, int to, int d) const {
+        if (rows)
+            return in_ref(from, to) && band_y + sign * d >= 0 &&
+                   band_y + band_height + sign * d <= other.width;
         const int a = column(from), b = column(to - 1);
         const int lo = min_int(a, b), hi = max_int(a, b);
         return lo >= 0 && hi < ref.width && lo + sign * d >= 0 && hi + sign * d < other.width;
     }
     uint32_t sad(int distance, int d) const {
-        const int x = column(distance), xo = x + sign * d;
+        const int line = column(distance);
         uint32_t sum = 0;
-        for (int y = band_y; y < band_y + band_height; ++y)
-            sum += static_cast<uint32_t>(std::abs(ref.at(x, y) - other.at(xo, y)));
+        for (int a = band_y; a < band_y + band_height; ++a) {
+            const int x = rows ? a : line, y = rows ? line : a;
+            sum += static_cast<uint32_t>(std::abs(ref.at(x, y) - other.at(x + sign * d, y)));
+        }
         return sum;
     }
     uint32_t tile_sad(int from, int width, int d) const {
@@ -159,6 +167,31 @@ stereo_reach reach_past_sides(gray_cplane right, gray_cplane left, box object,
     const object_end e = find_end(right_side, match, max_distance, gate_q8, search, params, &r);
     if (e.distance >= 0)
         r.right = max_int(0, min_int(max_reach, start + e.distance - e.disparity - object.right()));
+    return r;
+}
+
+stereo_reach reach_past_ends(gray_cplane right, gray_cplane left, box object,
+                             const object_match& match, int max_reach, const stereo_params& search,
+                             const stereo_reach_params& params) {
+    stereo_reach r;
+    const int band_x = object.x + (object.width - params.band_height) / 2;
+    if (object.empty() || band_x < 0 || band_x + params.band_height > right.width ||
+        right.height != left.height)
+        return r;
+    const uint32_t gate_q8 =
+        params.gate_factor * match.sad_per_pixel_q8 + params.gate_floor_per_pixel * 256u;
+    const int inset = match.spread;
+    const int max_distance = inset + max_reach + match.spread + params.tile_width;
+    // Both read in the right image: along a column neither camera sees
+    // more of what is behind than the other.
+    const side_probe top{right, left, +1, object.y + inset, -1, band_x, params.band_height, true};
+    const object_end t = find_end(top, match, max_distance, gate_q8, search, params, &r);
+    if (t.distance >= 0) r.up = max_int(0, min_int(max_reach, t.distance - inset));
+    const int start = object.bottom() - inset;
+    const side_probe bottom{right, left, +1, start, +1, band_x, params.band_height, true};
+    const object_end b = find_end(bottom, match, max_distance, gate_q8, search, params, &r);
+    if (b.distance >= 0)
+        r.down = max_int(0, min_int(max_reach, start + b.distance - object.bottom()));
     return r;
 }
 

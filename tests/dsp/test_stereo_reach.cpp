@@ -164,4 +164,68 @@ TEST(StereoReach, AnObjectAtTheBackgroundsDisparityIsNotWidened) {
     EXPECT_EQ(r.right, 0);
 }
 
+dsp::stereo_reach reach_ends(const pair_images& p, dsp::box b, int max_reach = 40,
+                             int d = object_disparity) {
+    return dsp::reach_past_ends(p.right_view(), p.left_view(), b, at_disparity(d), max_reach,
+                                depth_range_search(), dsp::stereo_reach_params{});
+}
+
+TEST(StereoReachEnds, ABoxShortAtTopAndBottomReachesTheObjectsEnds) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::box low{object_x0, object_y0 + 12, 120, 80 - 12 - 9};  // 12 and 9 px short
+    const dsp::stereo_reach r = reach_ends(p, low);
+    EXPECT_NEAR(r.up, 12, 2);
+    EXPECT_NEAR(r.down, 9, 2);
+    EXPECT_EQ(r.left, 0);
+    EXPECT_EQ(r.right, 0);
+    // 16 columns x 8 rows a tile: over the rows from 3 px inside (the
+    // spread) to the object's end, a part-object one and the first of
+    // background each way; over the depth range (81 disparities); both split.
+    EXPECT_GE(r.tiles, 6);
+    EXPECT_LE(r.tiles, 9);
+    EXPECT_EQ(r.positions, 81 * r.tiles);
+    EXPECT_EQ(r.split_columns, 2 * 12);
+}
+
+TEST(StereoReachEnds, ABoxOnTheObjectsEndsReachesNoFurther) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::stereo_reach r = reach_ends(p, dsp::box{object_x0, object_y0, 120, 80});
+    EXPECT_LE(r.up, 2);
+    EXPECT_LE(r.down, 2);
+    EXPECT_EQ(r.tiles, 2);
+}
+
+TEST(StereoReachEnds, AFlatBackgroundIsNotTheObject) {
+    const pair_images p = make_pair(backdrop::flat);
+    const dsp::stereo_reach r = reach_ends(p, dsp::box{object_x0, object_y0 + 10, 120, 60});
+    EXPECT_NEAR(r.up, 10, 2);
+    EXPECT_NEAR(r.down, 10, 2);
+}
+
+// Read on the box's centre columns, not at its sides: a box whose left half
+// hangs off the object still reads the object's ends under its middle.
+TEST(StereoReachEnds, ReadOnTheBoxsCentreColumns) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::stereo_reach r = reach_ends(p, dsp::box{object_x0 - 50, object_y0 + 8, 120, 64});
+    EXPECT_NEAR(r.up, 8, 2);
+    EXPECT_NEAR(r.down, 8, 2);
+}
+
+TEST(StereoReachEnds, AtMostMaxReach) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::stereo_reach r = reach_ends(p, dsp::box{object_x0, object_y0 + 20, 120, 40}, 10);
+    EXPECT_LE(r.up, 10);
+    EXPECT_GE(r.up, 6);
+    EXPECT_LE(r.down, 10);
+    EXPECT_GE(r.down, 6);
+}
+
+TEST(StereoReachEnds, AnObjectAtTheBackgroundsDisparityIsNotWidened) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::stereo_reach r =
+        reach_ends(p, dsp::box{object_x0, object_y0 + 12, 120, 50}, 40, background_disparity);
+    EXPECT_EQ(r.up, 0);
+    EXPECT_EQ(r.down, 0);
+}
+
 }  // namespace
