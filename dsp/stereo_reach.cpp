@@ -89,13 +89,23 @@ tile_reading read_tile(const side_probe& p, int from, const object_match& match,
 // Where the object ends between distances `from` and `to`: the split whose
 // columns nearer the box match best at d_in and the others as background,
 // a column of background costing its SAD at d_out, at most column_gate.
-int split_at(const side_probe& p, int from, int to, int d_in, int d_out, uint32_t column_gate) {
+// Past an end a row is charged as the object's as clearly as a tile must
+// be (clear_num / clear_den): a flat background matches about as well at
+// d_in as at d_out, and with equal charges its noise carried the split
+// up to a tile past the object (held-out round 22's 130 px throw over
+// venus at pair 15: 5 rows, SAD 39-51 at d_in against 41-52 at d_out).
+// Past a side the charges stay equal: weighed so, the split stopped short
+// of the rim on many cases (docs/firmware.md).
+int split_at(const side_probe& p, int from, int to, int d_in, int d_out, uint32_t column_gate,
+             const stereo_reach_params& params) {
     // The cost of columns [from, at) read as the object's less as
     // background: each column read once at each disparity.
+    const int64_t background_weight = p.rows ? params.clear_num : params.clear_den;
     int64_t gain = 0, best = 0;
     int at = from;
     for (int j = from; j < to; ++j) {
-        gain += int64_t{p.sad(j, d_in)} - int64_t{min_u32(p.sad(j, d_out), column_gate)};
+        gain += int64_t{p.sad(j, d_in)} * params.clear_den -
+                int64_t{min_u32(p.sad(j, d_out), column_gate)} * background_weight;
         if (gain < best) {
             best = gain;
             at = j + 1;
@@ -134,7 +144,7 @@ object_end find_end(const side_probe& p, const object_match& match, int max_dist
             break;
         r->split_columns += params.step + w;
         end.distance =
-            split_at(p, from - params.step, from + w, end.disparity, t.d_out, column_gate);
+            split_at(p, from - params.step, from + w, end.disparity, t.d_out, column_gate, params);
         break;
     }
     return end;

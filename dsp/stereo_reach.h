@@ -33,11 +33,15 @@
 // tile that was: each column of the two is read at the last one's best
 // disparity (the object's, the rim's) and at its own best elsewhere (what
 // is behind, its SAD at most the gate), and the end is the split with the
-// least SAD, the columns nearer the box the object's (a tile part object,
-// part background is taken by whichever has the stronger texture, so its
-// middle misses the end by up to half a tile). The right side's end is
-// brought back to the right image at the rim's disparity. The reach is
-// from the box's side, 0 to max_reach px; no tile the object's: 0.
+// least SAD, the columns nearer the box the object's (past an end a row's
+// SAD as the object's weighed x clear_den, as background x clear_num, as
+// clearly as a tile must be, so that a row of flat background stays
+// background).
+// (A tile part object, part background is taken by whichever has the
+// stronger texture, so its middle misses the end by up to half a tile.)
+// The right side's end is brought back to the right image at the rim's
+// disparity. The reach is from the box's side, 0 to max_reach px; no tile
+// the object's: 0.
 // d_object is the object's integer disparity (its core's), spread its
 // disparity span (object_depth.h).
 // Assumes: a rectified pair (the tile's rows only); the object nearer
