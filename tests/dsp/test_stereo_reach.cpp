@@ -240,7 +240,7 @@ TEST(StereoReachEnds, AnObjectAtTheBackgroundsDisparityIsNotWidened) {
 // A flat wall under each camera's own noise matches about equally badly at
 // the object's disparity and elsewhere, row by row: charged as the
 // object's as readily as background, its noise carried the split 0-2 px
-// past an end (and 5-10 px past a side, where the charges stay equal:
+// past an end (and 1-10 px past a side, where the charges stay equal:
 // docs/firmware.md, "Open").
 TEST(StereoReachEnds, ANoisyFlatBackgroundIsNotTheObject) {
     const pair_images p = make_pair(backdrop::noisy);
