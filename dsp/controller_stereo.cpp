@@ -109,12 +109,22 @@ uint64_t controller::impl::widen_to_stereo_reach(box core, frame_output& out) {
                                                     rows ? reach.split_columns : across, 2));
         return c;
     };
-    const uint64_t cycles = searched(r, false) + searched(v, true);
-    if (r.left == 0 && r.right == 0 && v.up == 0 && v.down == 0) return cycles;
-    const int x = max_int(0, b.x - r.left), y = max_int(0, b.y - v.up);
-    const box widened{x, y, min_int(width, b.right() + r.right) - x,
-                      min_int(height, b.bottom() + v.down) - y};
-    out.box_right = widened;
+    // A side the object does not reach past may stand past the object:
+    // read inwards, at most a quarter of the box's size a side.
+    const stereo_reach s =
+        short_of_sides(history(0), left(), b, match, b.width / 4, config.stereo, params);
+    const stereo_reach e =
+        short_of_ends(history(0), left(), b, match, b.height / 4, config.stereo, params);
+    const uint64_t cycles =
+        searched(r, false) + searched(v, true) + searched(s, false) + searched(e, true);
+    auto moved = [](int reach, int short_by) { return reach > 0 ? reach : -short_by; };
+    const int out_left = moved(r.left, s.left), out_right = moved(r.right, s.right);
+    const int out_up = moved(v.up, e.up), out_down = moved(v.down, e.down);
+    if (out_left == 0 && out_right == 0 && out_up == 0 && out_down == 0) return cycles;
+    const int x = max_int(0, b.x - out_left), y = max_int(0, b.y - out_up);
+    const box moved_box{x, y, min_int(width, b.right() + out_right) - x,
+                        min_int(height, b.bottom() + out_down) - y};
+    out.box_right = moved_box;
     return cycles;
 }
 

@@ -58,6 +58,7 @@ struct side_probe {
 
 struct tile_reading {
     bool object = false;
+    bool background = false;  // clearly matched elsewhere than at the object's disparity
     int positions = 0;
     int d_in = -1;   // its best disparity within the object's span (-1: none searched)
     int d_out = -1;  // ... and elsewhere
@@ -83,6 +84,9 @@ tile_reading read_tile(const side_probe& p, int from, const object_match& match,
     t.object = best_in <= gate && best_out != UINT32_MAX &&
                static_cast<uint64_t>(best_in) * params.clear_den <
                    static_cast<uint64_t>(best_out) * params.clear_num;
+    t.background = best_out <= gate && best_in != UINT32_MAX &&
+                   static_cast<uint64_t>(best_out) * params.clear_den <
+                       static_cast<uint64_t>(best_in) * params.clear_num;
     return t;
 }
 
@@ -150,6 +154,55 @@ object_end find_end(const side_probe& p, const object_match& match, int max_dist
     return end;
 }
 
+// Tiles inwards from the box's side while they are clearly background; the
+// object then starts between the last of them and the first that is not,
+// split as an end is with the roles turned (background first).
+object_end find_start(const side_probe& p, const object_match& match, int max_distance,
+                      uint32_t gate_q8, const stereo_params& search,
+                      const stereo_reach_params& params, stereo_reach* r) {
+    const int w = params.tile_width;
+    const uint64_t tile_gate = (uint64_t{gate_q8} * w * params.band_height) >> 8;
+    const uint32_t column_gate =
+        static_cast<uint32_t>((uint64_t{gate_q8} * params.band_height) >> 8);
+    object_end start;
+    start.disparity = match.disparity;
+    int background_disparity = 0;
+    for (int k = 0; k * params.step < max_distance; ++k) {
+        const int from = k * params.step;
+        if (!p.in_ref(from, from + w)) break;
+        const tile_reading t = read_tile(p, from, match, tile_gate, search, params);
+        ++r->tiles;
+        r->positions += t.positions;
+        if (t.background) {
+            start.distance = from + w;
+            background_disparity = t.d_out;
+            continue;
+        }
+        if (start.distance < 0) break;
+        if (t.object) start.disparity = t.d_in;
+        if (!p.fits(from - params.step, from + w, background_disparity) ||
+            !p.fits(from - params.step, from + w, start.disparity))
+            break;
+        r->split_columns += params.step + w;
+        start.distance = split_at(p, from - params.step, from + w, background_disparity,
+                                  start.disparity, column_gate, params);
+        break;
+    }
+    return start;
+}
+
+// A band of band_height px on a round object's centre rows (columns) lies
+// within 1.4 px of its sides when the object is 3 bands across; on a
+// smaller one its rows past the object are background at every side.
+bool too_small_to_trim(box object, const stereo_reach_params& params) {
+    const int smallest = 3 * params.band_height;
+    return object.width < smallest || object.height < smallest;
+}
+
+uint32_t gate_of(const object_match& match, const stereo_reach_params& params) {
+    return params.gate_factor * match.sad_per_pixel_q8 + params.gate_floor_per_pixel * 256u;
+}
+
 }  // namespace
 
 stereo_reach reach_past_sides(gray_cplane right, gray_cplane left, box object,
@@ -202,6 +255,65 @@ stereo_reach reach_past_ends(gray_cplane right, gray_cplane left, box object,
     const object_end b = find_end(bottom, match, max_distance, gate_q8, search, params, &r);
     if (b.distance >= 0)
         r.down = max_int(0, min_int(max_reach, start + b.distance - object.bottom()));
+    return r;
+}
+
+stereo_reach short_of_sides(gray_cplane right, gray_cplane left, box object,
+                            const object_match& match, int max_trim, const stereo_params& search,
+                            const stereo_reach_params& params) {
+    stereo_reach r;
+    const int band_y = object.y + (object.height - params.band_height) / 2;
+    if (too_small_to_trim(object, params) || band_y < 0 ||
+        band_y + params.band_height > right.height || right.height != left.height)
+        return r;
+    const uint32_t gate_q8 = gate_of(match, params);
+    // Both probes start `outset` px outside the box: a tile from the side
+    // in takes in the object where the box is less than a tile too large,
+    // and is over the gate.
+    const int outset = params.step;
+    const int max_distance = outset + max_trim + params.tile_width;
+    // Inside the left side, the right image (its background seen past the
+    // object in the left one).
+    const side_probe left_side{right, left, +1, object.x - outset, +1, band_y, params.band_height};
+    const object_end l = find_start(left_side, match, max_distance, gate_q8, search, params, &r);
+    if (l.distance >= 0) r.left = max_int(0, min_int(max_trim, l.distance - outset));
+    // Inside the right side, the left image from the side's column there;
+    // the object's start, less its rim's disparity, brought to the right.
+    const int start = object.right() + match.disparity + outset;
+    const side_probe right_side{left, right, -1, start, -1, band_y, params.band_height};
+    object_end e = find_start(right_side, match, max_distance, gate_q8, search, params, &r);
+    if (e.distance < 0) return r;
+    // The rim's disparity, read on the tile just inside the object's start
+    // (a round object's rim stands farther than its core: a 320 px ball's
+    // 9 px less than the core's 80).
+    if (!right_side.in_ref(e.distance, e.distance + params.tile_width)) return r;
+    const uint64_t tile_gate = (uint64_t{gate_q8} * params.tile_width * params.band_height) >> 8;
+    const tile_reading rim = read_tile(right_side, e.distance, match, tile_gate, search, params);
+    ++r.tiles;
+    r.positions += rim.positions;
+    if (rim.d_in < 0) return r;
+    r.right = max_int(0, min_int(max_trim, object.right() - (start - e.distance - rim.d_in)));
+    return r;
+}
+
+stereo_reach short_of_ends(gray_cplane right, gray_cplane left, box object,
+                           const object_match& match, int max_trim, const stereo_params& search,
+                           const stereo_reach_params& params) {
+    stereo_reach r;
+    const int band_x = object.x + (object.width - params.band_height) / 2;
+    if (too_small_to_trim(object, params) || band_x < 0 ||
+        band_x + params.band_height > right.width || right.height != left.height)
+        return r;
+    const uint32_t gate_q8 = gate_of(match, params);
+    const int outset = params.step;
+    const int max_distance = outset + max_trim + params.tile_width;
+    const side_probe top{right, left, +1, object.y - outset, +1, band_x, params.band_height, true};
+    const object_end t = find_start(top, match, max_distance, gate_q8, search, params, &r);
+    if (t.distance >= 0) r.up = max_int(0, min_int(max_trim, t.distance - outset));
+    const int start = object.bottom() + outset;
+    const side_probe bottom{right, left, +1, start, -1, band_x, params.band_height, true};
+    const object_end b = find_start(bottom, match, max_distance, gate_q8, search, params, &r);
+    if (b.distance >= 0) r.down = max_int(0, min_int(max_trim, b.distance - outset));
     return r;
 }
 

@@ -101,4 +101,33 @@ stereo_reach reach_past_ends(gray_cplane right, gray_cplane left, box object,
                              const object_match& match, int max_reach, const stereo_params& search,
                              const stereo_reach_params& params);
 
+// How far the object stops short of the box's sides (short_of_sides) and
+// of its top and bottom (short_of_ends), in left, right, up and down: the
+// mirror of the reach. A ball going away leaves its box's trailing side
+// where it was larger, and no rule moved a side in (held-out round 30's
+// 120 px ball over cones: its box 4-13 px too wide). Tiles of the same
+// size, in the same image as the reach past that side, are read inwards
+// from `step` px outside the side (a tile from the side in would take in
+// the object where the box is less than a tile too large, and be over the
+// gate) while they are clearly background: their best match outside the
+// object's disparity span under clear_num / clear_den of their best within
+// it, and within the gate. The object then starts between the last of
+// them and the first that is not, split as an end is with the roles turned
+// (the lines nearer the side at the background's disparity, the others at
+// the next tile's, if it is the object's, else the object's). The right
+// side's start, found in the left image, is brought back to the right
+// image at the disparity of the tile just inside it: a round object's rim
+// stands farther than its core (a 320 px ball's right rim at 71 px where
+// its core matched at 80: brought back at 80, 9 px too many were taken
+// off). 0 to max_trim px; the first tile not
+// background: 0. A box under three bands (48 px) either way is not read:
+// a band on a smaller round object's centre rows runs off it at every side.
+// Costs: as the reach's, and the right rim's tile.
+stereo_reach short_of_sides(gray_cplane right, gray_cplane left, box object,
+                            const object_match& match, int max_trim, const stereo_params& search,
+                            const stereo_reach_params& params);
+stereo_reach short_of_ends(gray_cplane right, gray_cplane left, box object,
+                           const object_match& match, int max_trim, const stereo_params& search,
+                           const stereo_reach_params& params);
+
 }  // namespace dsp

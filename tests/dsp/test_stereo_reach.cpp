@@ -43,7 +43,9 @@ constexpr int period = object_disparity - background_disparity;
 // texture of 6 grey levels (any two of its pixels within the gate's floor);
 // noisy: one grey level under each camera's own noise of 8 levels (a flat
 // wall as a sensor sees it: it matches about equally badly everywhere).
-pair_images make_pair(backdrop kind) {
+// The object's first `noisy_rim` columns are such a wall too (a shaded rim
+// with no texture left).
+pair_images make_pair(backdrop kind, int noisy_rim = 0) {
     pair_images p{std::vector<uint8_t>(width * height), std::vector<uint8_t>(width * height)};
     auto back = [&](int x, int y) {
         if (kind == backdrop::periodic)
@@ -56,13 +58,18 @@ pair_images make_pair(backdrop kind) {
         return static_cast<uint8_t>(86 + layer_texture(2 + camera, x, y) % 8);
     };
     const bool noisy = kind == backdrop::noisy;
+    // The object's pixel at its column x_object, seen by `camera` at x.
+    auto object = [&](int camera, int x_object, int x, int y) {
+        return x_object < object_x0 + noisy_rim ? noise(camera, x, y)
+                                                : layer_texture(1, x_object, y);
+    };
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
-            p.right[y * width + x] = on_object(x, y) ? layer_texture(1, x, y)
+            p.right[y * width + x] = on_object(x, y) ? object(0, x, x, y)
                                      : noisy         ? noise(0, x, y)
                                                      : back(x, y);
             const int x_object = x - object_disparity;
-            p.left[y * width + x] = on_object(x_object, y) ? layer_texture(1, x_object, y)
+            p.left[y * width + x] = on_object(x_object, y) ? object(1, x_object, x, y)
                                     : noisy                ? noise(1, x, y)
                                                            : back(x - background_disparity, y);
         }
@@ -250,6 +257,101 @@ TEST(StereoReachEnds, ANoisyFlatBackgroundIsNotTheObject) {
         EXPECT_NEAR(r.up, short_by, 1) << short_by;
         EXPECT_NEAR(r.down, short_by, 1) << short_by;
     }
+}
+
+// How far the object stops short of a box too large for it
+// (short_of_sides, short_of_ends): the same tiles read inwards.
+dsp::stereo_reach short_of(const pair_images& p, dsp::box b, int max_trim = 30) {
+    return dsp::short_of_sides(p.right_view(), p.left_view(), b, at_disparity(object_disparity),
+                               max_trim, depth_range_search(), dsp::stereo_reach_params{});
+}
+
+dsp::stereo_reach short_of_ends(const pair_images& p, dsp::box b, int max_trim = 30) {
+    return dsp::short_of_ends(p.right_view(), p.left_view(), b, at_disparity(object_disparity),
+                              max_trim, depth_range_search(), dsp::stereo_reach_params{});
+}
+
+// Right of the object the left image is read (at x - d in the right): in
+// the right image the background there is hidden from the left camera by
+// the object, and matches nowhere.
+TEST(StereoShortOf, ABoxWideAtBothSidesStopsAtTheObjectsSides) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::box wide{object_x0 - 14, object_y0, 120 + 14 + 9, 80};  // 14 and 9 px wide
+    const dsp::stereo_reach r = short_of(p, wide);
+    EXPECT_NEAR(r.left, 14, 1);
+    EXPECT_NEAR(r.right, 9, 1);
+    EXPECT_EQ(r.up, 0);
+    EXPECT_EQ(r.down, 0);
+    // From 4 px outside each side in: the tiles wholly on background (4
+    // left, 3 right) and the first not (a part-object tile is over the
+    // gate), then the right rim's tile, over the depth range; both split.
+    EXPECT_EQ(r.tiles, 8);
+    EXPECT_EQ(r.positions, 81 * r.tiles);
+    EXPECT_EQ(r.split_columns, 2 * 12);
+}
+
+TEST(StereoShortOf, ABoxOnTheObjectsSidesIsNotMovedIn) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::stereo_reach r = short_of(p, dsp::box{object_x0, object_y0, 120, 80});
+    EXPECT_EQ(r.left, 0);
+    EXPECT_EQ(r.right, 0);
+    EXPECT_EQ(r.tiles, 2);  // the first tile inside each side is the object's
+}
+
+// A rim with no texture before a flat wall, each under its camera's own
+// noise, matches about as badly at the object's disparity as anywhere:
+// not clearly background, it is kept.
+TEST(StereoShortOf, AnUntexturedRimIsNotBackground) {
+    const pair_images p = make_pair(backdrop::noisy, 16);
+    const dsp::stereo_reach r = short_of(p, dsp::box{object_x0, object_y0, 120, 80});
+    EXPECT_EQ(r.left, 0);
+}
+
+// A round object's rim stands farther than its core: the right side's
+// start, found in the left image, is brought back at the disparity read on
+// the rim (here the object's 40 where the core read 43, within its spread).
+TEST(StereoShortOf, TheRightSideIsBroughtBackAtTheRimsDisparity) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::stereo_reach r = dsp::short_of_sides(
+        p.right_view(), p.left_view(), dsp::box{object_x0 - 14, object_y0, 143, 80},
+        at_disparity(object_disparity + 3), 30, depth_range_search(), dsp::stereo_reach_params{});
+    EXPECT_NEAR(r.left, 14, 1);
+    EXPECT_NEAR(r.right, 9, 1);
+}
+
+// A band of 16 rows on the centre rows of an object under 48 px may run off
+// it: such a box is not trimmed.
+TEST(StereoShortOf, ABoxUnderThreeBandsIsNotTrimmed) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::stereo_reach r = short_of(p, dsp::box{object_x0 - 14, object_y0 + 20, 143, 40});
+    EXPECT_EQ(r.left, 0);
+    EXPECT_EQ(r.right, 0);
+    EXPECT_EQ(r.tiles, 0);
+}
+
+TEST(StereoShortOf, AtMostMaxTrim) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::stereo_reach r = short_of(p, dsp::box{object_x0 - 30, object_y0, 180, 80}, 10);
+    EXPECT_EQ(r.left, 10);
+    EXPECT_EQ(r.right, 10);
+}
+
+TEST(StereoShortOfEnds, ABoxTallAtTopAndBottomStopsAtTheObjectsEnds) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::box tall{object_x0, object_y0 - 11, 120, 80 + 11 + 6};  // 11 and 6 px tall
+    const dsp::stereo_reach r = short_of_ends(p, tall);
+    EXPECT_NEAR(r.up, 11, 1);
+    EXPECT_NEAR(r.down, 6, 1);
+    EXPECT_EQ(r.left, 0);
+    EXPECT_EQ(r.right, 0);
+}
+
+TEST(StereoShortOfEnds, ABoxOnTheObjectsEndsIsNotMovedIn) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::stereo_reach r = short_of_ends(p, dsp::box{object_x0, object_y0, 120, 80});
+    EXPECT_EQ(r.up, 0);
+    EXPECT_EQ(r.down, 0);
+    EXPECT_EQ(r.tiles, 2);
 }
 
 }  // namespace
