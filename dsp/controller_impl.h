@@ -15,6 +15,7 @@
 #include "dsp/key_frame.h"
 #include "dsp/size_at_depth.h"
 #include "dsp/sobel.h"
+#include "dsp/stereo_reach.h"
 #include "dsp/stride_history.h"
 
 namespace dsp {
@@ -262,7 +263,13 @@ struct controller::impl {
     void stereo_sad(box object, bool outlined, frame_output& out);
     uint64_t match_surface(box object, bool outlined, frame_output& out);
     // core: the box's core, whose SAD match `out` holds.
-    uint64_t widen_to_stereo_reach(box core, frame_output& out);
+    uint64_t read_short_of(box core, const frame_output& out, stereo_reach* short_sides,
+                           stereo_reach* short_ends);
+    uint64_t widen_to_stereo_reach(box core, const stereo_reach& short_sides,
+                                   const stereo_reach& short_ends, frame_output& out);
+    uint64_t reach_cycles(const stereo_reach& reach, bool rows) const;
+    box moved_box(box b, const stereo_reach& sides, const stereo_reach& ends,
+                  const stereo_reach& short_sides, const stereo_reach& short_ends) const;
     void stereo_edge(box object, frame_output& out);
     bool choose_disparity(frame_output& out) const;
     void xyz(box object, frame_output& out);

@@ -52,8 +52,19 @@ void controller::impl::stereo_sad(box object, bool outlined, frame_output& out) 
     if (config.stereo.subpixel && out.sad_match.valid)
         scope.charge(cycles_of(cost::subpixel_profile()));
     if (!out.sad_match.valid || out.sad_at_range_end) return;
-    if (object_is_tiled(object, config.surface)) scope.charge(match_surface(object, outlined, out));
-    if (outlined) scope.charge(widen_to_stereo_reach(core, out));
+    // Where the object stops short of the box, read at the core's
+    // disparity, the tiled depth is read on the box moved in: the
+    // background its sides took in pulled the depth far (held-out round
+    // 25's 140 px ball going away, its box 4-7 px too large, 1.04 %).
+    stereo_reach short_sides, short_ends;
+    box surface = object;
+    if (outlined) {
+        scope.charge(read_short_of(core, out, &short_sides, &short_ends));
+        surface = moved_box(object, stereo_reach{}, stereo_reach{}, short_sides, short_ends);
+    }
+    if (object_is_tiled(surface, config.surface))
+        scope.charge(match_surface(surface, outlined, out));
+    if (outlined) scope.charge(widen_to_stereo_reach(core, short_sides, short_ends, out));
 }
 
 // The tiled disparity of a large object (dsp/object_depth.h), its cycles.
@@ -76,56 +87,81 @@ uint64_t controller::impl::match_surface(box object, bool outlined, frame_output
     return cycles;
 }
 
+namespace {
+
+// The object's match as the stereo reach reads it (dsp/stereo_reach.h).
+object_match match_of(const stereo_result& sad, box core, box b, const camera_rig& rig) {
+    object_match match;
+    match.disparity = (sad.disparity_q8 + 128) >> 8;
+    match.spread = surface_spread_px(sad.disparity_q8, max_int(b.width, b.height), rig);
+    match.sad_per_pixel_q8 = static_cast<uint32_t>(
+        (uint64_t{sad.sad} << 8) / static_cast<uint64_t>(max_int(1, core.width * core.height)));
+    return match;
+}
+
+}  // namespace
+
+// The cycles of a reach's tiles (each a SAD search) and of its splits'
+// lines read at two disparities (a line a column of band_height px past a
+// side, a row past an end).
+uint64_t controller::impl::reach_cycles(const stereo_reach& reach, bool rows) const {
+    const stereo_reach_params params;
+    const int along = params.tile_width, across = params.band_height;
+    uint64_t c = 0;
+    if (reach.tiles > 0)
+        c += reach.tiles *
+             cycles_of(cost::sad_search_profile(rows ? across : along, rows ? along : across,
+                                                reach.positions / reach.tiles));
+    if (reach.split_columns > 0)
+        c += cycles_of(cost::sad_search_profile(rows ? across : reach.split_columns,
+                                                rows ? reach.split_columns : across, 2));
+    return c;
+}
+
+// The box moved out where the object reaches past a side, else in where it
+// stops short of it.
+box controller::impl::moved_box(box b, const stereo_reach& sides, const stereo_reach& ends,
+                                const stereo_reach& short_sides,
+                                const stereo_reach& short_ends) const {
+    auto moved = [](int reach, int short_by) { return reach > 0 ? reach : -short_by; };
+    const int out_left = moved(sides.left, short_sides.left);
+    const int out_right = moved(sides.right, short_sides.right);
+    const int out_up = moved(ends.up, short_ends.up), out_down = moved(ends.down, short_ends.down);
+    const int x = max_int(0, b.x - out_left), y = max_int(0, b.y - out_up);
+    return box{x, y, min_int(width, b.right() + out_right) - x,
+               min_int(height, b.bottom() + out_down) - y};
+}
+
+// How far the object stops short of the box's sides and ends, at most a
+// quarter of its size a side, read at the core's disparity; its cycles.
+uint64_t controller::impl::read_short_of(box core, const frame_output& out,
+                                         stereo_reach* short_sides, stereo_reach* short_ends) {
+    const box b = out.box_right;
+    const stereo_reach_params params;
+    const object_match match = match_of(out.sad_match, core, b, config.rig);
+    *short_sides = short_of_sides(history(0), left(), b, match, b.width / 4, config.stereo, params);
+    *short_ends = short_of_ends(history(0), left(), b, match, b.height / 4, config.stereo, params);
+    return reach_cycles(*short_sides, false) + reach_cycles(*short_ends, true);
+}
+
 // A side no difference outlines (it does not move, or fades into what it
 // passes) is still where the object's disparity ends: the reported box is
-// widened there, at most half its size a side. The tracker's box is not:
-// handed to it, the wider box was placed by the difference rules from its
-// other edge, and walked off the object (docs/firmware.md).
-uint64_t controller::impl::widen_to_stereo_reach(box core, frame_output& out) {
+// widened there, at most half its size a side, else moved in where the
+// object stops short of it. The tracker's box is not: handed to it, the
+// wider box was placed by the difference rules from its other edge, and
+// walked off the object (docs/firmware.md).
+uint64_t controller::impl::widen_to_stereo_reach(box core, const stereo_reach& short_sides,
+                                                 const stereo_reach& short_ends,
+                                                 frame_output& out) {
     const box b = out.box_right;
-    const int32_t d_q8 = out.sad_match.disparity_q8;
     const stereo_reach_params params;
-    object_match match;
-    match.disparity = (d_q8 + 128) >> 8;
-    match.spread = surface_spread_px(d_q8, max_int(b.width, b.height), config.rig);
-    match.sad_per_pixel_q8 =
-        static_cast<uint32_t>((uint64_t{out.sad_match.sad} << 8) /
-                              static_cast<uint64_t>(max_int(1, core.width * core.height)));
+    const object_match match = match_of(out.sad_match, core, b, config.rig);
     const stereo_reach r =
         reach_past_sides(history(0), left(), b, match, b.width / 2, config.stereo, params);
     const stereo_reach v =
         reach_past_ends(history(0), left(), b, match, b.height / 2, config.stereo, params);
-    // Each tile a SAD search; each split's lines read at two disparities
-    // (a line a column of band_height px past a side, a row past an end).
-    auto searched = [&](const stereo_reach& reach, bool rows) {
-        const int along = params.tile_width, across = params.band_height;
-        uint64_t c = 0;
-        if (reach.tiles > 0)
-            c += reach.tiles *
-                 cycles_of(cost::sad_search_profile(rows ? across : along, rows ? along : across,
-                                                    reach.positions / reach.tiles));
-        if (reach.split_columns > 0)
-            c += cycles_of(cost::sad_search_profile(rows ? across : reach.split_columns,
-                                                    rows ? reach.split_columns : across, 2));
-        return c;
-    };
-    // A side the object does not reach past may stand past the object:
-    // read inwards, at most a quarter of the box's size a side.
-    const stereo_reach s =
-        short_of_sides(history(0), left(), b, match, b.width / 4, config.stereo, params);
-    const stereo_reach e =
-        short_of_ends(history(0), left(), b, match, b.height / 4, config.stereo, params);
-    const uint64_t cycles =
-        searched(r, false) + searched(v, true) + searched(s, false) + searched(e, true);
-    auto moved = [](int reach, int short_by) { return reach > 0 ? reach : -short_by; };
-    const int out_left = moved(r.left, s.left), out_right = moved(r.right, s.right);
-    const int out_up = moved(v.up, e.up), out_down = moved(v.down, e.down);
-    if (out_left == 0 && out_right == 0 && out_up == 0 && out_down == 0) return cycles;
-    const int x = max_int(0, b.x - out_left), y = max_int(0, b.y - out_up);
-    const box moved_box{x, y, min_int(width, b.right() + out_right) - x,
-                        min_int(height, b.bottom() + out_down) - y};
-    out.box_right = moved_box;
-    return cycles;
+    out.box_right = moved_box(b, r, v, short_sides, short_ends);
+    return reach_cycles(r, false) + reach_cycles(v, true);
 }
 
 // Stage stereo_edge: Sobel on a band of the pattern's rows of both images

@@ -976,7 +976,8 @@ INSTANTIATE_TEST_SUITE_P(HeldOutDepth25, BoxOnMotion,
 // short kept, a development case now) and the 120 px pass over teddy (1.66
 // / 7.95) pass; the 140 px ball going away (detected at its 20th frame)
 // since a detection whose box steps on is started (dsp/detection_steps.h;
-// traced on it); one is open (DISABLED_Open).
+// traced on it); the fourth since a side is read from the stereo pair
+// (SideFromStereo).
 INSTANTIATE_TEST_SUITE_P(HeldOutFading26, BoxOnMotion,
                          ::testing::Values(motion_case{"heldout26_recede100px_4pxpf_teddy", 100,
                                                        2.6, recede, 0.8, 0.0, 'x', photo4, 24},
@@ -1182,34 +1183,34 @@ INSTANTIATE_TEST_SUITE_P(
     case_name);
 
 // A side read from the stereo pair where the box stands past the object
-// (dsp/stereo_reach.h, short_of_sides and short_of_ends): two that were
+// (dsp/stereo_reach.h, short_of_sides and short_of_ends): three that were
 // open (in DISABLED_Open), development cases since. Round 30's 120 px ball
 // going away over cones, its box 4-13 px too wide at its trailing side
-// (5.02 / 7.18 px before, 1.12 / 2.33 with it), the rule's aim; round 29's
+// (5.02 / 7.18 px before, 1.04 / 2.02 with it), the rule's aim; round 29's
 // 70 px ball circling over venus (2.73 / 6.39 -> 1.93 / 3.27 px), whose box
 // stayed 7-9 px narrow and 2-7 px left of it: its left side is now moved in
-// to the ball's left rim (the right one still short).
+// to the ball's left rim (the right one still short). Round 25's 140 px
+// ball going away over kodim23, its box 4-7 px too large for 8 pairs, was
+// 1.04 % off in depth (1.29 / 2.65 px) until the tiled depth was read on
+// the box moved in (0.79 / 1.77 px, 0.74 %).
 INSTANTIATE_TEST_SUITE_P(ShortFromStereo, BoxOnMotion,
                          ::testing::Values(motion_case{"heldout30_recede120px_2pxpf_cones", 120,
                                                        2.6, recede, 0.4, 0.0, 'x', photo, 24},
                                            motion_case{"heldout29_circle70px_3pxpf_2rps_x_venus",
-                                                       70, 2.6, circle, 0.375, 2.0, 'x', venus,
-                                                       30}),
+                                                       70, 2.6, circle, 0.375, 2.0, 'x', venus, 30},
+                                           motion_case{"heldout25_recede140px_3pxpf_kodim23", 140,
+                                                       2.6, recede, 0.6, 0.0, 'x', photo2, 24}),
                          case_name);
 
 // Open: the issue of the box on fast, large and spinning objects stays open
-// on these (docs/firmware.md, "Open"; run with
-// --gtest_also_run_disabled_tests, both fail). A ball going away from
-// the rig (docs/firmware.md, "An object going away or coming nearer"), held
+// on this (docs/firmware.md, "Open"; run with
+// --gtest_also_run_disabled_tests, it fails). A ball going away from the
+// rig (docs/firmware.md, "An object going away or coming nearer"), held
 // out: the 100 px ball at 1 px a frame over cones is detected only at its
-// 23rd frame (no pair scored). Round 25's 140 px ball over kodim23 is within
-// 1.82 px but 1.04 % off in depth, its tracker's box (on which the depth is
-// read) 4-7 px too large from its detection for 8 pairs.
+// 23rd frame (no pair scored).
 INSTANTIATE_TEST_SUITE_P(DISABLED_Open, BoxOnMotion,
                          ::testing::Values(motion_case{"heldout24_recede100px_1pxpf_2rps_y_photo",
-                                                       100, 2.6, recede, 0.2, 2.0, 'y', photo, 24},
-                                           motion_case{"heldout25_recede140px_3pxpf_kodim23", 140,
-                                                       2.6, recede, 0.6, 0.0, 'x', photo2, 24}),
+                                                       100, 2.6, recede, 0.2, 2.0, 'y', photo, 24}),
                          case_name);
 
 }  // namespace
