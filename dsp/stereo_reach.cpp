@@ -118,6 +118,17 @@ int split_at(const side_probe& p, int from, int to, int d_in, int d_out, uint32_
     return at;
 }
 
+// The gate (Q8 a pixel) over a tile and over one line of a band.
+struct probe_gates {
+    uint64_t tile;
+    uint32_t line;
+};
+
+probe_gates gates_of(uint32_t gate_q8, const stereo_reach_params& params) {
+    return {(uint64_t{gate_q8} * params.tile_width * params.band_height) >> 8,
+            static_cast<uint32_t>((uint64_t{gate_q8} * params.band_height) >> 8)};
+}
+
 struct object_end {
     int distance = -1;  // from the probe's start to the object's end (-1: no tile the object's)
     int disparity = 0;  // the last object tile's best disparity (the rim's)
@@ -129,14 +140,12 @@ object_end find_end(const side_probe& p, const object_match& match, int max_dist
                     uint32_t gate_q8, const stereo_params& search,
                     const stereo_reach_params& params, stereo_reach* r) {
     const int w = params.tile_width;
-    const uint64_t tile_gate = (uint64_t{gate_q8} * w * params.band_height) >> 8;
-    const uint32_t column_gate =
-        static_cast<uint32_t>((uint64_t{gate_q8} * params.band_height) >> 8);
+    const probe_gates gates = gates_of(gate_q8, params);
     object_end end;
     for (int k = 0; k * params.step < max_distance; ++k) {
         const int from = k * params.step;
         if (!p.in_ref(from, from + w)) break;
-        const tile_reading t = read_tile(p, from, match, tile_gate, search, params);
+        const tile_reading t = read_tile(p, from, match, gates.tile, search, params);
         ++r->tiles;
         r->positions += t.positions;
         if (t.object) {
@@ -148,7 +157,7 @@ object_end find_end(const side_probe& p, const object_match& match, int max_dist
             break;
         r->split_columns += params.step + w;
         end.distance =
-            split_at(p, from - params.step, from + w, end.disparity, t.d_out, column_gate, params);
+            split_at(p, from - params.step, from + w, end.disparity, t.d_out, gates.line, params);
         break;
     }
     return end;
@@ -161,16 +170,14 @@ object_end find_start(const side_probe& p, const object_match& match, int max_di
                       uint32_t gate_q8, const stereo_params& search,
                       const stereo_reach_params& params, stereo_reach* r) {
     const int w = params.tile_width;
-    const uint64_t tile_gate = (uint64_t{gate_q8} * w * params.band_height) >> 8;
-    const uint32_t column_gate =
-        static_cast<uint32_t>((uint64_t{gate_q8} * params.band_height) >> 8);
+    const probe_gates gates = gates_of(gate_q8, params);
     object_end start;
     start.disparity = match.disparity;
     int background_disparity = 0;
     for (int k = 0; k * params.step < max_distance; ++k) {
         const int from = k * params.step;
         if (!p.in_ref(from, from + w)) break;
-        const tile_reading t = read_tile(p, from, match, tile_gate, search, params);
+        const tile_reading t = read_tile(p, from, match, gates.tile, search, params);
         ++r->tiles;
         r->positions += t.positions;
         if (t.background) {
@@ -185,7 +192,7 @@ object_end find_start(const side_probe& p, const object_match& match, int max_di
             break;
         r->split_columns += params.step + w;
         start.distance = split_at(p, from - params.step, from + w, background_disparity,
-                                  start.disparity, column_gate, params);
+                                  start.disparity, gates.line, params);
         break;
     }
     return start;
@@ -213,8 +220,7 @@ stereo_reach reach_past_sides(gray_cplane right, gray_cplane left, box object,
     if (object.empty() || band_y < 0 || band_y + params.band_height > right.height ||
         right.height != left.height)
         return r;
-    const uint32_t gate_q8 =
-        params.gate_factor * match.sad_per_pixel_q8 + params.gate_floor_per_pixel * 256u;
+    const uint32_t gate_q8 = gate_of(match, params);
     // Both probes start `inset` px inside the box, on the object where the
     // box is short of it.
     const int inset = match.spread;
@@ -241,8 +247,7 @@ stereo_reach reach_past_ends(gray_cplane right, gray_cplane left, box object,
     if (object.empty() || band_x < 0 || band_x + params.band_height > right.width ||
         right.height != left.height)
         return r;
-    const uint32_t gate_q8 =
-        params.gate_factor * match.sad_per_pixel_q8 + params.gate_floor_per_pixel * 256u;
+    const uint32_t gate_q8 = gate_of(match, params);
     const int inset = match.spread;
     const int max_distance = inset + max_reach + match.spread + params.tile_width;
     // Both read in the right image: along a column neither camera sees
@@ -287,8 +292,8 @@ stereo_reach short_of_sides(gray_cplane right, gray_cplane left, box object,
     // (a round object's rim stands farther than its core: a 320 px ball's
     // 9 px less than the core's 80).
     if (!right_side.in_ref(e.distance, e.distance + params.tile_width)) return r;
-    const uint64_t tile_gate = (uint64_t{gate_q8} * params.tile_width * params.band_height) >> 8;
-    const tile_reading rim = read_tile(right_side, e.distance, match, tile_gate, search, params);
+    const tile_reading rim =
+        read_tile(right_side, e.distance, match, gates_of(gate_q8, params).tile, search, params);
     ++r.tiles;
     r.positions += rim.positions;
     if (rim.d_in < 0) return r;
