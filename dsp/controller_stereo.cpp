@@ -38,9 +38,10 @@ box object_core(box object) {
 // Stage stereo_sad: the object's core (the right pattern) along the same rows
 // (+-row_slack) of the left image over the depth range; a large
 // object's disparity is then its tiles' mean depth around the core's
-// (dsp/object_depth.h), the core's when too few tiles matched. A tracked
-// box is then widened to where the object's disparity reaches past its
-// sides (dsp/stereo_reach.h).
+// (dsp/object_depth.h), the core's when too few tiles matched; on a
+// tracked box, the tiles of the box moved in where the object stops short
+// of it. The reported box is then widened where the object's disparity
+// reaches past a side, else moved in (dsp/stereo_reach.h).
 void controller::impl::stereo_sad(box object, bool outlined, frame_output& out) {
     stage_scope scope(*hardware, stage::stereo_sad, out);
     const box core = object_core(object);
