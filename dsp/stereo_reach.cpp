@@ -129,9 +129,12 @@ probe_gates gates_of(uint32_t gate_q8, const stereo_reach_params& params) {
             static_cast<uint32_t>((uint64_t{gate_q8} * params.band_height) >> 8)};
 }
 
+// Read outwards (find_end): where the object ends, and the last object
+// tile's best disparity (the rim's). Read inwards (find_start): where it
+// starts, and the disparity its lines were split at. -1: no tile taken.
 struct object_end {
-    int distance = -1;  // from the probe's start to the object's end (-1: no tile the object's)
-    int disparity = 0;  // the last object tile's best disparity (the rim's)
+    int distance = -1;  // from the probe's start
+    int disparity = 0;
 };
 
 // Tiles outwards while they are the object's; the object's end is then
