@@ -138,7 +138,11 @@ struct object_end {
 };
 
 // Tiles outwards while they are the object's; the object's end is then
-// split between the last of them and the first that is not.
+// split between the last of them and the first that is not. Where every
+// tile to max_distance is the object's its end was not met: asked at a
+// wrong disparity (the background's), the background's tiles match there,
+// and the side would be moved out by its whole bound; it is not (-1). At
+// the image's edge the object ends there.
 object_end find_end(const side_probe& p, const object_match& match, int max_distance,
                     uint32_t gate_q8, const stereo_params& search,
                     const stereo_reach_params& params, stereo_reach* r) {
@@ -147,7 +151,7 @@ object_end find_end(const side_probe& p, const object_match& match, int max_dist
     object_end end;
     for (int k = 0; k * params.step < max_distance; ++k) {
         const int from = k * params.step;
-        if (!p.in_ref(from, from + w)) break;
+        if (!p.in_ref(from, from + w)) return end;
         const tile_reading t = read_tile(p, from, match, gates.tile, search, params);
         ++r->tiles;
         r->positions += t.positions;
@@ -157,18 +161,21 @@ object_end find_end(const side_probe& p, const object_match& match, int max_dist
             continue;
         }
         if (end.distance < 0 || t.d_out < 0 || !p.fits(from - params.step, from + w, end.disparity))
-            break;
+            return end;
         r->split_columns += params.step + w;
         end.distance =
             split_at(p, from - params.step, from + w, end.disparity, t.d_out, gates.line, params);
-        break;
+        return end;
     }
-    return end;
+    return object_end{};
 }
 
 // Tiles inwards from the box's side while they are clearly background; the
 // object then starts between the last of them and the first that is not,
-// split as an end is with the roles turned (background first).
+// split as an end is with the roles turned (background first). Where every
+// tile to max_distance is background the object was not met: asked at a
+// wrong disparity, the object's own tiles match clearly elsewhere, and the
+// side would be moved in by its whole bound; it is not moved (-1).
 object_end find_start(const side_probe& p, const object_match& match, int max_distance,
                       uint32_t gate_q8, const stereo_params& search,
                       const stereo_reach_params& params, stereo_reach* r) {
@@ -192,13 +199,13 @@ object_end find_start(const side_probe& p, const object_match& match, int max_di
         if (t.object) start.disparity = t.d_in;
         if (!p.fits(from - params.step, from + w, background_disparity) ||
             !p.fits(from - params.step, from + w, start.disparity))
-            break;
+            return start;  // met, but not to be split: at the last background tile
         r->split_columns += params.step + w;
         start.distance = split_at(p, from - params.step, from + w, background_disparity,
                                   start.disparity, gates.line, params);
-        break;
+        return start;
     }
-    return start;
+    return object_end{};
 }
 
 // A band of band_height px on a round object's centre rows (columns) lies
@@ -299,7 +306,7 @@ stereo_reach short_of_sides(gray_cplane right, gray_cplane left, box object,
         read_tile(right_side, e.distance, match, gates_of(gate_q8, params).tile, search, params);
     ++r.tiles;
     r.positions += rim.positions;
-    if (rim.d_in < 0) return r;
+    if (rim.d_in < 0 || rim.background) return r;
     r.right = max_int(0, min_int(max_trim, object.right() - (start - e.distance - rim.d_in)));
     return r;
 }

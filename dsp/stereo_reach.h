@@ -41,7 +41,10 @@
 // stronger texture, so its middle misses the end by up to half a tile.)
 // The right side's end is brought back to the right image at the rim's
 // disparity. The reach is from the box's side, 0 to max_reach px; no tile
-// the object's: 0.
+// the object's: 0; every tile to the bound the object's, its end not met:
+// 0 (asked at a wrong disparity, the background's, the background's tiles
+// match there, and the side went out by its whole bound, half the box);
+// the image's edge met: the object ends there.
 // d_object is the object's integer disparity (its core's), spread its
 // disparity span (object_depth.h).
 // Assumes: a rectified pair (the tile's rows only); the object nearer
@@ -119,9 +122,15 @@ stereo_reach reach_past_ends(gray_cplane right, gray_cplane left, box object,
 // image at the disparity of the tile just inside it: a round object's rim
 // stands farther than its core (a 320 px ball's right rim at 71 px where
 // its core matched at 80: brought back at 80, 9 px too many were taken
-// off). 0 to max_trim px; the first tile not
-// background: 0. A box under three bands (48 px) either way is not read:
-// a band on a smaller round object's centre rows runs off it at every side.
+// off). 0 to max_trim px; the first tile not background: 0. Asked at a
+// wrong disparity the object's own tiles match clearly elsewhere, so a
+// side is moved in only where the object is met: a tile not background
+// within max_trim + a tile, and at the right side (whose probe starts at
+// the disparity asked) its rim's tile within the gate at the object's
+// disparity; else 0 (unguarded, a box inside the object was moved in by
+// its whole bound, a quarter of it). A box under three bands (48 px)
+// either way is not read: a band on a smaller round object's centre rows
+// runs off it at every side.
 // Costs: as the reach's, and the right rim's tile.
 stereo_reach short_of_sides(gray_cplane right, gray_cplane left, box object,
                             const object_match& match, int max_trim, const stereo_params& search,

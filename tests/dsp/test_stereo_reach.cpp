@@ -159,14 +159,36 @@ TEST(StereoReach, ARepeatingBackgroundHiddenFromOneCameraIsNotTheObject) {
     EXPECT_NEAR(r.right, 13, 2);
 }
 
+// The object's sides met within the tiles read (to a tile and the spread
+// past the bound), 14 px past each side: widened by the bound.
 TEST(StereoReach, AtMostMaxReach) {
     const pair_images p = make_pair(backdrop::textured);
-    const dsp::box narrow{object_x0 + 40, object_y0, 40, 80};
+    const dsp::box narrow{object_x0 + 14, object_y0, 92, 80};
     const dsp::stereo_reach r = reach(p, narrow, 10);
-    EXPECT_LE(r.left, 10);
-    EXPECT_GE(r.left, 6);
-    EXPECT_LE(r.right, 10);
-    EXPECT_GE(r.right, 6);
+    EXPECT_EQ(r.left, 10);
+    EXPECT_EQ(r.right, 10);
+}
+
+// The object's sides farther out than the tiles read (40 px, the bound
+// 10): its end not met, the box is not widened.
+TEST(StereoReach, AnObjectWhoseSidesAreNotMetIsNotWidened) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::stereo_reach r = reach(p, dsp::box{object_x0 + 40, object_y0, 40, 80}, 10);
+    EXPECT_EQ(r.left, 0);
+    EXPECT_EQ(r.right, 0);
+}
+
+// A box 8 px wider than the object each side, asked at the background's
+// disparity (a core that matched what is behind): the background's tiles
+// match there all the way to the bound. Unguarded the box was widened by
+// its whole bound, half its size a side.
+TEST(StereoReach, ABoxAskedAtTheBackgroundsDisparityIsNotWidenedToTheBound) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::stereo_reach r = dsp::reach_past_sides(
+        p.right_view(), p.left_view(), dsp::box{object_x0 - 8, object_y0, 136, 80},
+        at_disparity(background_disparity), 30, depth_range_search(), dsp::stereo_reach_params{});
+    EXPECT_EQ(r.left, 0);
+    EXPECT_EQ(r.right, 0);
 }
 
 TEST(StereoReach, AnObjectAtTheBackgroundsDisparityIsNotWidened) {
@@ -261,14 +283,16 @@ TEST(StereoReachEnds, ANoisyFlatBackgroundIsNotTheObject) {
 
 // How far the object stops short of a box too large for it
 // (short_of_sides, short_of_ends): the same tiles read inwards.
-dsp::stereo_reach short_of(const pair_images& p, dsp::box b, int max_trim = 30) {
-    return dsp::short_of_sides(p.right_view(), p.left_view(), b, at_disparity(object_disparity),
-                               max_trim, depth_range_search(), dsp::stereo_reach_params{});
+dsp::stereo_reach short_of(const pair_images& p, dsp::box b, int max_trim = 30,
+                           int d = object_disparity) {
+    return dsp::short_of_sides(p.right_view(), p.left_view(), b, at_disparity(d), max_trim,
+                               depth_range_search(), dsp::stereo_reach_params{});
 }
 
-dsp::stereo_reach short_of_ends(const pair_images& p, dsp::box b, int max_trim = 30) {
-    return dsp::short_of_ends(p.right_view(), p.left_view(), b, at_disparity(object_disparity),
-                              max_trim, depth_range_search(), dsp::stereo_reach_params{});
+dsp::stereo_reach short_of_ends(const pair_images& p, dsp::box b, int max_trim = 30,
+                                int d = object_disparity) {
+    return dsp::short_of_ends(p.right_view(), p.left_view(), b, at_disparity(d), max_trim,
+                              depth_range_search(), dsp::stereo_reach_params{});
 }
 
 // Right of the object the left image is read (at x - d in the right): in
@@ -329,11 +353,40 @@ TEST(StereoShortOf, ABoxUnderThreeBandsIsNotTrimmed) {
     EXPECT_EQ(r.tiles, 0);
 }
 
+// The object met within the tiles read (to a tile past the bound), 14 px
+// inside each side: moved in by the bound.
 TEST(StereoShortOf, AtMostMaxTrim) {
     const pair_images p = make_pair(backdrop::textured);
-    const dsp::stereo_reach r = short_of(p, dsp::box{object_x0 - 30, object_y0, 180, 80}, 10);
+    const dsp::stereo_reach r = short_of(p, dsp::box{object_x0 - 14, object_y0, 148, 80}, 10);
     EXPECT_EQ(r.left, 10);
     EXPECT_EQ(r.right, 10);
+}
+
+// Asked at a wrong disparity (here the background's) every tile of the
+// object matches clearly elsewhere: read inwards, a box inside the object
+// sees background all the way, meets no object, and is not moved in (it
+// would be by its whole bound, a quarter of the box).
+TEST(StereoShortOf, AnObjectAtAWrongDisparityIsNotMovedIn) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::box inside{object_x0 + 10, object_y0 + 10, 100, 60};
+    for (const int d : {background_disparity, object_disparity + 20}) {
+        const dsp::stereo_reach r = short_of(p, inside, 25, d);
+        EXPECT_EQ(r.left, 0) << d;
+        EXPECT_EQ(r.right, 0) << d;
+        const dsp::stereo_reach v = short_of_ends(p, inside, 15, d);
+        EXPECT_EQ(v.up, 0) << d;
+        EXPECT_EQ(v.down, 0) << d;
+    }
+}
+
+// The object farther in than the tiles read (30 px, the bound 10): not met,
+// not moved in either; at most a quarter of a box is its trim, and a box
+// that much too large is larger than any rule makes it.
+TEST(StereoShortOf, AnObjectNotMetWithinTheBoundIsNotMovedIn) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::stereo_reach r = short_of(p, dsp::box{object_x0 - 30, object_y0, 180, 80}, 10);
+    EXPECT_EQ(r.left, 0);
+    EXPECT_EQ(r.right, 0);
 }
 
 TEST(StereoShortOfEnds, ABoxTallAtTopAndBottomStopsAtTheObjectsEnds) {
