@@ -126,9 +126,9 @@ stereo_reach reach_past_ends(gray_cplane right, gray_cplane left, box object,
 // wrong disparity the object's own tiles match clearly elsewhere, so a
 // side is moved in only where the object is met: a tile not background
 // within max_trim + a tile, and at the right side (whose probe starts at
-// the disparity asked) its rim's tile within the gate at the object's
-// disparity; else 0 (unguarded, a box inside the object was moved in by
-// its whole bound, a quarter of it). A box under three bands (48 px)
+// the disparity asked) its rim's tile not clearly matched elsewhere; else
+// 0 (unguarded, a box inside the object was moved in by its whole bound,
+// a quarter of it). A box under three bands (48 px)
 // either way is not read: a band on a smaller round object's centre rows
 // runs off it at every side.
 // Costs: as the reach's, and the right rim's tile.

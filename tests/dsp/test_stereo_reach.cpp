@@ -380,8 +380,7 @@ TEST(StereoShortOf, AnObjectAtAWrongDisparityIsNotMovedIn) {
 }
 
 // The object farther in than the tiles read (30 px, the bound 10): not met,
-// not moved in either; at most a quarter of a box is its trim, and a box
-// that much too large is larger than any rule makes it.
+// not moved in either.
 TEST(StereoShortOf, AnObjectNotMetWithinTheBoundIsNotMovedIn) {
     const pair_images p = make_pair(backdrop::textured);
     const dsp::stereo_reach r = short_of(p, dsp::box{object_x0 - 30, object_y0, 180, 80}, 10);
