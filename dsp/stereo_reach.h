@@ -128,9 +128,9 @@ stereo_reach reach_past_ends(gray_cplane right, gray_cplane left, box object,
 // within max_trim + a tile, and at the right side (whose probe starts at
 // the disparity asked) its rim's tile not clearly matched elsewhere; else
 // 0 (unguarded, a box inside the object was moved in by its whole bound,
-// a quarter of it). A box under three bands (48 px)
-// either way is not read: a band on a smaller round object's centre rows
-// runs off it at every side.
+// a quarter of it). A box under three bands (48 px) either way is not
+// read: a band on a smaller round object's centre rows runs off it at
+// every side.
 // Costs: as the reach's, and the right rim's tile.
 stereo_reach short_of_sides(gray_cplane right, gray_cplane left, box object,
                             const object_match& match, int max_trim, const stereo_params& search,
