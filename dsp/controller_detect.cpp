@@ -6,6 +6,22 @@ namespace dsp {
 
 using namespace controller_parts;
 
+namespace {
+
+// A detection's pattern matched in f(t) more differently than
+// key_frame::turned_mean_sad per pixel: its texture turned between the
+// frames (a spinning ball), so where the SAD placed it says nothing of how
+// far the object moved. Read on a detection a motion block across or more:
+// a narrower one's pattern is mostly outline, which changes as the object
+// enters the view (a 6 x 16 px sliver of a 20 px ball read 9.3 a pixel).
+bool texture_turned(const sad_result& match, box pattern, box detected) {
+    const uint64_t area = static_cast<uint64_t>(pattern.width) * pattern.height;
+    return min_int(detected.width, detected.height) >= motion_blocks::block_side &&
+           match.sad > key_frame::turned_mean_sad * area;
+}
+
+}  // namespace
+
 // Stage detect: three-frame differencing gives object(t-1) in the middle
 // frame; the tracker takes the pattern there and finds it in the newest
 // frame, so the track starts at the current frame's position.
@@ -126,22 +142,23 @@ bool controller::impl::start_detection(const detection& found, frame_output& out
     return start_track(found.object_box, cycles, traffic);
 }
 
-// The track's first box from the detection (object(t-1)): the SAD pattern
-// taken there is searched in f(t) around it (paper eq. 5), and object(t)
-// placed where Dif(t-1,t) reaches past object(t-1), as in TRACK
-// (track_object), with object(t-1)'s size; without such an extent, where
-// the SAD found the pattern. Where the SAD moved at most key_frame::max_step
-// px, and the last detections' outline does not step on (a turning texture
-// read still: dsp/detection_steps.h), the object is slow, and its
-// detection, made of one pair's thin differences, may hold a part of it
-// only (a 110 px ball at 1 px per frame over a cluttered photograph: a
-// 23 x 86 px crescent, or a 22 x 39 px piece); it is not started but keyed
-// (confirm_slow_object), the key's region grown by twice the detection's
-// longer side, where the rest of its object may lie (a crescent is as long
-// as its ball is wide; a smaller piece's ball reached further). One
-// candidate at a time: while one waits, a slow detection is left to it,
-// and a faster one starts its track (a candidate must not hold a thrown
-// ball back for its 10 pairs).
+// The track's first box from the detection (object(t-1)): the SAD pattern taken
+// there is searched in f(t) around it (paper eq. 5), and object(t) placed where
+// Dif(t-1,t) reaches past object(t-1), as in TRACK (track_object), with
+// object(t-1)'s size; without such an extent, where the SAD found the pattern.
+// Where the SAD moved at most key_frame::max_step px, the last detections'
+// outline does not step on (a turning texture read still:
+// dsp/detection_steps.h) and its texture did not turn (texture_turned: then the
+// SAD's place is the background's in the box's corners, and a key's pattern
+// would read no motion either), the object is slow, and its detection, made of
+// one pair's thin differences, may hold a part of it only (a 110 px ball at 1
+// px per frame over a cluttered photograph: a 23 x 86 px crescent, or a 22 x 39
+// px piece); it is not started but keyed (confirm_slow_object), the key's
+// region grown by twice the detection's longer side, where the rest of its
+// object may lie (a crescent is as long as its ball is wide; a smaller piece's
+// ball reached further). One candidate at a time: while one waits, a slow
+// detection is left to it, and a faster one starts its track (a candidate must
+// not hold a thrown ball back for its 10 pairs).
 bool controller::impl::start_track(box detected, uint64_t* cycles, sdram_traffic* traffic) {
     tracker.start(history(1), detected);
     const box pattern = tracker.pattern_box();
@@ -155,7 +172,9 @@ bool controller::impl::start_track(box detected, uint64_t* cycles, sdram_traffic
         // Still by the SAD, but its outline stepping on (dsp/detection_steps.h):
         // a moving object whose texture or background corners matched in place.
         const bool outline_moves = detection_edges.edge_keeps_stepping(key_frame::max_step + 1);
-        if (moved_at_most(detected, tracker.position(), key_frame::max_step) && !outline_moves) {
+        const bool turned = texture_turned(tracker.last_match(), pattern, detected);
+        if (moved_at_most(detected, tracker.position(), key_frame::max_step) && !outline_moves &&
+            !turned) {
             if (slow_candidate) return false;  // one at a time: the waiting one goes on
             take_key(cycles, traffic,
                      2 * max_int(detected.width, detected.height) + key_frame::max_shift +

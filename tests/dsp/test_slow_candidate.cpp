@@ -242,3 +242,29 @@ TEST(SlowCandidate, DoesNotStartABallCutByTheImageEdge) {
             << first;
     }
 }
+
+// A slow ball spinning about y at 2 rev/s (its surface turns 14 px a frame
+// at 100 px, across its 1 px a frame): its texture does not match itself
+// from one frame to the next, the SAD places its pattern where the
+// background in the box's corners matched, 0-2 px away, and a key of that
+// pattern reads no displacement either. It is started on its detection as a
+// moving object is (dsp/controller_detect.cpp, texture_turned), not waited
+// on: tracked within 3 frames of its motion (a detection needs two pairs of
+// it), where its candidate took 5 at both sizes. A ball that does not spin
+// still waits for its key (StartsOnTheOutlineOnceTheBallMovedFourPixels).
+TEST(SlowCandidate, StartsASpinningBallOnItsDetection) {
+    const int start = 3;
+    for (const double diameter_px : {60.0, 100.0}) {
+        scene::scenario s = procedural_scene(24);
+        scene::ball_desc ball =
+            ball_of(diameter_px, pass(s, 0.0, 0.0, 1.0, start), s.scene.rig.focal_px());
+        ball.spin_rad_s = 2.0 * 2.0 * std::acos(-1.0);
+        ball.spin_axis = scene::vec3{0.0, 1.0, 0.0};
+        s.scene.balls.push_back(ball);
+        const run_result r = run(s);
+        std::printf("%.0f px: states %s\n", diameter_px, states(r).c_str());
+        const int first = first_tracked(r, 0);
+        ASSERT_GE(first, 0) << diameter_px << " px: never tracked";
+        EXPECT_LE(first - start, 3) << diameter_px << " px: tracked in frame " << first;
+    }
+}
