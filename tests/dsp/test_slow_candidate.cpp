@@ -7,6 +7,7 @@
 // is the renderer's ellipse, not the firmware's.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -266,5 +267,24 @@ TEST(SlowCandidate, StartsASpinningBallOnItsDetection) {
         const int first = first_tracked(r, 0);
         ASSERT_GE(first, 0) << diameter_px << " px: never tracked";
         EXPECT_LE(first - start, 3) << diameter_px << " px: tracked in frame " << first;
+        // Started early, still on the ball: from its third tracked pair on,
+        // the box centre within the box cases' bounds (3 px mean, 6 px max).
+        double sum = 0.0, worst = 0.0;
+        int scored = 0;
+        for (const host::host_record& rec : r.records) {
+            if (rec.index < first + 2 || !rec.firmware.has_object) continue;
+            const scene::sphere_image& t = r.truth[static_cast<size_t>(rec.index)][0].right;
+            const dsp::box& box = rec.firmware.box_right;
+            const double off = std::hypot(box.x + 0.5 * box.width - t.ellipse_centre.x,
+                                          box.y + 0.5 * box.height - t.ellipse_centre.y);
+            sum += off;
+            worst = std::max(worst, off);
+            ++scored;
+        }
+        ASSERT_GE(scored, 10) << diameter_px << " px: a track lost";
+        EXPECT_LE(sum / scored, 3.0) << diameter_px << " px";
+        EXPECT_LE(worst, 6.0) << diameter_px << " px";
+        std::printf("%.0f px: box centre error mean %.2f max %.2f px over %d pairs\n", diameter_px,
+                    sum / scored, worst, scored);
     }
 }
