@@ -8,8 +8,8 @@ using namespace controller_parts;
 
 namespace {
 
-// A detection's pattern matched in f(t) more differently than
-// key_frame::turned_mean_sad per pixel: its texture turned between the
+// A detection's pattern matched in f(t) as a key's turned pattern does
+// (key_frame::match_turned): its texture turned between the
 // frames (a spinning ball), so where the SAD placed it says nothing of how
 // far the object moved. Read on a detection a motion block across or more:
 // a narrower one's pattern is mostly outline, which changes as the object
@@ -17,7 +17,7 @@ namespace {
 bool texture_turned(const sad_result& match, box pattern, box detected) {
     const uint64_t area = static_cast<uint64_t>(pattern.width) * pattern.height;
     return min_int(detected.width, detected.height) >= motion_blocks::block_side &&
-           match.sad > key_frame::turned_mean_sad * area;
+           key_frame::match_turned(match.sad, area);
 }
 
 }  // namespace
@@ -172,9 +172,8 @@ bool controller::impl::start_track(box detected, uint64_t* cycles, sdram_traffic
         // Still by the SAD, but its outline stepping on (dsp/detection_steps.h):
         // a moving object whose texture or background corners matched in place.
         const bool outline_moves = detection_edges.edge_keeps_stepping(key_frame::max_step + 1);
-        const bool turned = texture_turned(tracker.last_match(), pattern, detected);
         if (moved_at_most(detected, tracker.position(), key_frame::max_step) && !outline_moves &&
-            !turned) {
+            !texture_turned(tracker.last_match(), pattern, detected)) {
             if (slow_candidate) return false;  // one at a time: the waiting one goes on
             take_key(cycles, traffic,
                      2 * max_int(detected.width, detected.height) + key_frame::max_shift +

@@ -86,7 +86,7 @@ bool key_frame::displacement(gray_cplane frame, uint8_t* scratch, uint32_t lost_
                          best.y == window.bottom() - 1;
     const uint64_t area = static_cast<uint64_t>(pattern.width) * pattern.height;
     if (on_edge || best.sad > static_cast<uint64_t>(lost_mean_sad) * area) return false;
-    m_turned = best.sad > static_cast<uint64_t>(turned_mean_sad) * area;
+    m_turned = match_turned(best.sad, area);
     m_dx = best.x - m_pattern.x;
     m_dy = best.y - m_pattern.y;
     return true;

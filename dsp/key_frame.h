@@ -102,6 +102,12 @@ class key_frame {
     // The last match differed by more than turned_mean_sad per pixel on
     // average: the pattern's texture turned.
     bool turned() const { return m_turned; }
+    // A match of `sad` for a pattern of `area` pixels differs by over
+    // turned_mean_sad per pixel: the texture turned (also read on a
+    // detection's pattern, dsp/controller_detect.cpp).
+    static bool match_turned(uint32_t sad, uint64_t area) {
+        return sad > static_cast<uint64_t>(turned_mean_sad) * area;
+    }
     // A key of the outline only: its pattern is not searched (its texture
     // outruns its object); the controller reads Dif(key, t) alone.
     bool outline_only() const { return m_outline_only; }
