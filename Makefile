@@ -151,8 +151,10 @@ coverage-full:
 # Mutation qualification of the fault campaign (docs/mutants.md): every
 # firmware mutant (tests/mutants/firmware/*.patch) and RTL mutant
 # (tests/mutants/rtl/generate) is built in its own tree under build-mutants/
-# and must be killed: firmware by the smoke campaign alone, RTL by
-# ctest -L rtl or the campaign. Reports in build-mutants/results*/mutants.txt.
+# and must be killed: firmware first by the tests that killed it last time
+# (tests/mutants/firmware-killers.tsv), then ctest -L dsp or the campaign
+# (MUTANTS_ARGS=--whole: the campaign first, every test), RTL by ctest -L rtl
+# or the campaign. Reports in build-mutants/results*/mutants.txt.
 # MUTANT_JOBS mutants at a time (empty: the runner's default, 1).
 MUTANT_JOBS ?=
 MUTANTS_ARGS ?=

@@ -22,11 +22,14 @@ with --no-baseline); campaign rows and tests that fail there are never
 counted as kills, and make the run exit 1.
 
 Kill checks, stopping at the first that kills:
-  firmware: the smoke campaign of its plugin (`stereosim faults --campaign
-            smoke --firmware PLUGIN --stop-on-violation`, exit 1 = killed, by
-            the rows that broke the contract before it stopped), then `ctest -L dsp`
-            only if the campaign did not kill (column campaign_kills: the
-            campaign alone killed it, the qualification requirement);
+  firmware: (--whole) the smoke campaign of its plugin (`stereosim faults
+            --campaign smoke --firmware PLUGIN --stop-on-violation`, exit 1 =
+            killed, by the rows that broke the contract before it stopped),
+            then `ctest -L dsp` only if the campaign did not kill (column
+            campaign_kills: the campaign alone killed it); by default first
+            the tests tests/mutants/firmware-killers.tsv says killed it last
+            time, and the campaign after `ctest -L dsp --stop-on-failure` for
+            a mutant the record gives to tests (known_killers.py);
   rtl:      `ctest -L rtl` first (fast), then the smoke campaign.
 A crash or timeout of a simulation counts as killed ("crash: ..."), noted.
 Campaign exit 2, or anything else the harness cannot judge, is an `error`.
@@ -57,11 +60,14 @@ import threading
 import time
 from pathlib import Path
 
+import known_killers
+
 REPO = Path(__file__).resolve().parents[2]
 MUTANTS_DIR = REPO / "tests" / "mutants"
 FIRMWARE_DIR = MUTANTS_DIR / "firmware"
 TARGETED_RTL_DIR = MUTANTS_DIR / "rtl-targeted"
 EQUIVALENT_FILE = MUTANTS_DIR / "equivalent.txt"
+KILLERS_FILE = MUTANTS_DIR / "firmware-killers.tsv"
 RTL_GENERATOR = MUTANTS_DIR / "rtl" / "generate"
 WORK_DIR = REPO / "build-mutants"
 # The main build's spelling of the path (CMakeLists.txt's default for a
@@ -524,9 +530,11 @@ def failed_tests(ctest_output):
     return names
 
 
-def run_ctest(build, log_path, label, jobs):
-    """`ctest -L <label>`: (exit code or None on timeout, seconds, failed tests)."""
-    code, seconds = run_step(["ctest", "-L", label, "--output-on-failure", "-j", str(jobs)],
+def run_ctest(build, log_path, label, jobs, stop=False):
+    """`ctest -L <label>` (with --stop-on-failure if stop): (exit code or
+    None on timeout, seconds, failed tests)."""
+    command = ["ctest", "-L", label, "--output-on-failure", "-j", str(jobs)]
+    code, seconds = run_step(command + (["--stop-on-failure"] if stop else []),
                              build, log_path, CTEST_TIMEOUT_S)
     if code is not None and code < 0:
         raise RuntimeError(f"ctest -L {label} died of signal {-code} (see {log_path})")
@@ -544,10 +552,11 @@ def run_ctest(build, log_path, label, jobs):
 SHAPE_TESTS = {"rtl.CardEval.TheShippedCardTakesTheLeanPath"}
 
 
-def check_ctest(result, build, out_dir, label, jobs, baseline):
+def check_ctest(result, build, out_dir, label, jobs, baseline, stop=False):
     """`ctest -L <label>` in the mutant's build tree. Returns True when it
     killed: a test failed that passes on the baseline, or a timeout."""
-    code, result.ctest_s, failed = run_ctest(build, out_dir / "ctest.log", label, jobs)
+    code, seconds, failed = run_ctest(build, out_dir / "ctest.log", label, jobs, stop)
+    result.ctest_s += seconds
     if code is None:
         result.killed_by = [f"crash: ctest -L {label} timed out after {CTEST_TIMEOUT_S} s"]
         add_note(result, "ctest timeout")
@@ -622,6 +631,11 @@ class Settings:
     build_jobs: int
     clean: bool
     snapshot: dict
+    # known_killers' record and {ctest name: executable} of the main build;
+    # None: every mutant goes the whole way (--whole)
+    killers: object = None
+    test_executables: dict = dataclasses.field(default_factory=dict)
+    neighbours: dict = dataclasses.field(default_factory=dict)  # {file: [mutant id, ...]}
 
 
 def run_mutant(mutant, settings, baseline):
@@ -657,12 +671,17 @@ def judge_mutant(mutant, result, tree, out_dir, settings, baseline):
     (tree / "src").mkdir(parents=True, exist_ok=True)
     sync_tree(tree / "src", settings.snapshot, mutated_contents(mutant, settings.snapshot))
     label = label_of(mutant.kind)
+    if mutant.kind == "firmware" and known_killers_kill(mutant, result, tree, out_dir,
+                                                        settings, baseline):
+        result.status = "killed"
+        return
     # An RTL mutant's tests come first: they need no stereosim, whose fast
     # card evaluation may not fit a mutated netlist (below).
     firmware = mutant.kind == "firmware"
-    built, result.build_s = build_tree(tree, [label], settings.build_jobs,
-                                       out_dir / "build.log", with_stereosim=False,
-                                       extra_targets=[PLUGIN_TARGET] if firmware else [])
+    built, seconds = build_tree(tree, [label], settings.build_jobs, out_dir / "build.log",
+                                with_stereosim=False,
+                                extra_targets=[PLUGIN_TARGET] if firmware else [])
+    result.build_s += seconds
     if not built:
         log_text = (out_dir / "build.log").read_text(errors="replace")
         in_mutated = failure_in_mutated_file(log_text, mutant.file)
@@ -677,13 +696,7 @@ def judge_mutant(mutant, result, tree, out_dir, settings, baseline):
         return
     build, jobs = tree_build_dir(tree), settings.build_jobs
     if firmware:
-        log(f"[{mutant.id}] smoke campaign (its plugin, stopping at the first broken row)")
-        result.campaign_kills = check_campaign(result, build, out_dir, settings.campaign_jobs,
-                                               baseline, plugin=build / PLUGIN_PATH)
-        killed = result.campaign_kills
-        if not killed:
-            log(f"[{mutant.id}] ctest -L dsp")
-            killed = check_ctest(result, build, out_dir, "dsp", jobs, baseline)
+        killed = judge_firmware(mutant, result, build, out_dir, settings, baseline)
     else:
         log(f"[{mutant.id}] ctest -L rtl")
         killed = check_ctest(result, build, out_dir, "rtl", jobs, baseline)
@@ -696,6 +709,81 @@ def judge_mutant(mutant, result, tree, out_dir, settings, baseline):
                                                    settings.campaign_jobs, baseline)
             killed = result.campaign_kills
     result.status = "killed" if killed else "survived"
+
+
+def judge_firmware(mutant, result, build, out_dir, settings, baseline):
+    """The smoke campaign, then `ctest -L dsp`. With a record (not --whole)
+    that does not give the mutant to the campaign, the other way round:
+    ctest stopping at its first failure, the campaign only if it left the
+    mutant alive (a box mutant is hardly ever the campaign's)."""
+    tests_first = settings.killers is not None and known_killers.tests_first(
+        mutant.id, settings.killers, settings.neighbours.get(mutant.file, ()))
+    for step in (("ctest", "campaign") if tests_first else ("campaign", "ctest")):
+        if step == "campaign":
+            log(f"[{mutant.id}] smoke campaign (its plugin, stopping at the first broken row)")
+            result.campaign_kills = check_campaign(result, build, out_dir,
+                                                   settings.campaign_jobs, baseline,
+                                                   plugin=build / PLUGIN_PATH)
+            if result.campaign_kills:
+                return True
+        else:
+            log(f"[{mutant.id}] ctest -L dsp" +
+                (" (stopping at the first failure)" if tests_first else ""))
+            # A test the baseline fails would stop it without a verdict.
+            if check_ctest(result, build, out_dir, "dsp", settings.build_jobs, baseline,
+                           stop=tests_first and not baseline.failed_tests):
+                return True
+    return False
+
+
+def known_killers_kill(mutant, result, tree, out_dir, settings, baseline):
+    """Builds the executables of the tests the record names for this mutant
+    (or its most frequent killers) and runs those tests, stopping at the
+    first failure. True when one the baseline passes failed; False sends
+    the mutant the whole way (its tree then builds the rest)."""
+    if settings.killers is None:
+        return False
+    neighbours = settings.neighbours.get(mutant.file, ())
+    if not known_killers.tests_first(mutant.id, settings.killers, neighbours):
+        return False  # the campaign's mutant: the campaign comes first
+    names, why = known_killers.tests_to_try(mutant.id, settings.killers, neighbours)
+    names = [n for n in names if n in settings.test_executables
+             and n not in baseline.failed_tests and n not in SHAPE_TESTS]
+    if not names:
+        return False
+    targets = sorted({settings.test_executables[n] for n in names})
+    log(f"[{mutant.id}] known killers first ({why}): {len(names)} test(s) of "
+        f"{', '.join(targets)}")
+    built, seconds = build_tree(tree, [], settings.build_jobs, out_dir / "build-known.log",
+                                with_stereosim=False, extra_targets=targets)
+    result.build_s += seconds
+    if not built:
+        return False  # the whole build tells stillborn from broken
+    log_path = out_dir / "ctest-known.log"
+    code, seconds = run_step(["ctest", "-R", known_killers.ctest_regex(names),
+                              "--stop-on-failure", "--output-on-failure",
+                              "-j", str(settings.build_jobs)],
+                             tree_build_dir(tree), log_path, CTEST_TIMEOUT_S)
+    result.ctest_s += seconds
+    if code is None or code < 0:
+        add_note(result, "known killers: ctest did not finish")
+        return False
+    failed = known_killers_failed(log_path, code)
+    kills = [entry for name, entry in failed if name not in baseline.failed_tests]
+    if not kills:
+        add_note(result, f"known killers ({why}) did not kill")
+        return False
+    result.killed_by = kills
+    add_note(result, f"killed by known killers ({why}); campaign not run")
+    return True
+
+
+def known_killers_failed(log_path, code):
+    """The failed tests of a `ctest -R --stop-on-failure` log; [] when it
+    passed."""
+    if not code:
+        return []
+    return failed_tests(log_path.read_text(errors="replace"))
 
 
 def build_stereosim(mutant, result, tree, out_dir, settings, baseline):
@@ -785,6 +873,17 @@ def write_reports(results, out_dir, wall_s, baseline=None):
     return text
 
 
+def write_killers(results, settings):
+    """DIR/killers.tsv: the record as this run leaves it (copy it over
+    tests/mutants/firmware-killers.tsv to keep it)."""
+    record = known_killers.read_killers(KILLERS_FILE) if settings.killers is None \
+        else settings.killers
+    record = known_killers.merged_record(record, results)
+    known_killers.write_record(settings.out_dir / "killers.tsv", record)
+    if settings.killers is not None:
+        settings.killers = record  # the mutants still to run learn from these
+
+
 def exit_code(results, baseline=None):
     """1 if a mutant survived unlisted or is an error, or the unmutated tree
     itself breaks the contract or a test; else 0."""
@@ -813,6 +912,9 @@ def parse_args(argv):
     parser.add_argument("--rtl-seed", type=int, default=None)
     parser.add_argument("--clean", action="store_true",
                         help="remove each mutant's build tree after its run")
+    parser.add_argument("--whole", action="store_true",
+                        help="every firmware mutant the whole way (campaign, then ctest -L "
+                             "dsp), not its known killers first")
     parser.add_argument("--no-baseline", action="store_true",
                         help="skip the unmutated baseline tree (its campaign rows and tests "
                              "that fail are otherwise not counted as kills)")
@@ -860,7 +962,25 @@ def run_all(mutants, settings, baseline, jobs, start):
             done[futures[future]] = future.result()
             partial = [done[i] for i in sorted(done)]
             write_reports(partial, settings.out_dir, time.monotonic() - start, baseline)
+            write_killers(partial, settings)
     return [done[i] for i in range(len(mutants))]
+
+
+def load_known_killers(settings, whole):
+    """The record and the main build's test executables, unless --whole or
+    there is no main build to map the tests (then every mutant goes the
+    whole way, said once)."""
+    if whole:
+        return
+    record = known_killers.read_killers(KILLERS_FILE)
+    main_build = REPO / "build"
+    if not (main_build / "CTestTestfile.cmake").exists():
+        log(f"run_mutants: no configured {main_build}: every mutant goes the whole way")
+        return
+    settings.killers = record
+    settings.test_executables = known_killers.test_executables(main_build, "dsp")
+    for mutant in firmware_mutants():
+        settings.neighbours.setdefault(mutant.file, []).append(mutant.id)
 
 
 def main(argv=None):
@@ -883,6 +1003,11 @@ def main(argv=None):
         return 2
     settings = Settings(args.out.resolve(), WORK_DIR / "trees", args.campaign_jobs,
                         args.build_jobs, args.clean, snapshot_working_tree())
+    try:
+        load_known_killers(settings, args.whole)
+    except (ValueError, OSError, subprocess.SubprocessError) as error:
+        print(f"run_mutants: known killers: {error}", file=sys.stderr)
+        return 2
     log(f"run_mutants: {len(mutants)} mutant(s), {args.jobs} at a time, campaign --jobs "
         f"{args.campaign_jobs}, build -j {args.build_jobs}; results in {settings.out_dir}")
     baseline = Baseline()
@@ -899,6 +1024,7 @@ def main(argv=None):
     results = run_all(mutants, settings, baseline, args.jobs, start)
     apply_equivalents(results, read_equivalents())
     text = write_reports(results, settings.out_dir, time.monotonic() - start, baseline)
+    write_killers(results, settings)
     print("\n" + text, end="")
     return exit_code(results, baseline)
 

@@ -6,6 +6,8 @@ parsing and the score. Run: python3 tests/mutants/test_run_mutants.py"""
 
 import json
 import os
+import re
+import subprocess
 import sys
 import time
 import tempfile
@@ -13,6 +15,7 @@ import unittest
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import known_killers as kk  # noqa: E402
 import run_mutants as rm  # noqa: E402
 
 
@@ -297,6 +300,78 @@ class Reports(unittest.TestCase):
             header = (Path(tmp) / "mutants.csv").read_text().splitlines()[0]
             self.assertTrue(header.startswith("id,kind,file,description,status,killed_by,"
                                               "campaign_kills,wall_s,build_s"))
+
+
+class KnownKillers(unittest.TestCase):
+    NAMES = ["dsp.Slow/BoxOnMotion.StaysOnTheObject/pass1", "dsp.Key.Turned"]
+
+    def test_the_record_round_trips_and_a_bad_line_is_named(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            path = Path(tmp) / "k.tsv"
+            record = {"fw-02-b": ["campaign"], "fw-01-a": self.NAMES}
+            kk.write_record(path, record)
+            self.assertEqual(dict(kk.read_killers(path)), record)
+            path.write_text("fw-01-a dsp.Key.Turned\n")
+            with self.assertRaisesRegex(ValueError, "k.tsv:1"):
+                kk.read_killers(path)
+            self.assertEqual(kk.read_killers(Path(tmp) / "none.tsv"), {})
+
+    def test_the_committed_record_names_catalogue_mutants(self):
+        ids = {m.id for m in rm.firmware_mutants()}
+        record = kk.read_killers(rm.KILLERS_FILE)
+        self.assertTrue(record)
+        self.assertEqual([i for i in record if i not in ids], [])
+
+    def test_the_regex_matches_exactly_the_names(self):
+        import re
+        regex = re.compile(kk.ctest_regex(self.NAMES))
+        self.assertTrue(regex.search(self.NAMES[0] + "  # GetParam() = pass1"))
+        self.assertTrue(regex.search(self.NAMES[1]))
+        self.assertFalse(regex.search(self.NAMES[0] + "0"))
+        self.assertFalse(regex.search("dsp.Slow/BoxOnMotion.StaysOnTheObject/pass"))
+        self.assertFalse(regex.search("dsp.KeyXTurned"))
+
+    def test_ctest_selects_exactly_a_mutants_known_killers(self):
+        build = rm.REPO / "build"
+        if not (build / "CTestTestfile.cmake").exists():
+            self.skipTest("no configured build/")
+        table = kk.test_executables(build, "dsp")
+        names = sorted(table)[:3] + sorted(table)[-2:]
+        listed = subprocess.run(["ctest", "-N", "-R", kk.ctest_regex(names)], cwd=build,
+                                capture_output=True, text=True, check=True).stdout
+        found = re.findall(r"Test\s+#\d+: (\S+)", listed)
+        self.assertEqual(sorted(found), sorted(names))
+
+    def test_a_mutant_tries_its_own_killers_else_its_neighbours(self):
+        record = {"fw-01-a": ["campaign"], "fw-02-b": ["t1", "t2"], "fw-03-c": ["t3"],
+                  "fw-04-d": ["t2", "t3"], "fw-05-e": ["t3", "t4"]}
+        self.assertEqual(kk.tests_to_try("fw-01-a", record)[0], [])
+        self.assertEqual(kk.tests_to_try("fw-02-b", record)[0], ["t1", "t2"])
+        self.assertEqual(kk.tests_to_try("fw-09-new", record)[0], ["t3", "t2", "t1", "t4"])
+        self.assertEqual(kk.tests_to_try("fw-09-new", record, ["fw-02-b"])[0],
+                         ["t1", "t2", "t3", "t4"])
+
+    def test_the_campaign_goes_first_unless_the_record_says_tests(self):
+        record = {"fw-01-a": ["campaign"], "fw-02-b": ["t1"], "fw-03-c": ["t2"]}
+        self.assertFalse(kk.tests_first("fw-01-a", record))
+        self.assertTrue(kk.tests_first("fw-02-b", record))
+        self.assertFalse(kk.tests_first("fw-09-new", record))
+        self.assertTrue(kk.tests_first("fw-09-new", record, ["fw-02-b"]))
+        self.assertFalse(kk.tests_first("fw-09-new", record, ["fw-01-a", "fw-02-b"]))
+        self.assertTrue(kk.tests_first("fw-09-new", record, ["fw-01-a", "fw-02-b", "fw-03-c"]))
+
+    def test_a_run_replaces_the_lines_of_the_mutants_it_judged(self):
+        record = {"fw-01-a": ["t1"], "fw-02-b": ["t2"], "fw-03-c": ["t3"]}
+        killed = rm.Result("fw-01-a", "firmware", "dsp/x.cpp", "", status="killed",
+                           killed_by=["ctest:t9 (Failed)", "ctest:t8 (Failed)"],
+                           campaign_kills=False)
+        by_campaign = rm.Result("fw-04-d", "firmware", "dsp/x.cpp", "", status="killed",
+                                killed_by=["campaign:row: ..."], campaign_kills=True)
+        survived = rm.Result("fw-02-b", "firmware", "dsp/x.cpp", "", status="survived")
+        broken = rm.Result("fw-03-c", "firmware", "dsp/x.cpp", "", status="error")
+        merged = kk.merged_record(record, [killed, by_campaign, survived, broken])
+        self.assertEqual(dict(merged), {"fw-01-a": ["t9", "t8"], "fw-03-c": ["t3"],
+                                        "fw-04-d": ["campaign"]})
 
 
 if __name__ == "__main__":
