@@ -23,9 +23,10 @@ from pathlib import Path
 
 CAMPAIGN = "campaign"
 # A mutant's tests tried first, at most; and for a mutant with no record,
-# the record's most frequent killers tried instead.
+# the record's most frequent killers tried instead. The tests tried are
+# left out of the `ctest -L dsp` after them, so a long list only reorders.
 MAX_OWN = 8
-MAX_LIKELY = 12
+MAX_LIKELY = 30
 
 
 def read_killers(path):
@@ -88,11 +89,12 @@ def tests_first(mutant_id, killers, neighbours=()):
     """Whether `ctest -L dsp` goes before the smoke campaign: yes for a
     mutant its record gives to tests; for one with no record, when more of
     its neighbours' records are tests than the campaign (the control
-    program's mutants are the campaign's, the box's the box cases')."""
+    program's mutants are the campaign's, the box's the box cases'), or
+    where none has one, more of the whole record's."""
     own = killers.get(mutant_id)
     if own:
         return CAMPAIGN not in own
-    near = [killers[n] for n in neighbours if n in killers]
+    near = [killers[n] for n in neighbours if n in killers] or list(killers.values())
     by_campaign = sum(CAMPAIGN in checks for checks in near)
     return len(near) - by_campaign > by_campaign
 

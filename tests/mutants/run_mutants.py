@@ -530,12 +530,13 @@ def failed_tests(ctest_output):
     return names
 
 
-def run_ctest(build, log_path, label, jobs, stop=False):
-    """`ctest -L <label>` (with --stop-on-failure if stop): (exit code or
-    None on timeout, seconds, failed tests)."""
+def run_ctest(build, log_path, label, jobs, stop=False, exclude=()):
+    """`ctest -L <label>`, with --stop-on-failure if stop, without the tests
+    named in exclude: (exit code or None on timeout, seconds, failed tests)."""
     command = ["ctest", "-L", label, "--output-on-failure", "-j", str(jobs)]
-    code, seconds = run_step(command + (["--stop-on-failure"] if stop else []),
-                             build, log_path, CTEST_TIMEOUT_S)
+    command += ["--stop-on-failure"] if stop else []
+    command += ["-E", known_killers.ctest_regex(exclude)] if exclude else []
+    code, seconds = run_step(command, build, log_path, CTEST_TIMEOUT_S)
     if code is not None and code < 0:
         raise RuntimeError(f"ctest -L {label} died of signal {-code} (see {log_path})")
     failed = failed_tests(log_path.read_text(errors="replace")) if code else []
@@ -552,10 +553,11 @@ def run_ctest(build, log_path, label, jobs, stop=False):
 SHAPE_TESTS = {"rtl.CardEval.TheShippedCardTakesTheLeanPath"}
 
 
-def check_ctest(result, build, out_dir, label, jobs, baseline, stop=False):
+def check_ctest(result, build, out_dir, label, jobs, baseline, stop=False, exclude=()):
     """`ctest -L <label>` in the mutant's build tree. Returns True when it
     killed: a test failed that passes on the baseline, or a timeout."""
-    code, seconds, failed = run_ctest(build, out_dir / "ctest.log", label, jobs, stop)
+    code, seconds, failed = run_ctest(build, out_dir / "ctest.log", label, jobs, stop,
+                                      exclude)
     result.ctest_s += seconds
     if code is None:
         result.killed_by = [f"crash: ctest -L {label} timed out after {CTEST_TIMEOUT_S} s"]
@@ -671,8 +673,9 @@ def judge_mutant(mutant, result, tree, out_dir, settings, baseline):
     (tree / "src").mkdir(parents=True, exist_ok=True)
     sync_tree(tree / "src", settings.snapshot, mutated_contents(mutant, settings.snapshot))
     label = label_of(mutant.kind)
+    passed = []  # the known killers that passed: not run again
     if mutant.kind == "firmware" and known_killers_kill(mutant, result, tree, out_dir,
-                                                        settings, baseline):
+                                                        settings, baseline, passed):
         result.status = "killed"
         return
     # An RTL mutant's tests come first: they need no stereosim, whose fast
@@ -696,7 +699,7 @@ def judge_mutant(mutant, result, tree, out_dir, settings, baseline):
         return
     build, jobs = tree_build_dir(tree), settings.build_jobs
     if firmware:
-        killed = judge_firmware(mutant, result, build, out_dir, settings, baseline)
+        killed = judge_firmware(mutant, result, build, out_dir, settings, baseline, passed)
     else:
         log(f"[{mutant.id}] ctest -L rtl")
         killed = check_ctest(result, build, out_dir, "rtl", jobs, baseline)
@@ -711,7 +714,7 @@ def judge_mutant(mutant, result, tree, out_dir, settings, baseline):
     result.status = "killed" if killed else "survived"
 
 
-def judge_firmware(mutant, result, build, out_dir, settings, baseline):
+def judge_firmware(mutant, result, build, out_dir, settings, baseline, passed=()):
     """The smoke campaign, then `ctest -L dsp`. With a record (not --whole)
     that does not give the mutant to the campaign, the other way round:
     ctest stopping at its first failure, the campaign only if it left the
@@ -731,16 +734,17 @@ def judge_firmware(mutant, result, build, out_dir, settings, baseline):
                 (" (stopping at the first failure)" if tests_first else ""))
             # A test the baseline fails would stop it without a verdict.
             if check_ctest(result, build, out_dir, "dsp", settings.build_jobs, baseline,
-                           stop=tests_first and not baseline.failed_tests):
+                           stop=tests_first and not baseline.failed_tests, exclude=passed):
                 return True
     return False
 
 
-def known_killers_kill(mutant, result, tree, out_dir, settings, baseline):
+def known_killers_kill(mutant, result, tree, out_dir, settings, baseline, passed):
     """Builds the executables of the tests the record names for this mutant
     (or its most frequent killers) and runs those tests, stopping at the
     first failure. True when one the baseline passes failed; False sends
-    the mutant the whole way (its tree then builds the rest)."""
+    the mutant the whole way (its tree then builds the rest), and when
+    they all ran and passed, their names are put in passed."""
     if settings.killers is None:
         return False
     neighbours = settings.neighbours.get(mutant.file, ())
@@ -770,6 +774,8 @@ def known_killers_kill(mutant, result, tree, out_dir, settings, baseline):
         return False
     failed = known_killers_failed(log_path, code)
     kills = [entry for name, entry in failed if name not in baseline.failed_tests]
+    if not code:
+        passed.extend(names)
     if not kills:
         add_note(result, f"known killers ({why}) did not kill")
         return False
@@ -912,6 +918,9 @@ def parse_args(argv):
     parser.add_argument("--rtl-seed", type=int, default=None)
     parser.add_argument("--clean", action="store_true",
                         help="remove each mutant's build tree after its run")
+    parser.add_argument("--killers", type=Path, default=KILLERS_FILE,
+                        help="the record of known killers (default "
+                             "tests/mutants/firmware-killers.tsv)")
     parser.add_argument("--whole", action="store_true",
                         help="every firmware mutant the whole way (campaign, then ctest -L "
                              "dsp), not its known killers first")
@@ -966,13 +975,13 @@ def run_all(mutants, settings, baseline, jobs, start):
     return [done[i] for i in range(len(mutants))]
 
 
-def load_known_killers(settings, whole):
+def load_known_killers(settings, whole, path=KILLERS_FILE):
     """The record and the main build's test executables, unless --whole or
     there is no main build to map the tests (then every mutant goes the
     whole way, said once)."""
     if whole:
         return
-    record = known_killers.read_killers(KILLERS_FILE)
+    record = known_killers.read_killers(path)
     main_build = REPO / "build"
     if not (main_build / "CTestTestfile.cmake").exists():
         log(f"run_mutants: no configured {main_build}: every mutant goes the whole way")
@@ -1004,7 +1013,7 @@ def main(argv=None):
     settings = Settings(args.out.resolve(), WORK_DIR / "trees", args.campaign_jobs,
                         args.build_jobs, args.clean, snapshot_working_tree())
     try:
-        load_known_killers(settings, args.whole)
+        load_known_killers(settings, args.whole, args.killers)
     except (ValueError, OSError, subprocess.SubprocessError) as error:
         print(f"run_mutants: known killers: {error}", file=sys.stderr)
         return 2

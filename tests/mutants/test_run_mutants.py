@@ -341,6 +341,10 @@ class KnownKillers(unittest.TestCase):
                                 capture_output=True, text=True, check=True).stdout
         found = re.findall(r"Test\s+#\d+: (\S+)", listed)
         self.assertEqual(sorted(found), sorted(names))
+        rest = subprocess.run(["ctest", "-N", "-L", "dsp", "-E", kk.ctest_regex(names)],
+                              cwd=build, capture_output=True, text=True, check=True).stdout
+        self.assertEqual(sorted(re.findall(r"Test\s+#\d+: (\S+)", rest)),
+                         sorted(set(table) - set(names)))
 
     def test_a_mutant_tries_its_own_killers_else_its_neighbours(self):
         record = {"fw-01-a": ["campaign"], "fw-02-b": ["t1", "t2"], "fw-03-c": ["t3"],
@@ -355,7 +359,9 @@ class KnownKillers(unittest.TestCase):
         record = {"fw-01-a": ["campaign"], "fw-02-b": ["t1"], "fw-03-c": ["t2"]}
         self.assertFalse(kk.tests_first("fw-01-a", record))
         self.assertTrue(kk.tests_first("fw-02-b", record))
-        self.assertFalse(kk.tests_first("fw-09-new", record))
+        self.assertTrue(kk.tests_first("fw-09-new", record))
+        self.assertFalse(kk.tests_first("fw-09-new", {"fw-01-a": ["campaign"]}))
+        self.assertFalse(kk.tests_first("fw-09-new", {}))
         self.assertTrue(kk.tests_first("fw-09-new", record, ["fw-02-b"]))
         self.assertFalse(kk.tests_first("fw-09-new", record, ["fw-01-a", "fw-02-b"]))
         self.assertTrue(kk.tests_first("fw-09-new", record, ["fw-01-a", "fw-02-b", "fw-03-c"]))
