@@ -346,6 +346,25 @@ class KnownKillers(unittest.TestCase):
         self.assertEqual(sorted(re.findall(r"Test\s+#\d+: (\S+)", rest)),
                          sorted(set(table) - set(names)))
 
+    def test_the_ctest_after_the_known_killers_runs_the_rest_quick_tests_first(self):
+        build = rm.REPO / "build"
+        if not (build / "CTestTestfile.cmake").exists():
+            self.skipTest("no configured build/")
+        table = kk.test_executables(build, "dsp")
+        passed = [n for n in sorted(table) if rm.SLOW_TESTS in n][:2] + sorted(table)[:1]
+        for stop in (False, True):
+            runs = []
+            for _, include, exclude in rm.ctest_parts(stop, passed):
+                command = ["ctest", "-N", "-L", "dsp"] + (["-R", include] if include else []) \
+                    + (["-E", exclude] if exclude else [])
+                listed = subprocess.run(command, cwd=build, capture_output=True, text=True,
+                                        check=True).stdout
+                runs.append(re.findall(r"Test\s+#\d+: (\S+)", listed))
+            self.assertEqual(sorted(sum(runs, [])), sorted(set(table) - set(passed)))
+            if stop:
+                self.assertFalse([n for n in runs[0] if rm.SLOW_TESTS in n])
+                self.assertTrue(runs[0] and runs[1])
+
     def test_a_mutant_tries_its_own_killers_else_its_neighbours(self):
         record = {"fw-01-a": ["campaign"], "fw-02-b": ["t1", "t2"], "fw-03-c": ["t3"],
                   "fw-04-d": ["t2", "t3"], "fw-05-e": ["t3", "t4"]}
