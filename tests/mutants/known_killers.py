@@ -125,7 +125,7 @@ def merged_record(killers, results):
     lines; a mutant this run judged otherwise loses them; others keep them."""
     merged = collections.OrderedDict((k, list(v)) for k, v in killers.items())
     for result in results:
-        if result.kind != "firmware" or result.status == "error":
+        if result.kind != "firmware" or result.status in ("error", "unjudged"):
             continue
         merged.pop(result.id, None)
         if result.status == "killed":

@@ -116,7 +116,7 @@ class Result:
     kind: str
     file: str
     description: str
-    status: str = "error"    # killed | survived | equivalent | stillborn | error
+    status: str = "error"    # killed | survived | equivalent | stillborn | error | unjudged
     killed_by: list = dataclasses.field(default_factory=list)
     campaign_kills: object = None  # True / False, None when the campaign did not run
     wall_s: float = 0.0
@@ -642,6 +642,7 @@ class Settings:
     killers: object = None
     test_executables: dict = dataclasses.field(default_factory=dict)
     neighbours: dict = dataclasses.field(default_factory=dict)  # {file: [mutant id, ...]}
+    known_only: bool = False  # a firmware mutant its known killers leave is `unjudged`
 
 
 def run_mutant(mutant, settings, baseline):
@@ -682,6 +683,10 @@ def judge_mutant(mutant, result, tree, out_dir, settings, baseline):
                                                         settings, baseline, passed):
         result.status = "killed"
         return
+    if mutant.kind == "firmware" and settings.known_only:
+        result.status = "unjudged"
+        add_note(result, "--known-only: not judged the whole way")
+        return
     # An RTL mutant's tests come first: they need no stereosim, whose fast
     # card evaluation may not fit a mutated netlist (below).
     firmware = mutant.kind == "firmware"
@@ -720,8 +725,8 @@ def judge_mutant(mutant, result, tree, out_dir, settings, baseline):
 
 def judge_firmware(mutant, result, build, out_dir, settings, baseline, passed=()):
     """The smoke campaign, then `ctest -L dsp`. With a record (not --whole)
-    that does not give the mutant to the campaign, the other way round:
-    ctest stopping at its first failure, the campaign only if it left the
+    ctest stops at its first failure, and for a mutant the record does not
+    give to the campaign it comes first, the campaign only if it left the
     mutant alive (a box mutant is hardly ever the campaign's)."""
     tests_first = settings.killers is not None and known_killers.tests_first(
         mutant.id, settings.killers, settings.neighbours.get(mutant.file, ()))
@@ -734,7 +739,7 @@ def judge_firmware(mutant, result, build, out_dir, settings, baseline, passed=()
             if result.campaign_kills:
                 return True
         elif ctest_kills(mutant, result, build, out_dir, settings, baseline,
-                         tests_first and not baseline.failed_tests, passed):
+                         settings.killers is not None and not baseline.failed_tests, passed):
             return True
     return False
 
@@ -854,15 +859,17 @@ def apply_equivalents(results, equivalents):
 
 def summary(results, wall_s):
     count = {s: sum(r.status == s for r in results)
-             for s in ("killed", "survived", "equivalent", "stillborn", "error")}
-    judged = len(results) - count["equivalent"] - count["stillborn"]
+             for s in ("killed", "survived", "equivalent", "stillborn", "error", "unjudged")}
+    judged = len(results) - count["equivalent"] - count["stillborn"] - count["unjudged"]
     score = 100.0 * count["killed"] / judged if judged else 0.0
     firmware = [r for r in results if r.kind == "firmware" and r.campaign_kills is not None
                 and r.status != "equivalent"]
     by_campaign = sum(bool(r.campaign_kills) for r in firmware)
     return (f"mutants: {len(results)} total, {count['killed']} killed, {count['survived']} "
             f"survived, {count['equivalent']} equivalent, {count['stillborn']} stillborn, "
-            f"{count['error']} error; mutation score {score:.1f} % "
+            f"{count['error']} error" +
+            (f", {count['unjudged']} unjudged (--known-only)" if count["unjudged"] else "") +
+            f"; mutation score {score:.1f} % "
             f"({count['killed']}/{judged}); the smoke campaign alone kills {by_campaign} of "
             f"{len(firmware)} firmware mutants; wall {wall_s:.1f} s")
 
@@ -917,9 +924,9 @@ def write_killers(results, settings):
 
 
 def exit_code(results, baseline=None):
-    """1 if a mutant survived unlisted or is an error, or the unmutated tree
-    itself breaks the contract or a test; else 0."""
-    bad = [r for r in results if r.status in ("survived", "error")]
+    """1 if a mutant survived unlisted, is an error or was not judged, or
+    the unmutated tree itself breaks the contract or a test; else 0."""
+    bad = [r for r in results if r.status in ("survived", "error", "unjudged")]
     baseline_broken = baseline is not None and (baseline.broken_rows or baseline.failed_tests)
     return 1 if bad or baseline_broken else 0
 
@@ -947,6 +954,9 @@ def parse_args(argv):
     parser.add_argument("--killers", type=Path, default=KILLERS_FILE,
                         help="the record of known killers (default "
                              "tests/mutants/firmware-killers.tsv)")
+    parser.add_argument("--known-only", action="store_true",
+                        help="judge firmware mutants by their known killers only: one they "
+                             "leave alive is `unjudged` (a quick re-check of the record)")
     parser.add_argument("--whole", action="store_true",
                         help="every firmware mutant the whole way (campaign, then ctest -L "
                              "dsp), not its known killers first")
@@ -1040,6 +1050,7 @@ def main(argv=None):
                         args.build_jobs, args.clean, snapshot_working_tree())
     try:
         load_known_killers(settings, args.whole, args.killers)
+        settings.known_only = args.known_only and settings.killers is not None
     except (ValueError, OSError, subprocess.SubprocessError) as error:
         print(f"run_mutants: known killers: {error}", file=sys.stderr)
         return 2

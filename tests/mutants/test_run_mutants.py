@@ -394,9 +394,20 @@ class KnownKillers(unittest.TestCase):
                                 killed_by=["campaign:row: ..."], campaign_kills=True)
         survived = rm.Result("fw-02-b", "firmware", "dsp/x.cpp", "", status="survived")
         broken = rm.Result("fw-03-c", "firmware", "dsp/x.cpp", "", status="error")
-        merged = kk.merged_record(record, [killed, by_campaign, survived, broken])
+        unjudged = rm.Result("fw-05-e", "firmware", "dsp/x.cpp", "", status="unjudged")
+        record["fw-05-e"] = ["t5"]
+        merged = kk.merged_record(record, [killed, by_campaign, survived, broken, unjudged])
         self.assertEqual(dict(merged), {"fw-01-a": ["t9", "t8"], "fw-03-c": ["t3"],
-                                        "fw-04-d": ["campaign"]})
+                                        "fw-04-d": ["campaign"], "fw-05-e": ["t5"]})
+
+    def test_an_unjudged_mutant_is_not_scored_and_fails_the_run(self):
+        results = [rm.Result("fw-01-a", "firmware", "dsp/x.cpp", "", status="killed"),
+                   rm.Result("fw-02-b", "firmware", "dsp/x.cpp", "", status="unjudged")]
+        text = rm.summary(results, 1.0)
+        self.assertIn("1 unjudged", text)
+        self.assertIn("100.0 % (1/1)", text)
+        self.assertEqual(rm.exit_code(results), 1)
+        self.assertEqual(rm.exit_code(results[:1]), 0)
 
 
 if __name__ == "__main__":
