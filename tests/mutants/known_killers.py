@@ -77,12 +77,13 @@ def tests_to_try(mutant_id, killers, neighbours=()):
     own = killers.get(mutant_id, [])
     if CAMPAIGN in own:
         return [], "its record's killer is the campaign"
-    if own:
-        return own[:MAX_OWN], "its record"
     near = likely_killers({k: v for k, v in killers.items() if k in set(neighbours)},
                           MAX_LIKELY // 2)
     rest = [n for n in likely_killers(killers, MAX_LIKELY) if n not in near]
-    return (near + rest)[:MAX_LIKELY], "the record's most frequent killers"
+    likely = [n for n in (near + rest)[:MAX_LIKELY] if n not in own[:MAX_OWN]]
+    if own:
+        return own[:MAX_OWN] + likely, "its record, then the record's most frequent killers"
+    return likely, "the record's most frequent killers"
 
 
 def tests_first(mutant_id, killers, neighbours=()):

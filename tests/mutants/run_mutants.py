@@ -683,7 +683,7 @@ def judge_mutant(mutant, result, tree, out_dir, settings, baseline):
                                                         settings, baseline, passed):
         result.status = "killed"
         return
-    if mutant.kind == "firmware" and settings.known_only:
+    if mutant.kind == "firmware" and settings.known_only and campaign_later(mutant, settings):
         result.status = "unjudged"
         add_note(result, "--known-only: not judged the whole way")
         return
@@ -721,6 +721,15 @@ def judge_mutant(mutant, result, tree, out_dir, settings, baseline):
                                                    settings.campaign_jobs, baseline)
             killed = result.campaign_kills
     result.status = "killed" if killed else "survived"
+    if not killed and firmware and settings.known_only:
+        result.status = "unjudged"  # the campaign, its known killer, did not kill
+        add_note(result, "--known-only: not judged the whole way")
+
+
+def campaign_later(mutant, settings):
+    """Whether the tests go before the campaign for a firmware mutant."""
+    return settings.killers is not None and known_killers.tests_first(
+        mutant.id, settings.killers, settings.neighbours.get(mutant.file, ()))
 
 
 def judge_firmware(mutant, result, build, out_dir, settings, baseline, passed=()):
@@ -728,9 +737,10 @@ def judge_firmware(mutant, result, build, out_dir, settings, baseline, passed=()
     ctest stops at its first failure, and for a mutant the record does not
     give to the campaign it comes first, the campaign only if it left the
     mutant alive (a box mutant is hardly ever the campaign's)."""
-    tests_first = settings.killers is not None and known_killers.tests_first(
-        mutant.id, settings.killers, settings.neighbours.get(mutant.file, ()))
-    for step in (("ctest", "campaign") if tests_first else ("campaign", "ctest")):
+    tests_first = campaign_later(mutant, settings)
+    steps = ("ctest", "campaign") if tests_first else ("campaign", "ctest")
+    # --known-only: a mutant here is the campaign's, and the campaign its known killer.
+    for step in steps[:1] if settings.known_only else steps:
         if step == "campaign":
             log(f"[{mutant.id}] smoke campaign (its plugin, stopping at the first broken row)")
             result.campaign_kills = check_campaign(result, build, out_dir,

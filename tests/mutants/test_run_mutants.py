@@ -369,7 +369,7 @@ class KnownKillers(unittest.TestCase):
         record = {"fw-01-a": ["campaign"], "fw-02-b": ["t1", "t2"], "fw-03-c": ["t3"],
                   "fw-04-d": ["t2", "t3"], "fw-05-e": ["t3", "t4"]}
         self.assertEqual(kk.tests_to_try("fw-01-a", record)[0], [])
-        self.assertEqual(kk.tests_to_try("fw-02-b", record)[0], ["t1", "t2"])
+        self.assertEqual(kk.tests_to_try("fw-02-b", record)[0], ["t1", "t2", "t3", "t4"])
         self.assertEqual(kk.tests_to_try("fw-09-new", record)[0], ["t3", "t2", "t1", "t4"])
         self.assertEqual(kk.tests_to_try("fw-09-new", record, ["fw-02-b"])[0],
                          ["t1", "t2", "t3", "t4"])
