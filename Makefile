@@ -158,7 +158,8 @@ coverage-full:
 # MUTANT_JOBS mutants at a time (empty: the runner's default, 1).
 MUTANT_JOBS ?=
 MUTANTS_ARGS ?=
-# mutants-ci: a fixed slice the smoke campaign kills, three firmware mutants
+# mutants-ci: a fixed slice the smoke campaign kills (--whole: the campaign
+# first, whatever the record of known killers says), three firmware mutants
 # of different kinds (the left frame processed twice: pair identity; the
 # watchdog re-arming a healthy card every period: rule 11 over the clean soak
 # row; an overflow re-arm counted towards the give-up: rule 4 over the row of
@@ -183,6 +184,6 @@ mutants-ci: build
 	else \
 		echo "mutants-ci: tests/mutants/rtl/generate does not exist yet: firmware mutants only"; rtl=""; \
 	fi; \
-	set -x; python3 tests/mutants/run_mutants.py --kind $$kind $$rtl_args --no-baseline \
+	set -x; python3 tests/mutants/run_mutants.py --kind $$kind $$rtl_args --no-baseline --whole \
 		--only $(MUTANTS_CI_FIRMWARE)$${rtl:+,$$rtl} --out build-mutants/results-ci \
 		$(if $(MUTANT_JOBS),--jobs $(MUTANT_JOBS)) $(MUTANTS_ARGS)
