@@ -643,6 +643,7 @@ class Settings:
     test_executables: dict = dataclasses.field(default_factory=dict)
     neighbours: dict = dataclasses.field(default_factory=dict)  # {file: [mutant id, ...]}
     known_only: bool = False  # a firmware mutant its known killers leave is `unjudged`
+    killers_file: Path = KILLERS_FILE
 
 
 def run_mutant(mutant, settings, baseline):
@@ -786,12 +787,10 @@ def known_killers_kill(mutant, result, tree, out_dir, settings, baseline, passed
     first failure. True when one the baseline passes failed; False sends
     the mutant the whole way (its tree then builds the rest), and when
     they all ran and passed, their names are put in passed."""
-    if settings.killers is None:
-        return False
-    neighbours = settings.neighbours.get(mutant.file, ())
-    if not known_killers.tests_first(mutant.id, settings.killers, neighbours):
-        return False  # the campaign's mutant: the campaign comes first
-    names, why = known_killers.tests_to_try(mutant.id, settings.killers, neighbours)
+    if not campaign_later(mutant, settings):
+        return False  # --whole, or the campaign's mutant: the campaign comes first
+    names, why = known_killers.tests_to_try(mutant.id, settings.killers,
+                                            settings.neighbours.get(mutant.file, ()))
     names = [n for n in names if n in settings.test_executables
              and n not in baseline.failed_tests and n not in SHAPE_TESTS]
     if not names:
@@ -804,33 +803,15 @@ def known_killers_kill(mutant, result, tree, out_dir, settings, baseline, passed
     result.build_s += seconds
     if not built:
         return False  # the whole build tells stillborn from broken
-    log_path = out_dir / "ctest-known.log"
-    code, seconds = run_step(["ctest", "-R", known_killers.ctest_regex(names),
-                              "--stop-on-failure", "--output-on-failure",
-                              "-j", str(settings.build_jobs)],
-                             tree_build_dir(tree), log_path, CTEST_TIMEOUT_S)
-    result.ctest_s += seconds
-    if code is None or code < 0:
-        add_note(result, "known killers: ctest did not finish")
-        return False
-    failed = known_killers_failed(log_path, code)
-    kills = [entry for name, entry in failed if name not in baseline.failed_tests]
-    if not code:
+    # The names hold no baseline failure: a pass that did not kill passed them all.
+    if not check_ctest(result, tree_build_dir(tree), out_dir, "dsp", settings.build_jobs,
+                       baseline, stop=True, include=known_killers.ctest_regex(names),
+                       log_name="ctest-known.log"):
         passed.extend(names)
-    if not kills:
         add_note(result, f"known killers ({why}) did not kill")
         return False
-    result.killed_by = kills
     add_note(result, f"killed by known killers ({why}); campaign not run")
     return True
-
-
-def known_killers_failed(log_path, code):
-    """The failed tests of a `ctest -R --stop-on-failure` log; [] when it
-    passed."""
-    if not code:
-        return []
-    return failed_tests(log_path.read_text(errors="replace"))
 
 
 def build_stereosim(mutant, result, tree, out_dir, settings, baseline):
@@ -925,7 +906,7 @@ def write_reports(results, out_dir, wall_s, baseline=None):
 def write_killers(results, settings):
     """DIR/killers.tsv: the record as this run leaves it (copy it over
     tests/mutants/firmware-killers.tsv to keep it)."""
-    record = known_killers.read_killers(KILLERS_FILE) if settings.killers is None \
+    record = known_killers.read_killers(settings.killers_file) if settings.killers is None \
         else settings.killers
     record = known_killers.merged_record(record, results)
     known_killers.write_record(settings.out_dir / "killers.tsv", record)
@@ -1025,6 +1006,7 @@ def load_known_killers(settings, whole, path=KILLERS_FILE):
     """The record and the main build's test executables, unless --whole or
     there is no main build to map the tests (then every mutant goes the
     whole way, said once)."""
+    settings.killers_file = path
     if whole:
         return
     record = known_killers.read_killers(path)
