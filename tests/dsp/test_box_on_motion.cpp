@@ -17,7 +17,8 @@
 // slow passes spinning at 0.5 to 3 rev/s (suite SlowSpinning); slow small
 // balls entering the view from its edge (round 18); fast balls whose shaded
 // rim the differences miss over teddy (suite ShadedRim) and passes
-// leftwards (round 20).
+// leftwards (round 20); a fast throw's apex 4 m away (ThrowApex) and large
+// balls thrown at half speed (LargeSlowThrow).
 //
 // The firmware before the silhouette refit (the box moved by the SAD
 // pattern and pulled towards object(t-1)) failed 11 of the first 12 cases
@@ -1212,6 +1213,53 @@ INSTANTIATE_TEST_SUITE_P(ShortFromStereo, BoxOnMotion,
 INSTANTIATE_TEST_SUITE_P(TurnedDetection, BoxOnMotion,
                          ::testing::Values(motion_case{"heldout24_recede100px_1pxpf_2rps_y_photo",
                                                        100, 2.6, recede, 0.2, 2.0, 'y', photo, 24}),
+                         case_name);
+
+// A fast throw's apex: a small ball thrown at 2.2 times the default speed
+// 4 m away (28 px a frame at the throw), where the extent window still
+// reads the rise. Across y the box is fitted to the window only across a
+// fast motion along x (dsp/controller_track.cpp, follow_object): fitted on
+// any fast axis it went 9.5-15 px above the apex (mutant fw-103: 1.23-2.60
+// / 9.54-14.92 px, depth 1.8-3.8 %; this firmware 0.79-1.05 / 1.95-2.41 px,
+// 0.58-0.80 %).
+// Written to show that bug, with the variants run beside them
+// (docs/mutants.md): development cases, not held out.
+INSTANTIATE_TEST_SUITE_P(ThrowApex, BoxOnMotion,
+                         ::testing::Values(motion_case{"apex40px_2_2_4rps_x_teddy_4m", 40, 4.0,
+                                                       thrown, 2.2, 4.0, 'x', photo4, 24},
+                                           motion_case{"apex40px_2_2_4rps_x_venus_4m", 40, 4.0,
+                                                       thrown, 2.2, 4.0, 'x', venus, 24},
+                                           motion_case{"apex40px_2_2_teddy_4m", 40, 4.0, thrown,
+                                                       2.2, 0.0, 'x', photo4, 24}),
+                         case_name);
+
+// A large ball thrown at half speed over teddy: its detection is a part of
+// it (up to 38 px off its centre), which is grown on x where both differences' x
+// edges stood, whatever its y edges did (the throw rises 8 px a frame).
+// Grown only where all its edges stood, the box stayed narrow for its
+// first pairs and the depth was 1.12-1.22 % off (mutant fw-105; this
+// firmware 0.32-0.53 %). Written to show that bug, development cases.
+INSTANTIATE_TEST_SUITE_P(LargeSlowThrow, BoxOnMotion,
+                         ::testing::Values(motion_case{"throw200px_half_1rps_x_teddy", 200, 2.6,
+                                                       thrown, 0.5, 1.0, 'x', photo4, 40},
+                                           motion_case{"throw220px_half_1rps_x_teddy", 220, 2.6,
+                                                       thrown, 0.5, 1.0, 'x', photo4, 40},
+                                           motion_case{"throw200px_half_1rps_z_teddy", 200, 2.6,
+                                                       thrown, 0.5, 1.0, 'z', photo4, 40}),
+                         case_name);
+
+// Open: small balls thrown fast 3.5-4 m away, found while looking for the
+// apex cases above. The box centre stays within its bounds, but at one pair
+// near the bounce the depth is off by more than 1 % (23.7 px of disparity
+// at 4 m: 1 % is 0.24 px). 30 px at 28 px a frame: 1.22 / 3.87 px, depth
+// 1.37 % (pair 16), and one box side 1 px past its bound; 40 px at 3.5 m,
+// 30 px a frame: 0.72 / 1.92 px, depth 1.45 % (pair 17). Not run by default
+// (DISABLED_): the firmware does not meet them yet.
+INSTANTIATE_TEST_SUITE_P(DISABLED_Open, BoxOnMotion,
+                         ::testing::Values(motion_case{"throw30px_2_2_4rps_x_teddy_4m", 30, 4.0,
+                                                       thrown, 2.2, 4.0, 'x', photo4, 24},
+                                           motion_case{"throw40px_2_0_4rps_x_teddy_3_5m", 40, 3.5,
+                                                       thrown, 2.0, 4.0, 'x', photo4, 24}),
                          case_name);
 
 }  // namespace
