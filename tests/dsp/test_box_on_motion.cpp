@@ -1234,8 +1234,9 @@ INSTANTIATE_TEST_SUITE_P(ThrowApex, BoxOnMotion,
                          case_name);
 
 // A large ball thrown at half speed over teddy: its detection is a part of
-// it (up to 38 px off its centre), which is grown on x where both differences' x
-// edges stood, whatever its y edges did (the throw rises 8 px a frame).
+// it (up to 38 px off its centre), which is grown on x where both
+// differences' x edges stood, whatever its y edges did (the throw rises
+// 8 px a frame).
 // Grown only where all its edges stood, the box stayed narrow for its
 // first pairs and the depth was 1.12-1.22 % off (mutant fw-105; this
 // firmware 0.32-0.53 %). Written to show that bug, development cases.
