@@ -1249,18 +1249,183 @@ INSTANTIATE_TEST_SUITE_P(LargeSlowThrow, BoxOnMotion,
                                                        thrown, 0.5, 1.0, 'z', photo4, 40}),
                          case_name);
 
+// The rigs of PrincipalOffset under slower balls going away for 40 frames
+// (2.0 m to 3.8 m, the image shrinking to half its start's): the box is
+// carried from pair to pair by the ratio of the disparities less the
+// principal points' offset (dsp/size_at_depth.h), and the depth is read
+// over the box. With the offset kept in the ratio (mutant fw-110) the
+// depth was 1.12-2.40 % off (the 60 px ball's box also 2.79 / 4.61 px off
+// its centre, a side 27 % off); this firmware 0.41-0.57 %, 0.95-1.05 /
+// 1.95-2.71 px. Written to show that bug, development cases.
+INSTANTIATE_TEST_SUITE_P(PrincipalOffsetReceding, BoxOnMotion,
+                         ::testing::Values(motion_case{"recede60px_3pxpf_1rps_y_teddy_dcx16", 60,
+                                                       2.0, recede, 0.3, 1.0, 'y', photo4, 40,
+                                                       16.0},
+                                           motion_case{"recede80px_2pxpf_teddy_dcx12", 80, 2.0,
+                                                       recede, 0.2, 0.0, 'x', photo4, 40, 12.0},
+                                           motion_case{"recede80px_2pxpf_aloe_dcx16", 80, 2.0,
+                                                       recede, 0.2, 0.0, 'x', aloe, 40, 16.0}),
+                         case_name);
+
+// Round 26's ball coming nearer over teddy, larger (110-130 px) and
+// faster (6 px a frame): its leading rim fades into teddy's dark parts,
+// where the differences measure its size short (dsp/extent_window.h,
+// fading_rim_step2). That short size is a rim the differences missed: the
+// box keeps the last size. Refused as a size (mutant fw-137: the follow
+// gives up) or taken as the object's (fw-138: the box shrinks with the
+// rim), the depth read over the box was 1.01-1.14 % off; this firmware
+// 0.45-0.60 %. Written to show those bugs, development cases.
+INSTANTIATE_TEST_SUITE_P(
+    FadingRimNearer, BoxOnMotion,
+    ::testing::Values(
+        motion_case{"approach120px_6pxpf_teddy_3m", 120, 3.0, approach, 0.8, 0.0, 'x', photo4, 24},
+        motion_case{"approach120px_6pxpf_teddy", 120, 2.6, approach, 0.8, 0.0, 'x', photo4, 24},
+        motion_case{"approach130px_6pxpf_teddy", 130, 2.6, approach, 0.8, 0.0, 'x', photo4, 24},
+        motion_case{"approach110px_6pxpf_teddy", 110, 2.6, approach, 0.8, 0.0, 'x', photo4, 24}),
+    case_name);
+
+// Balls 120-125 px going away over teddy at 6.5 px a frame, spinning
+// 1 rev/s: a trailing edge that moved steadily where the leading rim fades
+// is a motion the extent window read, and drops a key taken on the slowed
+// box (dsp/controller_track.cpp, follow_object; dsp/controller_key.cpp).
+// Not read as a motion (mutant fw-132), the key was kept on the moving
+// ball and the depth was 1.02-1.16 % off; this firmware 0.62-0.78 %.
+// Written to show that bug, development cases, in a neighbourhood where
+// the firmware fails other cases (DISABLED_Open).
+INSTANTIATE_TEST_SUITE_P(TrailingEdgeReceding, BoxOnMotion,
+                         ::testing::Values(motion_case{"recede125px_6pxpf_1rps_y_teddy", 125, 2.6,
+                                                       recede, 1.0, 1.0, 'y', photo4, 24},
+                                           motion_case{"recede125px_6pxpf_1rps_y_teddy_2_5m", 125,
+                                                       2.5, recede, 1.0, 1.0, 'y', photo4, 24},
+                                           motion_case{"recede120px_6pxpf_1rps_y_teddy", 120, 2.6,
+                                                       recede, 1.0, 1.0, 'y', photo4, 24}),
+                         case_name);
+
+// Held out, round 78: 40 cases drawn at random (seed 78) over the issue's
+// envelope before they were run: every path, balls 12-240 px wide 2-4 m
+// away, spinning 1-10 rev/s about any axis or not at all, over every
+// backdrop, 24-40 frames. Run once on this firmware: five moved faster
+// than 30 px a frame (out of the envelope, left out); of the other 35,
+// these 26 passed and 9 failed (DISABLED_Open).
+INSTANTIATE_TEST_SUITE_P(
+    HeldOutSweep78, BoxOnMotion,
+    ::testing::Values(motion_case{"heldout78_01_recede121px_2_4m_kodim23", 121, 2.4, recede, 3.5,
+                                  0.0, 'x', photo2, 32},
+                      motion_case{"heldout78_02_recede33px_3_3m_2_7rps_y", 33, 3.3, recede, 3.6,
+                                  2.7, 'y', procedural, 24},
+                      motion_case{"heldout78_05_enter24px_3_6m_tsukuba", 24, 3.6, enter, 2.2, 0.0,
+                                  'x', tsukuba, 32},
+                      motion_case{"heldout78_07_pass176px_2_9m_2_2rps_x_aloe", 176, 2.9, pass, 2.2,
+                                  2.2, 'x', aloe, 40},
+                      motion_case{"heldout78_08_approach55px_3_9m_aloe", 55, 3.9, approach, 0.7,
+                                  0.0, 'y', aloe, 24},
+                      motion_case{"heldout78_09_approach17px_2_4m_teddy", 17, 2.4, approach, 0.3,
+                                  0.0, 'y', photo4, 40},
+                      motion_case{"heldout78_10_circle160px_3_0m_6_7rps_x_aloe", 160, 3.0, circle,
+                                  0.5, 6.7, 'x', aloe, 24},
+                      motion_case{"heldout78_11_enter127px_2_5m_teddy", 127, 2.5, enter, 0.3, 0.0,
+                                  'z', photo4, 32},
+                      motion_case{"heldout78_12_pass51px_2_7m_tsukuba", 51, 2.7, pass, 1.9, 0.0,
+                                  'y', tsukuba, 32},
+                      motion_case{"heldout78_15_pass80px_3_0m_5_6rps_z_venus", 80, 3.0, pass, 2.8,
+                                  5.6, 'z', venus, 40},
+                      motion_case{"heldout78_17_recede79px_2_8m_aloe", 79, 2.8, recede, 1.6, 0.0,
+                                  'z', aloe, 32},
+                      motion_case{"heldout78_18_thrown21px_3_8m_8_8rps_z_kodim19", 21, 3.8, thrown,
+                                  0.8, 8.8, 'z', photo3, 24},
+                      motion_case{"heldout78_20_circle176px_3_9m_7_5rps_y_aloe", 176, 3.9, circle,
+                                  1.1, 7.5, 'y', aloe, 40},
+                      motion_case{"heldout78_21_thrown119px_3_2m_tsukuba", 119, 3.2, thrown, 0.7,
+                                  0.0, 'x', tsukuba, 24},
+                      motion_case{"heldout78_22_enter135px_3_2m_6_2rps_y_aloe", 135, 3.2, enter,
+                                  2.2, 6.2, 'y', aloe, 32},
+                      motion_case{"heldout78_23_left58px_3_0m_4_5rps_x_aloe", 58, 3.0, pass_left,
+                                  4.8, 4.5, 'x', aloe, 32},
+                      motion_case{"heldout78_24_back53px_3_1m_9rps_z_kodim23", 53, 3.1, circle_back,
+                                  2.5, 9.0, 'z', photo2, 32},
+                      motion_case{"heldout78_25_approach135px_3_8m_5_3rps_z_kodim23", 135, 3.8,
+                                  approach, 2.3, 5.3, 'z', photo2, 24},
+                      motion_case{"heldout78_26_left68px_2_1m_9rps_y_aloe", 68, 2.1, pass_left, 4.8,
+                                  9.0, 'y', aloe, 32},
+                      motion_case{"heldout78_27_enter46px_2_7m_2_3rps_y_teddy", 46, 2.7, enter, 0.6,
+                                  2.3, 'y', photo4, 32},
+                      motion_case{"heldout78_28_recede101px_2_7m_7_5rps_z", 101, 2.7, recede, 0.4,
+                                  7.5, 'z', procedural, 24},
+                      motion_case{"heldout78_29_enter123px_3_8m_7_5rps_y_venus", 123, 3.8, enter,
+                                  3.0, 7.5, 'y', venus, 32},
+                      motion_case{"heldout78_30_enter32px_3_1m_1_6rps_x_kodim19", 32, 3.1, enter,
+                                  1.0, 1.6, 'x', photo3, 32},
+                      motion_case{"heldout78_35_thrown42px_3_3m_7_5rps_y", 42, 3.3, thrown, 1.6,
+                                  7.5, 'y', procedural, 40},
+                      motion_case{"heldout78_36_thrown85px_2_4m_3_7rps_y_kodim19", 85, 2.4, thrown,
+                                  0.7, 3.7, 'y', photo3, 40},
+                      motion_case{"heldout78_37_thrown80px_2_6m_5_9rps_y_aloe", 80, 2.6, thrown,
+                                  0.8, 5.9, 'y', aloe, 24}),
+    case_name);
+
 // Open: small balls thrown fast 3.5-4 m away, found while looking for the
 // apex cases above. The box centre stays within its bounds, but at one pair
 // near the bounce the depth is off by more than 1 % (23.7 px of disparity
 // at 4 m: 1 % is 0.24 px). 30 px at 28 px a frame: 1.22 / 3.87 px, depth
 // 1.37 % (pair 16), and one box side 1 px past its bound; 40 px at 3.5 m,
-// 30 px a frame: 0.72 / 1.92 px, depth 1.45 % (pair 17). Not run by default
-// (DISABLED_): the firmware does not meet them yet.
-INSTANTIATE_TEST_SUITE_P(DISABLED_Open, BoxOnMotion,
-                         ::testing::Values(motion_case{"throw30px_2_2_4rps_x_teddy_4m", 30, 4.0,
-                                                       thrown, 2.2, 4.0, 'x', photo4, 24},
-                                           motion_case{"throw40px_2_0_4rps_x_teddy_3_5m", 40, 3.5,
-                                                       thrown, 2.0, 4.0, 'x', photo4, 24}),
-                         case_name);
+// 30 px a frame: 0.72 / 1.92 px, depth 1.45 % (pair 17).
+// Round 78's nine held-out failures (HeldOutSweep78): seven of its ten
+// balls under 30 px wide fail (the 16 px and 17 px circles over kodim23
+// with the depth 26 % and 70 % off), the 185 px ball going away over aloe
+// loses its track, the 160 px one over kodim23 is 24.7 px off at one pair.
+// Balls 120-140 px going away over teddy at 6-8 px a frame, most spinning,
+// tried beside round 23's 120 px ball (which passes): 10 of 24 fail at 24
+// frames (13.7-22.8 px off at one pair, or the depth 1.16-6.08 % off), and
+// two more at 30 frames (20.4 px; depth 1.15 %) past their 24th.
+// Runs of 40 frames: a 100 px ball going away slowly over teddy (one side
+// 1.4 px past its bound), a 20 px ball coming nearer over kodim19 (0.6 px).
+// Not run by default (DISABLED_): the firmware does not meet them yet.
+INSTANTIATE_TEST_SUITE_P(
+    DISABLED_Open, BoxOnMotion,
+    ::testing::Values(
+        motion_case{"throw30px_2_2_4rps_x_teddy_4m", 30, 4.0, thrown, 2.2, 4.0, 'x', photo4, 24},
+        motion_case{"throw40px_2_0_4rps_x_teddy_3_5m", 40, 3.5, thrown, 2.0, 4.0, 'x', photo4, 24},
+        motion_case{"heldout78_00_circle16px_3_8m_3_3rps_x_kodim23", 16, 3.8, circle, 2.6, 3.3, 'x',
+                    photo2, 40},
+        motion_case{"heldout78_03_left22px_2_9m_6_8rps_z_kodim23", 22, 2.9, pass_left, 0.9, 6.8,
+                    'z', photo2, 40},
+        motion_case{"heldout78_04_recede185px_3_9m_aloe", 185, 3.9, recede, 0.6, 0.0, 'x', aloe,
+                    40},
+        motion_case{"heldout78_06_back17px_3_1m_kodim23", 17, 3.1, circle_back, 2.9, 0.0, 'y',
+                    photo2, 24},
+        motion_case{"heldout78_13_recede14px_2_3m_1_7rps_z_aloe", 14, 2.3, recede, 3.2, 1.7, 'z',
+                    aloe, 40},
+        motion_case{"heldout78_14_enter21px_2_3m_7_4rps_y_venus", 21, 2.3, enter, 3.4, 7.4, 'y',
+                    venus, 24},
+        motion_case{"heldout78_16_circle29px_2_5m_8_7rps_x_kodim23", 29, 2.5, circle, 1.7, 8.7, 'x',
+                    photo2, 32},
+        motion_case{"heldout78_31_recede160px_2_9m_kodim23", 160, 2.9, recede, 0.3, 0.0, 'y',
+                    photo2, 32},
+        motion_case{"heldout78_32_circle21px_3_5m_cones", 21, 3.5, circle, 1.3, 0.0, 'x', photo,
+                    32},
+        motion_case{"recede140px_6pxpf_1rps_y_teddy_3m", 140, 3.0, recede, 1.0, 1.0, 'y', photo4,
+                    24},
+        motion_case{"recede120px_8pxpf_2rps_x_teddy_3m", 120, 3.0, recede, 1.2, 2.0, 'x', photo4,
+                    24},
+        motion_case{"recede120px_8pxpf_1rps_y_teddy", 120, 2.6, recede, 1.2, 1.0, 'y', photo4, 24},
+        motion_case{"recede140px_6pxpf_2rps_x_teddy", 140, 2.6, recede, 1.0, 2.0, 'x', photo4, 24},
+        motion_case{"recede130px_6pxpf_1rps_y_teddy_3m", 130, 3.0, recede, 1.0, 1.0, 'y', photo4,
+                    24},
+        motion_case{"recede130px_6pxpf_1rps_y_teddy_speed0_9", 130, 2.6, recede, 0.9, 1.0, 'y',
+                    photo4, 24},
+        motion_case{"recede130px_6pxpf_0_5rps_y_teddy", 130, 2.6, recede, 1.0, 0.5, 'y', photo4,
+                    24},
+        motion_case{"recede130px_6pxpf_1rps_z_teddy", 130, 2.6, recede, 1.0, 1.0, 'z', photo4, 24},
+        motion_case{"recede125px_6pxpf_1rps_x_teddy", 125, 2.6, recede, 1.0, 1.0, 'x', photo4, 24},
+        motion_case{"recede125px_6pxpf_1_5rps_y_teddy", 125, 2.6, recede, 1.0, 1.5, 'y', photo4,
+                    24},
+        motion_case{"recede140px_12pxpf_1rps_y_teddy_30f", 140, 2.6, recede, 2.0, 1.0, 'y', photo4,
+                    30},
+        motion_case{"recede120px_6pxpf_2rps_x_teddy_30f", 120, 2.6, recede, 0.8, 2.0, 'x', photo4,
+                    30},
+        motion_case{"recede100px_3pxpf_teddy_2m_40f", 100, 2.0, recede, 0.2, 0.0, 'x', photo4, 40},
+        motion_case{"approach20px_5pxpf_2rps_y_kodim19_3m_40f", 20, 3.0, approach, 0.4, 2.0, 'y',
+                    photo3, 40}),
+    case_name);
 
 }  // namespace
