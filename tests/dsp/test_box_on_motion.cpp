@@ -1288,8 +1288,8 @@ INSTANTIATE_TEST_SUITE_P(
 // 1 rev/s: a trailing edge that moved steadily where the leading rim fades
 // is a motion the extent window read, and drops a key taken on the slowed
 // box (dsp/controller_track.cpp, follow_object; dsp/controller_key.cpp).
-// Not read as a motion (mutant fw-132), the key was kept on the moving
-// ball and the depth was 1.02-1.16 % off; this firmware 0.62-0.78 %.
+// Not read as a motion (mutant fw-132), the depth was 1.02-1.16 % off;
+// this firmware 0.62-0.78 %.
 // Written to show that bug, development cases, in a neighbourhood where
 // the firmware fails other cases (DISABLED_Open).
 INSTANTIATE_TEST_SUITE_P(TrailingEdgeReceding, BoxOnMotion,
@@ -1429,9 +1429,9 @@ INSTANTIATE_TEST_SUITE_P(
 // DriftAcrossCircleBack: a 90 px ball spinning about z over cones 35.7 px
 // off at one pair; about y over kodim19, the depth 1.59 % off.
 // Found while looking for the other mutants' cases: a 100 px circle at 1
-// px a frame over cones (depth 1.08 %), an 80 px circle over venus (1.02
-// %), a 35 px circle over cones (6.06 px off at one pair), a 30 px ball
-// coming nearer over cones (a side 20.6 % off).
+// px a frame over cones (depth 1.08 %), an 80 px circle over venus (depth
+// 1.02 %), a 35 px circle over cones (6.06 px off at one pair), a 30 px
+// ball coming nearer over cones (a side 20.6 % off).
 // Runs of 40 frames: a 100 px ball going away slowly over teddy (one side
 // 1.4 px past its bound), a 20 px ball coming nearer over kodim19 (0.6 px).
 // Not run by default (DISABLED_): the firmware does not meet them yet.
