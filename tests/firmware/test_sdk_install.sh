@@ -38,11 +38,13 @@ plugin="$work/myfw/build/libmyfw.so"
 exported=$(nm -D --defined-only "$plugin" | awk '$2 == "T" { print $3 }')
 [ "$exported" = "stereosim_firmware" ] || { echo "exported: $exported"; exit 1; }
 
+# First lines by expansion, not `echo | head`: under pipefail, head closing the
+# pipe early makes echo's later writes fail, and the check with them.
 info=$("$work/prefix/bin/stereosim" firmware info "$plugin")
-echo "$info" | head -1 | grep -qx "firmware  minimal 0.1 (ABI version 1)" ||
+[ "${info%%$'\n'*}" = "firmware  minimal 0.1 (ABI version 1)" ] ||
   { echo "firmware info said: $info"; exit 1; }
 ref=$("$work/prefix/bin/stereosim" firmware info "$work/prefix/lib/stereosim/libstereosim_fw_reference.so")
-echo "$ref" | head -1 | grep -qx "firmware  stereosim-reference 1.0 (ABI version 1)" ||
+[ "${ref%%$'\n'*}" = "firmware  stereosim-reference 1.0 (ABI version 1)" ] ||
   { echo "firmware info said: $ref"; exit 1; }
 echo "sdk: installed, an outside C firmware built against it and loaded by the installed stereosim"
 
@@ -74,7 +76,8 @@ print("example firmware: %d frames tracked, box error max %.2f px, depth error m
 PY
 # Its host entry (host.c): the sweep's closed form prices its pairs, near
 # what the co-simulation measured at the same point.
-"$work/prefix/bin/stereosim" firmware info "$paper" | grep -qx "host      yes (the sweep's closed form prices its pairs)" ||
+paper_info=$("$work/prefix/bin/stereosim" firmware info "$paper")
+grep -qx "host      yes (the sweep's closed form prices its pairs)" <<<"$paper_info" ||
   { echo "the example firmware has no host entry"; exit 1; }
 "$work/prefix/bin/stereosim" sweep --grid dsk.cpu_mhz=600 --frames 12 --firmware "$paper" \
   --out "$work/sweep" > "$work/sweep.log" 2>&1 || { cat "$work/sweep.log"; exit 1; }
