@@ -207,7 +207,11 @@ bool controller::impl::start_track(box detected, uint64_t* cycles, sdram_traffic
 // the track starts on object(t) from it (keyed_axis), with a new key
 // there. Not started when the pattern is lost (the object turned or sped
 // up: detected again) or has not moved min_shift px within
-// max_candidate_pairs (an object that stopped, or a flicker).
+// max_candidate_pairs (an object that stopped, or a flicker), unless the
+// pattern turned and Dif(key, t)'s outline moved min_shift px as a slow
+// object does (outline_shift): a ball spinning against its path was keyed
+// again from each detection (125 px at 1.5 px a frame, 0.5 rev/s: not
+// started for 27 pairs).
 bool controller::impl::confirm_slow_object(uint64_t* cycles, sdram_traffic* traffic) {
     // After this pair's detection (its pass made Dif(t-1,t)): f(t-1)'s
     // buffer is the pattern's scratch.
@@ -215,13 +219,22 @@ bool controller::impl::confirm_slow_object(uint64_t* cycles, sdram_traffic* traf
     const bool waits = still && key.shift() < key_frame::min_shift;
     if (waits && ++candidate_pairs < max_candidate_pairs) return false;
     slow_candidate = false;
-    if (waits || !still) {
+    // Where its pattern drops it (lost, or still) and its texture turned,
+    // Dif(key, t)'s outline reads the motion (outline_shift).
+    const bool dropped = waits || !still;
+    if (dropped && !key.turned()) {
         key.drop();
         return false;
     }
     const block_group moved = keyed_extent(cycles, traffic);
+    int dx = key.dx(), dy = key.dy();
+    if (dropped && !(outline_shift(moved, &dx, &dy) &&
+                     max_int(abs_int(dx), abs_int(dy)) >= key_frame::min_shift)) {
+        key.drop();
+        return false;
+    }
     box object;
-    const bool outlined = keyed_object(moved, key.dx(), key.dy(), true, &object);
+    const bool outlined = keyed_object(moved, dx, dy, true, &object);
     key.drop();
     // object(t) lies within Dif(key, t)'s extent. Where that extent reaches
     // the border band, the image edge may cut the outline: a ball entering
@@ -233,6 +246,27 @@ bool controller::impl::confirm_slow_object(uint64_t* cycles, sdram_traffic* traf
         cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
     take_key(cycles, traffic);
     return true;
+}
+
+// A candidate whose pattern turned (a ball spinning against its path: the
+// pattern reads it nearly still, then loses it) moved as Dif(key, t)'s
+// outline did past the key's box (difference_shift) on each axis where it
+// reads a slow object's step: at most max_step px a pair since the key (a
+// key taken on a part has the rest of its object past its box at once).
+// Elsewhere the pattern's displacement stays. False when neither axis reads.
+bool controller::impl::outline_shift(const block_group& moved, int* dx, int* dy) const {
+    if (!moved.found) return false;
+    const box k = key.object();
+    const int reach = key_frame::max_step * key.pairs() + 1;
+    auto read = [reach](span both, span key_box, int* shift) {
+        int s = 0;
+        if (!difference_shift(both, key_box, &s) || abs_int(s) > reach) return false;
+        *shift = s;
+        return true;
+    };
+    const bool read_x = read(x_span(moved.bbox), x_span(k), dx);
+    const bool read_y = read(y_span(moved.bbox), y_span(k), dy);
+    return read_x || read_y;
 }
 
 }  // namespace dsp

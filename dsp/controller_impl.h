@@ -214,6 +214,7 @@ struct controller::impl {
     void detect_over_stride(frame_output& out, uint64_t* cycles, sdram_traffic* traffic);
     bool start_slow_candidate(box detected, gray_cplane middle, uint64_t* cycles,
                               sdram_traffic* traffic);
+    bool outline_shift(const block_group& moved, int* dx, int* dy) const;
     bool confirm_slow_object(uint64_t* cycles, sdram_traffic* traffic);
     bool search_key(uint64_t* cycles, sdram_traffic* traffic);
     block_group keyed_extent(uint64_t* cycles, sdram_traffic* traffic);

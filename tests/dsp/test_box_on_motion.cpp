@@ -1349,6 +1349,22 @@ INSTANTIATE_TEST_SUITE_P(PartGrownAtDetection, BoxOnMotion,
                                                        1.0, 1.0, 'x', venus, 30}),
                          case_name);
 
+// 125 px balls at 1.5 px a frame spinning 0.5 rev/s about y over kodim19
+// and tsukuba, found while looking for mutant fw-76's cases: the texture
+// turns against the path, so a slow candidate's key pattern read 2-3 px
+// while the ball moved 6-9 px, then was lost, and the ball was keyed
+// again from the next detection, pair after pair: detected at pair 28 of
+// 30 and 37 of 40 before a candidate whose pattern turned was confirmed
+// from Dif(key, t)'s outline (dsp/controller_detect.cpp, outline_shift);
+// at pair 10 since. Its neighbours (0.3 and 1 rev/s, other speeds and
+// backdrops) were detected by pair 14 either way.
+INSTANTIATE_TEST_SUITE_P(TurnedCandidate, BoxOnMotion,
+                         ::testing::Values(motion_case{"pass125px_1_5pxpf_0_5rps_y_kodim19", 125,
+                                                       2.6, pass, 0.3, 0.5, 'y', photo3, 30},
+                                           motion_case{"pass125px_1_5pxpf_0_5rps_y_tsukuba_40f",
+                                                       125, 2.6, pass, 0.3, 0.5, 'y', tsukuba, 40}),
+                         case_name);
+
 // Held out, round 78: 40 cases drawn at random (seed 78) over the issue's
 // envelope before they were run: every path, balls 12-240 px wide 2-4 m
 // away, spinning 1-10 rev/s about any axis or not at all, over every
