@@ -110,15 +110,22 @@ def ctest_regex(names):
 
 def test_executables(build_dir, label):
     """{ctest name: executable name} of a configured build's label, from
-    `ctest --show-only=json-v1` (names cut at their first space)."""
+    `ctest --show-only=json-v1` (names cut at their first space). Only the
+    label's own executables (<label>_test_*): a test run by a script has no
+    target to build."""
     output = subprocess.run(["ctest", "--show-only=json-v1", "-L", label], cwd=build_dir,
                             capture_output=True, text=True, check=True, timeout=120).stdout
     table = {}
     for test in json.loads(output).get("tests", []):
         command = test.get("command") or []
-        if command:
+        if command and Path(command[0]).name.startswith(f"{label}_"):
             table[test["name"].split(" ")[0]] = Path(command[0]).name
     return table
+
+
+def needs_stereosim(names):
+    """Whether these tests run the stereosim program (the cli label's do)."""
+    return any(name.startswith("cli.") for name in names)
 
 
 def merged_record(killers, results):

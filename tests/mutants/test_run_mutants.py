@@ -322,6 +322,38 @@ class KnownKillers(unittest.TestCase):
         self.assertTrue(record)
         self.assertEqual([i for i in record if i not in ids], [])
 
+    def test_a_cli_killer_maps_to_its_executable_and_runs_without_a_label(self):
+        """The cli label's own executables are mapped (a script's test is
+        not: no target builds it); a cli name needs stereosim; the known
+        killers' ctest selects by -R alone, so a cli killer is run."""
+        build = rm.REPO / "build"
+        if not (build / "CTestTestfile.cmake").exists():
+            self.skipTest("no configured build/")
+        table = kk.test_executables(build, "cli")
+        self.assertEqual(table.get("cli.MotionScenarios.SlowLargeBall"),
+                         "cli_test_motion_scenarios")
+        self.assertNotIn("cli.sdk_install_and_outside_build", table)
+        self.assertTrue(all(exe.startswith("cli_test_") for exe in table.values()))
+        self.assertTrue(kk.needs_stereosim(["dsp.A.B", "cli.MotionScenarios.SlowLargeBall"]))
+        self.assertFalse(kk.needs_stereosim(self.NAMES))
+        with tempfile.TemporaryDirectory() as tmp:
+            fake_bin = Path(tmp) / "bin"
+            fake_bin.mkdir()
+            (fake_bin / "ctest").write_text(f"#!/bin/sh\necho \"$@\" > {tmp}/args\n")
+            (fake_bin / "ctest").chmod(0o755)
+            old_path = os.environ["PATH"]
+            os.environ["PATH"] = f"{fake_bin}:{old_path}"
+            try:
+                rm.run_ctest(Path(tmp), Path(tmp) / "log", None, 1, stop=True, include="^(x)")
+                args = (Path(tmp) / "args").read_text().split()
+                rm.run_ctest(Path(tmp), Path(tmp) / "log", "dsp", 1)
+                labelled = (Path(tmp) / "args").read_text().split()
+            finally:
+                os.environ["PATH"] = old_path
+            self.assertNotIn("-L", args)
+            self.assertEqual(args[args.index("-R") + 1], "^(x)")
+            self.assertEqual(labelled[:2], ["-L", "dsp"])
+
     def test_the_regex_matches_exactly_the_names(self):
         import re
         regex = re.compile(kk.ctest_regex(self.NAMES))
