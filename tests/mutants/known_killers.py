@@ -63,9 +63,10 @@ def checks_of(killed_by, campaign_killed):
 
 def likely_killers(killers, limit=MAX_LIKELY):
     """The record's tests that killed the most mutants, most first (ties in
-    name order): what a mutant with no record of its own tries first."""
+    name order): what a mutant with no record of its own tries first. Not
+    the cli label's: each would build stereosim into every mutant's tree."""
     count = collections.Counter(c for checks in killers.values() for c in checks
-                                if c != CAMPAIGN)
+                                if c != CAMPAIGN and not needs_stereosim([c]))
     return [name for name, _ in sorted(count.items(), key=lambda i: (-i[1], i[0]))[:limit]]
 
 

@@ -336,6 +336,10 @@ class KnownKillers(unittest.TestCase):
         self.assertTrue(all(exe.startswith("cli_test_") for exe in table.values()))
         self.assertTrue(kk.needs_stereosim(["dsp.A.B", "cli.MotionScenarios.SlowLargeBall"]))
         self.assertFalse(kk.needs_stereosim(self.NAMES))
+        # A mutant's own cli killer is tried; the most frequent killers hold none.
+        record = {"fw-a": ["cli.M.S", "dsp.A.B"], "fw-b": ["cli.M.S", "dsp.A.B"]}
+        self.assertEqual(kk.likely_killers(record), ["dsp.A.B"])
+        self.assertEqual(kk.tests_to_try("fw-a", record)[0], ["cli.M.S", "dsp.A.B"])
         with tempfile.TemporaryDirectory() as tmp:
             fake_bin = Path(tmp) / "bin"
             fake_bin.mkdir()
