@@ -36,6 +36,11 @@
 // tiles_per_side and the gate were chosen among 8, 12, 16 tiles and factors
 // 2 and 4 on the host runs of tests/dsp/test_object_size.cpp (noise-free
 // renders), then checked on sizes and co-simulated runs not used to choose.
+// Tiled from 80 px (five tiles of 16 px a side, 21 of them on the disc):
+// below that the core's one match on a smooth, spinning ball reads a flat
+// SAD curve, and a pixel of core box moved it 0.3-1.4 px (85-100 px balls
+// going away over teddy, 1.2-6.1 % far). From 64 px (four a side, 12 on
+// the disc) the mean was noisier: a box case went past 1 %.
 //
 // Outlined (TRACK's box, the object's outline within a pixel or two): each
 // tile is matched on its pixels inside the box's inscribed ellipse less
@@ -67,7 +72,7 @@
 namespace dsp {
 
 struct object_depth_params {
-    int min_object_side = 97;  // tiled when the box's width or height is this or more
+    int min_object_side = 80;  // tiled when the box's width or height is this or more
     int tiles_per_side = 16;   // at most 16
     int min_tile_side = 16;
     int gate_median_factor = 4;    // a tile's SAD at most this x the median tile's

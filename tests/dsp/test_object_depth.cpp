@@ -119,16 +119,28 @@ TEST(ObjectDepth, ThePrincipalOffsetIsOutsideTheMean) {
         4.0);  // the two differ by more than the tolerance
 }
 
-TEST(ObjectDepth, ObjectsUpToThePatternCapAreNotTiled) {
+// Tiled from five tiles of 16 px a side (dsp/object_depth.h): a 79 px box
+// stands on its core's match, an 80 px one is cut into 5 x 5 tiles.
+TEST(ObjectDepth, ObjectsUnderFiveTilesASideAreNotTiled) {
     const pair_images p = make_pair();
     dsp::box small = object;
-    small.width = small.height = 96;  // the tracker's pattern cap: the core match stands
+    small.width = small.height = 79;
     const dsp::object_depth_result r =
         dsp::match_object_surface(p.right_view(), p.left_view(), small, core_disparity_q8(p, small),
                                   depth_range_search(), {}, {}, false);
     EXPECT_FALSE(r.tiled);
     EXPECT_FALSE(r.valid);
     EXPECT_EQ(r.tiles, 0);
+    dsp::box five_tiles = object;
+    five_tiles.width = five_tiles.height = 80;
+    const dsp::object_depth_result t = dsp::match_object_surface(
+        p.right_view(), p.left_view(), five_tiles, core_disparity_q8(p, five_tiles),
+        depth_range_search(), {}, {}, false);
+    EXPECT_TRUE(t.tiled);
+    EXPECT_TRUE(t.valid);
+    EXPECT_EQ(t.columns, 5);
+    EXPECT_EQ(t.rows, 5);
+    EXPECT_EQ(t.tiles, 25);
 }
 
 // A disc (the box's inscribed circle) of faint texture at one disparity in
