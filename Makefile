@@ -63,7 +63,7 @@ campaign-full: build
 # which is run before an issue is resolved: make test-sanitize-all.
 SAN_LABELS ?= dsp|scene|model|rtl|firmware
 SAN_TARGETS ?= tests_dsp tests_scene tests_model tests_rtl tests_firmware system_test_data_integrity_sc
-SAN_EXCLUDE ?= CardCounters\.|KeyTraffic\.|BoxOnReturn\.|ObjectSize\.DetectedAndTrackedWithinTheBounds/(240|320)px|BoxOnMotion\.StaysOnTheObject/(pass(80|125|160|320)|throw(60px_1|60px_10|90|100|2[0-9]0px)|heldout|open_|spin(80|140)|spin40px_1pxpf_(0_5|1|2)rps|spin40px_1pxpf_3rps_(x|y)|approach1[1-3]0px_6pxpf|recede1[234][05]px_[68]pxpf|recede80px_2pxpf|circle(_back90px_3pxpf_1rps_y_kodim19|80px_3pxpf_2rps_x_venus|100px_1pxpf))
+SAN_EXCLUDE ?= CardCounters\.|KeyTraffic\.|BoxOnReturn\.|ObjectSize\.DetectedAndTrackedWithinTheBounds/(240|320)px|BoxOnMotion\.StaysOnTheObject/(pass(80|125|160|320)|throw(60px_1|60px_10|90|100|2[0-9]0px)|heldout|open_|spin(80|140)|spin40px_1pxpf_(0_5|1|2)rps|spin40px_1pxpf_3rps_(x|y)|approach1[1-3]0px_6pxpf|recede1[234][05]px_([68]|12)pxpf|recede100px_3pxpf|recede80px_2pxpf|circle(_back90px_3pxpf_1rps_y_kodim19|80px_3pxpf_2rps_x_venus|100px_1pxpf))
 SAN_SYSTEM ?= ^system\.data_integrity\.
 SAN_ENV := ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizers/lsan.supp

@@ -1,6 +1,7 @@
 // TRACK: the SAD box (paper eq. 5) and its refit from the two frame
 // differences around it (dsp/box_refit.h).
 #include "dsp/controller_impl.h"
+#include "dsp/round_box.h"
 
 namespace dsp {
 
@@ -151,6 +152,8 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
     } else if (last.width != tracked.width || last.height != tracked.height) {
         resized = resized_about_centre(found, last.width, last.height);
     }
+    resized = rounded_box(resized, width, height, config.rig);
+    *cycles += cycles_of(cost::round_box_profile());
     if (status != track_status::tracking || !same_box(resized, found)) {
         tracker.start(history(0), resized);
         *cycles += cycles_of(

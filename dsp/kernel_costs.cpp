@@ -490,6 +490,22 @@ kernel_profile size_at_depth_profile(int divides) {
     return p;
 }
 
+kernel_profile round_box_profile() {
+    // dsp/round_box.h, each tracked pair: the box's centre offsets (SUB,
+    // SHL), two integer square roots by bits as the outline's (31 steps of
+    // ADD, MPY, CMPGTU, conditional add, each waiting on the last), the
+    // sphere's height from the width and width from the height (a __divu
+    // each, quotients under 11 bits: sides under 2048 px) and the checks
+    // (compares against the border and the eighth: l 6, s 2).
+    kernel_profile p("round_box");
+    p.add(block("square root step", op_mix{/*l*/ 2, 0, /*m*/ 1, 0, 0, /*lsd*/ 2},
+                latency_mpy16 + 2 * latency_alu, 2 * 31));
+    p.add_call(c64x::software_divide(c64x::quotient_bits(2048)), 2);
+    p.add(block("offsets and checks", op_mix{/*l*/ 6, /*s*/ 2, /*m*/ 2, 0, 0, /*lsd*/ 2},
+                latency_mpy16 + 4 * latency_alu, 1));
+    return p;
+}
+
 kernel_profile window_fit_profile(int extents) {
     // dsp/extent_window.h: the median of the 2 (n - 1) edge steps (an
     // insertion sort, as surface_mean's); then for each of the 33

@@ -1454,6 +1454,25 @@ INSTANTIATE_TEST_SUITE_P(
                     40}),
     case_name);
 
+// A side of the box shorter than the ball's by over an eighth, grown back
+// to a sphere's shape (dsp/round_box.h); then in DISABLED_Open. The 140 px
+// ball going away over teddy at 12 px a frame, 20.4 px off at one pair past
+// its 24th (the box 48 px high on an 88 px ball); a 30 px ball coming nearer
+// over cones (a side 20.6 % off); runs of 40 frames: a 100 px ball going
+// away slowly over teddy (one side 1.4 px past its bound), a 20 px ball
+// coming nearer over kodim19 (0.6 px past).
+INSTANTIATE_TEST_SUITE_P(ShortSideGrown, BoxOnMotion,
+                         ::testing::Values(motion_case{"recede140px_12pxpf_1rps_y_teddy_30f", 140,
+                                                       2.6, recede, 2.0, 1.0, 'y', photo4, 30},
+                                           motion_case{"approach30px_5pxpf_2rps_y_cones_3m_40f", 30,
+                                                       3.0, approach, 0.4, 2.0, 'y', photo, 40},
+                                           motion_case{"recede100px_3pxpf_teddy_2m_40f", 100, 2.0,
+                                                       recede, 0.2, 0.0, 'x', photo4, 40},
+                                           motion_case{"approach20px_5pxpf_2rps_y_kodim19_3m_40f",
+                                                       20, 3.0, approach, 0.4, 2.0, 'y', photo3,
+                                                       40}),
+                         case_name);
+
 // Open: small balls thrown fast 3.5-4 m away, found while looking for the
 // apex cases above. The box centre stays within its bounds, but at one pair
 // near the bounce the depth is off by more than 1 % (23.7 px of disparity
@@ -1469,15 +1488,14 @@ INSTANTIATE_TEST_SUITE_P(
 // frames, 7 of them on the depth alone (TiledFromEighty since); three are
 // 13.7-22.8 px off at one pair (the ball 4.6 m away, 0.4 m before teddy:
 // the stereo reach took teddy for the ball, a side or end moved out 41-44
-// px), and two more at 30 frames (20.4 px; depth 1.13 %) past their 24th.
+// px), and one more at 30 frames past its 24th (the depth 1.13 % off at
+// about 77 px, untiled).
 // The circle from its other side at 3 px a frame for 32 frames, beside
-// DriftAcrossCircleBack: a 90 px ball spinning about z over cones 35.7 px
-// off at one pair.
+// DriftAcrossCircleBack: a 90 px ball spinning about z over cones, 35.7 px
+// off at one pair (its box a 14 x 8 px part of the ball); with the box
+// rounded 1.83 px, but its depth 1.14 % off.
 // Found while looking for the other mutants' cases: a 35 px circle over
-// cones (6.06 px off at one pair), a 30 px ball coming nearer over cones (a
-// side 20.6 % off).
-// Runs of 40 frames: a 100 px ball going away slowly over teddy (one side
-// 1.4 px past its bound), a 20 px ball coming nearer over kodim19 (0.6 px).
+// cones (6.06 px off at one pair).
 // Not run by default (DISABLED_): the firmware does not meet them yet.
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
@@ -1508,18 +1526,12 @@ INSTANTIATE_TEST_SUITE_P(
                     24},
         motion_case{"recede130px_6pxpf_1rps_y_teddy_3m", 130, 3.0, recede, 1.0, 1.0, 'y', photo4,
                     24},
-        motion_case{"recede140px_12pxpf_1rps_y_teddy_30f", 140, 2.6, recede, 2.0, 1.0, 'y', photo4,
-                    30},
         motion_case{"recede120px_6pxpf_2rps_x_teddy_30f", 120, 2.6, recede, 0.8, 2.0, 'x', photo4,
                     30},
         motion_case{"circle_back90px_3pxpf_1rps_z_cones_32f", 90, 2.6, circle_back, 0.4, 1.0, 'z',
                     photo, 32},
-        motion_case{"circle35px_3pxpf_2rps_x_cones_32f", 35, 2.6, circle, 0.4, 2.0, 'x', photo, 32},
-        motion_case{"approach30px_5pxpf_2rps_y_cones_3m_40f", 30, 3.0, approach, 0.4, 2.0, 'y',
-                    photo, 40},
-        motion_case{"recede100px_3pxpf_teddy_2m_40f", 100, 2.0, recede, 0.2, 0.0, 'x', photo4, 40},
-        motion_case{"approach20px_5pxpf_2rps_y_kodim19_3m_40f", 20, 3.0, approach, 0.4, 2.0, 'y',
-                    photo3, 40}),
+        motion_case{"circle35px_3pxpf_2rps_x_cones_32f", 35, 2.6, circle, 0.4, 2.0, 'x', photo,
+                    32}),
     case_name);
 
 }  // namespace
