@@ -6,7 +6,8 @@
 
 namespace scene {
 
-ball_truth ball_truth_at(const stereo_rig& rig, const ball_desc& ball, double t_s) {
+ball_truth ball_truth_at(const stereo_rig& rig, const ball_desc& ball, double t_s,
+                         double background_depth_m) {
     ball_truth t;
     t.centre_m = ball.path.position(t_s);
     t.radius_m = ball.radius_m;
@@ -18,7 +19,9 @@ ball_truth ball_truth_at(const stereo_rig& rig, const ball_desc& ball, double t_
     t.disparity_centre_px = rig.disparity_px(t.centre_m.z);
     t.disparity_visible_px =
         t.visible_mean_depth_m > 0.0 ? rig.disparity_px(t.visible_mean_depth_m) : 0.0;
-    t.in_both_views = t.right.valid && t.left.valid && t.right.inside_image && t.left.inside_image;
+    t.in_front_of_background = t.centre_m.z + t.radius_m < background_depth_m;
+    t.in_both_views = t.right.valid && t.left.valid && t.right.inside_image &&
+                      t.left.inside_image && t.in_front_of_background;
     return t;
 }
 
@@ -27,7 +30,8 @@ sequence::sequence(scenario s) : m_scenario(std::move(s)), m_renderer(m_scenario
 std::vector<ball_truth> sequence::truth(int n) const {
     std::vector<ball_truth> out;
     for (const ball_desc& b : m_scenario.scene.balls) {
-        out.push_back(ball_truth_at(m_scenario.scene.rig, b, time_of(n)));
+        out.push_back(ball_truth_at(m_scenario.scene.rig, b, time_of(n),
+                                    m_scenario.scene.background.depth_m));
     }
     return out;
 }

@@ -20,6 +20,7 @@
 //   of the ball (sub-samples not occluded and inside the image).
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "model/scene/camera.h"
@@ -45,7 +46,11 @@ struct ball_truth {
     double disparity_ellipse_px = 0.0;  // left.ellipse_centre.x - right.ellipse_centre.x
     double disparity_centre_px = 0.0;   // rig.disparity_px(centre_m.z)
     double disparity_visible_px = 0.0;  // rig.disparity_px(visible_mean_depth_m)
-    bool in_both_views = false;         // the whole ellipse inside both images
+    // The whole ball nearer than the background plane: the renderer hides
+    // what lies behind the plane, so a ball going away past it (or touching
+    // it) is not all in the images, whatever its ellipse.
+    bool in_front_of_background = true;
+    bool in_both_views = false;  // the whole ellipse inside both images, the ball in front
 
     int rendered_subsamples = 0;         // right image, visible sub-samples
     double rendered_area_px = 0.0;       // the same in pixels (sub-samples / n^2)
@@ -84,8 +89,10 @@ class sequence {
     renderer m_renderer;
 };
 
-// Ground truth of one ball at one time for a rig.
-ball_truth ball_truth_at(const stereo_rig& rig, const ball_desc& ball, double t_s);
+// Ground truth of one ball at one time for a rig, in front of a background
+// plane at background_depth_m (world Z; none by default).
+ball_truth ball_truth_at(const stereo_rig& rig, const ball_desc& ball, double t_s,
+                         double background_depth_m = std::numeric_limits<double>::infinity());
 
 // The firmware tests' default: the default rig; the procedural background at
 // 5 m; one orange textured 5 cm ball, still for the first still_frames

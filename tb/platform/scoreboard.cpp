@@ -77,8 +77,8 @@ platform::frame_record record_of(const platform_top& top, uint64_t scene_frame,
         }
     } else if (!scenario.scene.balls.empty() && record.time_s >= 0.0) {
         record.has_truth = true;
-        record.truth =
-            scene::ball_truth_at(scenario.scene.rig, scenario.scene.balls[0], record.time_s);
+        record.truth = scene::ball_truth_at(scenario.scene.rig, scenario.scene.balls[0],
+                                            record.time_s, scenario.scene.background.depth_m);
     }
     return record;
 }

@@ -6,8 +6,11 @@ namespace platform {
 
 namespace {
 
+// Not scored where the ball reaches past the background plane: the images
+// then hold only part of it, or none, and its ellipse is not what they show.
 bool ball_in_right_view(const frame_record& record) {
-    return record.has_truth && record.truth.right.valid && !record.truth.right.pixel_box.empty();
+    return record.has_truth && record.truth.right.valid && !record.truth.right.pixel_box.empty() &&
+           record.truth.in_front_of_background;
 }
 
 }  // namespace
