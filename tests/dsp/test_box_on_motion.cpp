@@ -192,7 +192,8 @@ motion_result run_case(const motion_case& c) {
                                                   now.ellipse_centre.y - before.ellipse_centre.y));
         }
         if (r.detection < 0 || rec.index < r.detection) continue;
-        // Only while the ball is wholly in both views: a fast pass leaves
+        // Only while the ball is wholly in both views (and in front of the
+        // background plane, which hides it past there): a fast pass leaves
         // the left view first, and stereo then rightly gives no point.
         if (!runner.sequence().truth(rec.index).front().in_both_views) continue;
         ++r.after_detection;
@@ -1454,6 +1455,62 @@ INSTANTIATE_TEST_SUITE_P(
                     40}),
     case_name);
 
+// Held out, round 80: 40 cases drawn at random (seed 80, the envelope of
+// round 78: every path, balls 12-240 px wide 2-4 m away, speeds 0.3-5,
+// spinning 1-10 rev/s about any axis or not at all a third of the time,
+// every backdrop, 24-40 frames) before they were run, on the firmware with
+// the round box. Seven moved faster than 30 px a frame (left out); of the
+// other 33, these 23 passed and 10 failed (DISABLED_Open).
+INSTANTIATE_TEST_SUITE_P(
+    HeldOutSweep80, BoxOnMotion,
+    ::testing::Values(motion_case{"heldout80_01_pass152px_3_5m_3_0rps_z", 152, 3.5, pass, 4.8, 3.0,
+                                  'z', procedural, 32},
+                      motion_case{"heldout80_03_circle107px_2_7m_2_8rps_y_cones", 107, 2.7, circle,
+                                  1.1, 2.8, 'y', photo, 32},
+                      motion_case{"heldout80_04_left180px_2_0m_3_7rps_y", 180, 2.0, pass_left, 0.3,
+                                  3.7, 'y', procedural, 32},
+                      motion_case{"heldout80_08_pass152px_4_0m_8_7rps_x_aloe", 152, 4.0, pass, 4.9,
+                                  8.7, 'x', aloe, 32},
+                      motion_case{"heldout80_10_recede206px_2_5m_5_8rps_z_aloe", 206, 2.5, recede,
+                                  1.9, 5.8, 'z', aloe, 24},
+                      motion_case{"heldout80_11_thrown156px_3_1m_6_0rps_x", 156, 3.1, thrown, 1.9,
+                                  6.0, 'x', procedural, 32},
+                      motion_case{"heldout80_12_enter110px_2_8m_8_4rps_y_kodim19", 110, 2.8, enter,
+                                  1.4, 8.4, 'y', photo3, 40},
+                      motion_case{"heldout80_13_back79px_2_6m_6_4rps_x_cones", 79, 2.6, circle_back,
+                                  1.7, 6.4, 'x', photo, 24},
+                      motion_case{"heldout80_15_approach59px_4_0m_2_8rps_z", 59, 4.0, approach, 0.8,
+                                  2.8, 'z', procedural, 24},
+                      motion_case{"heldout80_16_back97px_3_4m_9_1rps_x_tsukuba", 97, 3.4,
+                                  circle_back, 1.8, 9.1, 'x', tsukuba, 32},
+                      motion_case{"heldout80_18_left15px_3_6m_7_8rps_x_teddy", 15, 3.6, pass_left,
+                                  4.8, 7.8, 'x', photo4, 32},
+                      motion_case{"heldout80_19_back200px_2_6m_9_5rps_z_aloe", 200, 2.6,
+                                  circle_back, 3.7, 9.5, 'z', aloe, 24},
+                      motion_case{"heldout80_21_back70px_3_0m_7_9rps_x_kodim23", 70, 3.0,
+                                  circle_back, 2.2, 7.9, 'x', photo2, 32},
+                      motion_case{"heldout80_22_back82px_3_6m_teddy", 82, 3.6, circle_back, 2.6,
+                                  0.0, 'y', photo4, 24},
+                      motion_case{"heldout80_23_left42px_3_7m_kodim19", 42, 3.7, pass_left, 0.4,
+                                  0.0, 'x', photo3, 32},
+                      motion_case{"heldout80_24_recede94px_2_6m_cones", 94, 2.6, recede, 1.0, 0.0,
+                                  'z', photo, 32},
+                      motion_case{"heldout80_26_left165px_2_5m", 165, 2.5, pass_left, 2.7, 0.0, 'x',
+                                  procedural, 32},
+                      motion_case{"heldout80_27_approach33px_3_8m_6_5rps_x_tsukuba", 33, 3.8,
+                                  approach, 1.3, 6.5, 'x', tsukuba, 40},
+                      motion_case{"heldout80_31_pass119px_2_1m_6_2rps_x_kodim23", 119, 2.1, pass,
+                                  0.7, 6.2, 'x', photo2, 32},
+                      motion_case{"heldout80_32_approach81px_2_8m_teddy", 81, 2.8, approach, 1.4,
+                                  0.0, 'z', photo4, 32},
+                      motion_case{"heldout80_33_back152px_2_9m_9_4rps_y_cones", 152, 2.9,
+                                  circle_back, 1.9, 9.4, 'y', photo, 24},
+                      motion_case{"heldout80_36_back236px_2_4m_aloe", 236, 2.4, circle_back, 0.8,
+                                  0.0, 'y', aloe, 40},
+                      motion_case{"heldout80_39_left221px_3_8m_kodim19", 221, 3.8, pass_left, 2.5,
+                                  0.0, 'y', photo3, 32}),
+    case_name);
+
 // A side of the box shorter than the ball's by over an eighth, grown back
 // to a sphere's shape (dsp/round_box.h); then in DISABLED_Open. The 140 px
 // ball going away over teddy at 12 px a frame, 20.4 px off at one pair past
@@ -1496,6 +1553,13 @@ INSTANTIATE_TEST_SUITE_P(ShortSideGrown, BoxOnMotion,
 // rounded 1.83 px, but its depth 1.14 % off.
 // Found while looking for the other mutants' cases: a 35 px circle over
 // cones (6.06 px off at one pair).
+// Round 80's ten held-out failures (HeldOutSweep80): five on the depth
+// alone, 1.07-1.20 % at one pair (43-55 px balls over kodim23, tsukuba,
+// aloe; a 29 px ball coming nearer); a 112 px ball on the circle's other
+// side over venus 8.2 px off at one pair, a 210 px circle 6.23 px; balls
+// going away (174 px, 44 px over kodim23, 46 px over aloe) 9.5-24.5 px off
+// before they reach the background plane; a 30 px ball passing left over
+// venus leaves TRACK for a pair.
 // Not run by default (DISABLED_): the firmware does not meet them yet.
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
@@ -1530,8 +1594,27 @@ INSTANTIATE_TEST_SUITE_P(
                     30},
         motion_case{"circle_back90px_3pxpf_1rps_z_cones_32f", 90, 2.6, circle_back, 0.4, 1.0, 'z',
                     photo, 32},
-        motion_case{"circle35px_3pxpf_2rps_x_cones_32f", 35, 2.6, circle, 0.4, 2.0, 'x', photo,
-                    32}),
+        motion_case{"circle35px_3pxpf_2rps_x_cones_32f", 35, 2.6, circle, 0.4, 2.0, 'x', photo, 32},
+        motion_case{"heldout80_00_back112px_3_1m_4_3rps_z_venus", 112, 3.1, circle_back, 3.6, 4.3,
+                    'z', venus, 32},
+        motion_case{"heldout80_02_circle55px_3_9m_kodim23", 55, 3.9, circle, 2.9, 0.0, 'z', photo2,
+                    24},
+        motion_case{"heldout80_07_circle43px_3_3m_tsukuba", 43, 3.3, circle, 0.4, 0.0, 'y', tsukuba,
+                    32},
+        motion_case{"heldout80_17_recede174px_2_8m_5_3rps_z", 174, 2.8, recede, 0.6, 5.3, 'z',
+                    procedural, 40},
+        motion_case{"heldout80_20_thrown43px_3_5m_3_6rps_y_aloe", 43, 3.5, thrown, 0.3, 3.6, 'y',
+                    aloe, 40},
+        motion_case{"heldout80_25_circle210px_3_2m_6_1rps_x_kodim23", 210, 3.2, circle, 3.6, 6.1,
+                    'x', photo2, 40},
+        motion_case{"heldout80_29_left30px_3_8m_venus", 30, 3.8, pass_left, 2.8, 0.0, 'z', venus,
+                    32},
+        motion_case{"heldout80_30_recede44px_3_5m_kodim23", 44, 3.5, recede, 1.7, 0.0, 'x', photo2,
+                    32},
+        motion_case{"heldout80_35_recede46px_3_9m_4_4rps_y_aloe", 46, 3.9, recede, 1.6, 4.4, 'y',
+                    aloe, 32},
+        motion_case{"heldout80_38_approach29px_3_1m_kodim23", 29, 3.1, approach, 0.8, 0.0, 'x',
+                    photo2, 40}),
     case_name);
 
 }  // namespace
