@@ -84,7 +84,10 @@ bool inside_image(box b) {
     return b.x > 0 && b.y > 0 && b.right() < image_width && b.bottom() < image_height;
 }
 
-TEST(RoundBox, ASpheresOwnBoxIsKeptAtAnyLensAndPlace) {
+// Calls check(rig, where, sphere's box) for each lens and placement whose
+// box lies inside the image; returns how many it checked.
+template <typename Check>
+int for_each_sphere_in_image(Check check) {
     int checked = 0;
     for (const int lens_um : {2800, 6000, 12000}) {
         const dsp::camera_rig rig = rig_with_lens_um(lens_um);
@@ -92,36 +95,38 @@ TEST(RoundBox, ASpheresOwnBoxIsKeptAtAnyLensAndPlace) {
             const box b = sphere_box(rig, p.u, p.v, p.diameter_px);
             if (!inside_image(b)) continue;
             ++checked;
-            EXPECT_TRUE(same(dsp::rounded_box(b, image_width, image_height, rig), b))
-                << "lens " << lens_um << " um at " << p.u << "," << p.v;
+            check(rig,
+                  std::to_string(lens_um) + " um at " + std::to_string(p.u) + "," +
+                      std::to_string(p.v),
+                  b);
         }
     }
+    return checked;
+}
+
+TEST(RoundBox, ASpheresOwnBoxIsKeptAtAnyLensAndPlace) {
+    const int checked =
+        for_each_sphere_in_image([](const dsp::camera_rig& rig, const std::string& at, box b) {
+            EXPECT_TRUE(same(dsp::rounded_box(b, image_width, image_height, rig), b)) << at;
+        });
     EXPECT_GE(checked, 30);
 }
 
 // Each side of a pixel box is within half a pixel of the silhouette's, so
 // a size read from one side and the shape is within 2 px of the other's.
 TEST(RoundBox, AShortSideGrowsBackToTheSpheres) {
-    int checked = 0;
-    for (const int lens_um : {2800, 6000, 12000}) {
-        const dsp::camera_rig rig = rig_with_lens_um(lens_um);
-        for (const placement& p : placements) {
-            const box b = sphere_box(rig, p.u, p.v, p.diameter_px);
-            if (!inside_image(b)) continue;
-            ++checked;
+    const int checked =
+        for_each_sphere_in_image([](const dsp::camera_rig& rig, const std::string& at, box b) {
             const box low = cut_about_centre(b, b.width, b.height * 6 / 10);
             const box narrow = cut_about_centre(b, b.width * 6 / 10, b.height);
             for (const box& cut : {low, narrow}) {
                 const box r = dsp::rounded_box(cut, image_width, image_height, rig);
-                const std::string at = std::to_string(lens_um) + " um at " + std::to_string(p.u) +
-                                       "," + std::to_string(p.v);
                 EXPECT_LE(std::abs(r.width - b.width), 2) << at;
                 EXPECT_LE(std::abs(r.height - b.height), 2) << at;
                 EXPECT_LE(std::abs(r.center_x2() - b.center_x2()), 2) << at;
                 EXPECT_LE(std::abs(r.center_y2() - b.center_y2()), 2) << at;
             }
-        }
-    }
+        });
     EXPECT_GE(checked, 30);
 }
 
