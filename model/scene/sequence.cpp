@@ -6,6 +6,17 @@
 
 namespace scene {
 
+namespace {
+
+// A ball whose pixels reach an image's outermost row or column: from the
+// image it is one the border may cut, whatever its ellipse.
+bool clear_of_border(const sphere_image& image, const pinhole_camera& camera) {
+    const dsp::box b = image.pixel_box;
+    return b.x > 0 && b.y > 0 && b.right() < camera.width && b.bottom() < camera.height;
+}
+
+}  // namespace
+
 ball_truth ball_truth_at(const stereo_rig& rig, const ball_desc& ball, double t_s,
                          double background_depth_m) {
     ball_truth t;
@@ -21,7 +32,8 @@ ball_truth ball_truth_at(const stereo_rig& rig, const ball_desc& ball, double t_
         t.visible_mean_depth_m > 0.0 ? rig.disparity_px(t.visible_mean_depth_m) : 0.0;
     t.in_front_of_background = t.centre_m.z + t.radius_m < background_depth_m;
     t.in_both_views = t.right.valid && t.left.valid && t.right.inside_image &&
-                      t.left.inside_image && t.in_front_of_background;
+                      t.left.inside_image && clear_of_border(t.right, right) &&
+                      clear_of_border(t.left, left) && t.in_front_of_background;
     return t;
 }
 

@@ -50,7 +50,10 @@ struct ball_truth {
     // what lies behind the plane, so a ball going away past it (or touching
     // it) is not all in the images, whatever its ellipse.
     bool in_front_of_background = true;
-    bool in_both_views = false;  // the whole ellipse inside both images, the ball in front
+    // The whole ellipse inside both images and clear of their outermost
+    // pixels (there a whole ball and a cut one look the same), the ball in
+    // front of the background.
+    bool in_both_views = false;
 
     int rendered_subsamples = 0;         // right image, visible sub-samples
     double rendered_area_px = 0.0;       // the same in pixels (sub-samples / n^2)

@@ -174,10 +174,6 @@ struct motion_result {
     host::box_errors judged;     // the scored pairs
 };
 
-bool touches_border(dsp::box b, const scene::stereo_rig& rig) {
-    return b.x <= 0 || b.y <= 0 || b.right() >= rig.width || b.bottom() >= rig.height;
-}
-
 motion_result run_case(const motion_case& c) {
     const scene::scenario scenario = scenario_of(c);
     host::stereo_runner runner(scenario, host::controller_config_for(scenario.scene.rig));
@@ -196,16 +192,11 @@ motion_result run_case(const motion_case& c) {
                                                   now.ellipse_centre.y - before.ellipse_centre.y));
         }
         if (r.detection < 0 || rec.index < r.detection) continue;
-        // Only while the ball is wholly in both views (and in front of the
-        // background plane, which hides it past there): a fast pass leaves
-        // the left view first, and stereo then rightly gives no point.
+        // Only while the ball is wholly in both views, clear of their
+        // outermost pixels and in front of the background plane: a fast pass
+        // leaves the left view first, and stereo then rightly gives no point.
         const scene::ball_truth truth = runner.sequence().truth(rec.index).front();
         if (!truth.in_both_views) continue;
-        // Nor where it touches an image's outermost pixels: from the images a
-        // ball whose edge meets the border is one the border may cut.
-        const scene::stereo_rig& rig = scenario.scene.rig;
-        if (touches_border(truth.right.pixel_box, rig) || touches_border(truth.left.pixel_box, rig))
-            continue;
         ++r.after_detection;
         r.processing_max_ms = std::max(r.processing_max_ms, host::processing_ms(rec));
         if (rec.firmware.state != dsp::tracker_state::track) {
@@ -1481,7 +1472,8 @@ INSTANTIATE_TEST_SUITE_P(
 // the round box. Seven moved faster than 30 px a frame (left out); of the
 // other 33, these 23 passed and 10 failed (DISABLED_Open). The 30 px ball
 // passing left over venus failed on a pair where it touched the image's
-// first column; such pairs are not judged since (touches_border): 24 pass.
+// first column; such pairs are not judged since (ball_truth::in_both_views):
+// 24 pass.
 INSTANTIATE_TEST_SUITE_P(
     HeldOutSweep80, BoxOnMotion,
     ::testing::Values(motion_case{"heldout80_01_pass152px_3_5m_3_0rps_z", 152, 3.5, pass, 4.8, 3.0,
@@ -1580,9 +1572,8 @@ INSTANTIATE_TEST_SUITE_P(ShortSideGrown, BoxOnMotion,
 // alone, 1.07-1.20 % too far at one or two pairs (43-55 px balls over
 // kodim23, tsukuba, aloe; a 29 px ball coming nearer); a 112 px ball on the
 // circle's other side over venus 8.2 px off at one pair, a 210 px circle
-// 6.23 px; balls
-// going away (174 px, 44 px over kodim23, 46 px over aloe) 9.5-24.5 px off
-// before they reach the background plane.
+// 6.23 px; balls going away (174 px, 44 px over kodim23, 46 px over aloe)
+// 9.5-24.5 px off before they reach the background plane.
 // Not run by default (DISABLED_): the firmware does not meet them yet.
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
