@@ -1295,6 +1295,19 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"approach110px_6pxpf_teddy", 110, 2.6, approach, 0.8, 0.0, 'x', photo4, 24}),
     case_name);
 
+// A 120 px ball going away over teddy at 8 px a frame, not spinning: its
+// leading rim fades as the ball shrinks into teddy's dark parts. Found once
+// the round box left FadingRimNearer's balls passing with fw-137, by a
+// sweep of 48 balls 100-140 px coming nearer or going away at 6-8 px a
+// frame over teddy, kodim19, cones and venus (every one passes on this
+// firmware) run with that mutant: the follow given up, the depth was 1.19
+// and 2.40 % off at its last two pairs; this firmware 0.58 %. Written to
+// show that bug, a development case.
+INSTANTIATE_TEST_SUITE_P(FadingRimReceding, BoxOnMotion,
+                         ::testing::Values(motion_case{"recede120px_8pxpf_teddy", 120, 2.6, recede,
+                                                       1.2, 0.0, 'x', photo4, 24}),
+                         case_name);
+
 // Balls 120-125 px going away over teddy at 6.5 px a frame, spinning
 // 1 rev/s: a trailing edge that moved steadily where the leading rim fades
 // is a motion the extent window read, and drops a key taken on the slowed
@@ -1320,7 +1333,8 @@ INSTANTIATE_TEST_SUITE_P(TrailingEdgeReceding, BoxOnMotion,
 // along the motion (fw-159) the depth was 1.08-1.18 % off (the three
 // mutants alike); this firmware 0.41-0.66 %. Written to show those bugs,
 // development cases; the same ball spinning about z, and over kodim19,
-// fail on this firmware (DISABLED_Open).
+// fail on this firmware (DISABLED_Open). Since the round box they pass with
+// those bugs too: DriftAcrossSmall shows them.
 INSTANTIATE_TEST_SUITE_P(DriftAcrossCircleBack, BoxOnMotion,
                          ::testing::Values(motion_case{"circle_back90px_3pxpf_1rps_y_cones_32f", 90,
                                                        2.6, circle_back, 0.4, 1.0, 'y', photo, 32},
@@ -1329,6 +1343,26 @@ INSTANTIATE_TEST_SUITE_P(DriftAcrossCircleBack, BoxOnMotion,
                                            motion_case{"circle_back90px_3pxpf_1_5rps_y_cones_32f",
                                                        90, 2.6, circle_back, 0.4, 1.5, 'y', photo,
                                                        32}),
+                         case_name);
+
+// Smaller balls on the circle's paths, 3 px a frame for 32 frames: 70 px
+// spinning 1 rev/s about y on its other side over venus and kodim19, and
+// 2 rev/s about x on the circle over kodim23. Found once the round box left
+// DriftAcrossCircleBack's balls passing with the drift read wrong: a sweep
+// of 116 slow spinning circles (70-130 px, 1-2 rev/s about y or x, seven
+// backdrops; every one passes on this firmware) run with fw-157. With the
+// drift's first reading taken every pair (fw-155), read the wrong way
+// (fw-157) or along the motion (fw-159), alike, the box stood 2-4 px narrow
+// from pair 20 and the depth was 1.39-2.68 % too far; this firmware
+// 0.43-0.56 %. Written to show those bugs, development cases.
+INSTANTIATE_TEST_SUITE_P(DriftAcrossSmall, BoxOnMotion,
+                         ::testing::Values(motion_case{"circle_back70px_3pxpf_1rps_y_venus_32f", 70,
+                                                       2.6, circle_back, 0.4, 1.0, 'y', venus, 32},
+                                           motion_case{"circle_back70px_3pxpf_1rps_y_kodim19_32f",
+                                                       70, 2.6, circle_back, 0.4, 1.0, 'y', photo3,
+                                                       32},
+                                           motion_case{"circle70px_3pxpf_2rps_x_kodim23_32f", 70,
+                                                       2.6, circle, 0.375, 2.0, 'x', photo2, 32}),
                          case_name);
 
 // BetweenSlowAndMoving's 48 px pass at 3 px a frame spinning 1 rev/s about
@@ -1574,6 +1608,10 @@ INSTANTIATE_TEST_SUITE_P(ShortSideGrown, BoxOnMotion,
 // circle's other side over venus 8.2 px off at one pair, a 210 px circle
 // 6.23 px; balls going away (174 px, 44 px over kodim23, 46 px over aloe)
 // 9.5-24.5 px off before they reach the background plane.
+// Found by a sweep of 45 large balls (160-230 px) thrown at half speed over
+// five backdrops, 44 of which pass: a 160 px ball not spinning over
+// kodim19, its box 54.9 px low at its first judged pair (a part of the
+// ball, 49 x 110 px short), the depth 1.84 % off.
 // Not run by default (DISABLED_): the firmware does not meet them yet.
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
@@ -1626,7 +1664,8 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"heldout80_35_recede46px_3_9m_4_4rps_y_aloe", 46, 3.9, recede, 1.6, 4.4, 'y',
                     aloe, 32},
         motion_case{"heldout80_38_approach29px_3_1m_kodim23", 29, 3.1, approach, 0.8, 0.0, 'x',
-                    photo2, 40}),
+                    photo2, 40},
+        motion_case{"throw160px_half_kodim19", 160, 2.6, thrown, 0.5, 0.0, 'x', photo3, 40}),
     case_name);
 
 }  // namespace
