@@ -202,6 +202,19 @@ TEST(StereoReach, AnObjectAtTheBackgroundsDisparityIsNotWidened) {
     EXPECT_EQ(r.right, 0);
 }
 
+// A ball's core stands nearer than its rim: asked at 43 px (within the
+// spread of the object's 40), the right side's end is read in the left
+// image at the rim's 40 and brought back to the right image at 40, not 43
+// (3 px short).
+TEST(StereoReach, TheRightEndIsBroughtBackAtTheRimsDisparity) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::box narrow{object_x0 + 24, object_y0, 120 - 24 - 13, 80};
+    const dsp::stereo_reach r =
+        dsp::reach_past_sides(p.right_view(), p.left_view(), narrow, at_disparity(43), 60,
+                              depth_range_search(), dsp::stereo_reach_params{});
+    EXPECT_NEAR(r.right, 13, 1);
+}
+
 dsp::stereo_reach reach_ends(const pair_images& p, dsp::box b, int max_reach = 40,
                              int d = object_disparity) {
     return dsp::reach_past_ends(p.right_view(), p.left_view(), b, at_disparity(d), max_reach,
