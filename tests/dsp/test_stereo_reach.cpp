@@ -93,9 +93,10 @@ dsp::object_match at_disparity(int d) {
     return m;
 }
 
-dsp::stereo_reach reach(const pair_images& p, dsp::box b, int max_reach = 60) {
-    return dsp::reach_past_sides(p.right_view(), p.left_view(), b, at_disparity(object_disparity),
-                                 max_reach, depth_range_search(), dsp::stereo_reach_params{});
+dsp::stereo_reach reach(const pair_images& p, dsp::box b, int max_reach = 60,
+                        int d = object_disparity) {
+    return dsp::reach_past_sides(p.right_view(), p.left_view(), b, at_disparity(d), max_reach,
+                                 depth_range_search(), dsp::stereo_reach_params{});
 }
 
 TEST(StereoReach, ABoxShortAtBothSidesReachesTheObjectsSides) {
@@ -184,9 +185,8 @@ TEST(StereoReach, AnObjectWhoseSidesAreNotMetIsNotWidened) {
 // its whole bound, half its size a side.
 TEST(StereoReach, ABoxAskedAtTheBackgroundsDisparityIsNotWidenedToTheBound) {
     const pair_images p = make_pair(backdrop::textured);
-    const dsp::stereo_reach r = dsp::reach_past_sides(
-        p.right_view(), p.left_view(), dsp::box{object_x0 - 8, object_y0, 136, 80},
-        at_disparity(background_disparity), 30, depth_range_search(), dsp::stereo_reach_params{});
+    const dsp::stereo_reach r =
+        reach(p, dsp::box{object_x0 - 8, object_y0, 136, 80}, 30, background_disparity);
     EXPECT_EQ(r.left, 0);
     EXPECT_EQ(r.right, 0);
 }
@@ -195,9 +195,7 @@ TEST(StereoReach, AnObjectAtTheBackgroundsDisparityIsNotWidened) {
     const pair_images p = make_pair(backdrop::textured);
     const dsp::box narrow{object_x0 + 24, object_y0, 60, 80};
     // Asked at the background's disparity: the object's tiles match elsewhere.
-    const dsp::stereo_reach r = dsp::reach_past_sides(
-        p.right_view(), p.left_view(), narrow, at_disparity(background_disparity), 60,
-        depth_range_search(), dsp::stereo_reach_params{});
+    const dsp::stereo_reach r = reach(p, narrow, 60, background_disparity);
     EXPECT_EQ(r.left, 0);
     EXPECT_EQ(r.right, 0);
 }
@@ -209,10 +207,7 @@ TEST(StereoReach, AnObjectAtTheBackgroundsDisparityIsNotWidened) {
 TEST(StereoReach, TheRightEndIsBroughtBackAtTheRimsDisparity) {
     const pair_images p = make_pair(backdrop::textured);
     const dsp::box narrow{object_x0 + 24, object_y0, 120 - 24 - 13, 80};
-    const dsp::stereo_reach r =
-        dsp::reach_past_sides(p.right_view(), p.left_view(), narrow, at_disparity(43), 60,
-                              depth_range_search(), dsp::stereo_reach_params{});
-    EXPECT_NEAR(r.right, 13, 1);
+    EXPECT_NEAR(reach(p, narrow, 60, 43).right, 13, 1);
 }
 
 dsp::stereo_reach reach_ends(const pair_images& p, dsp::box b, int max_reach = 40,
