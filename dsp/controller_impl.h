@@ -249,6 +249,7 @@ struct controller::impl {
         int fitted_axes = 0;
         int edge_axes = 0;  // axes whose fading rim was read (fading_rim_step2)
         bool window_moving = false;
+        bool round_read = false;  // a part's common part tested for a sphere's shape (is_round)
     };
     // The trailing edge's step per axis where a leading rim fades, in half
     // pixels (0: none), and how many axes were read.

@@ -118,6 +118,7 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
     if (measured_disparity_q8 > 0)  // sizes at the depth, at most: the last box's and a key's
         *cycles += cycles_of(cost::size_at_depth_profile(4 + 2 * recent_extents.count));
     *cycles += reading.fitted_axes * cycles_of(cost::window_fit_profile(recent_extents.count));
+    if (reading.round_read) *cycles += cycles_of(cost::round_box_profile());  // is_round
     // A fading rim is read as the window's step is, over the same extents.
     *cycles += reading.edge_axes * cycles_of(cost::window_step_profile(recent_extents.count));
     const track_status status =
@@ -177,10 +178,17 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
 // box's area if that is less (fewer: the object stopped).
 // In DETECT object(t-1) is the detection's (`detected`) and the packed mask
 // already holds Dif(t-1,t): only that difference is read.
+// While the box may be a part of its object (box_may_be_part), the
+// differences are read over the whole frame: the object may reach a ball's
+// width past a part, and a region grown by the part's own size cut both
+// differences short (a 35 x 11 px part of a 163 px ball grew by 20 px a
+// pair, four pairs to the ball's size).
 controller::impl::motion_extents controller::impl::measure_motion(box last, const box* detected,
                                                                   uint64_t* cycles,
                                                                   sdram_traffic* traffic) {
-    const box region = size_rule_region(last, config.track.search_radius, width, height);
+    const box region = box_may_be_part && !detected
+                           ? box{0, 0, width, height}
+                           : size_rule_region(last, config.track.search_radius, width, height);
     const uint8_t threshold = config.detect.threshold;
     motion_blocks& earlier = detector.blocks();
     if (!detected) earlier.begin(region.width, region.height);
@@ -249,7 +257,10 @@ controller::impl::motion_extents controller::impl::measure_motion(box last, cons
 // allows: the three-frame AND of a slow spinning ball holds where its texture changed most (a
 // detection 67 x 34 px of a 110 px ball, 88 px wide of 140), both differences the whole ball. Not
 // later in a track (at a bounce the common part holds the ball and where it was and will be), nor
-// for a fast object (a throw's first common part is over an eighth larger than its detection).
+// for a fast object (a throw's first common part is over an eighth larger than its detection),
+// unless that common part holds the box on both axes, clear of the border, and has a sphere's
+// shape (dsp/round_box.h, is_round): object(t-1) whole, which a three-frame AND of a large ball
+// moving along an axis leaves a sliver of (a 35 x 11 px detection of a 163 px ball thrown up).
 // A fast object (read_speed: Dif(t-1,t) 2 min_shift px or more past object(t-1), or the extent
 // window's step min_shift px a pair or more): a size measured short is a rim the differences
 // missed, neither a reason to give up nor taken, and object(t) is fitted to the last pairs'
@@ -268,10 +279,17 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
                          near_size(motion.before.right(), motion.after.right(), slow);
     const bool grows_y = may_be_part && near_size(motion.before.y, motion.after.y, slow) &&
                          near_size(motion.before.bottom(), motion.after.bottom(), slow);
-    const bool grown_x = grows_x && !part_x && covers(common_x, x_span(last)) &&
-                         common_x.size > last.width + tolerance_x;
-    const bool grown_y = grows_y && !part_y && covers(common_y, y_span(last)) &&
-                         common_y.size > last.height + tolerance_y;
+    const bool holds = covers(common_x, x_span(last)) && covers(common_y, y_span(last));
+    const bool larger =
+        common_x.size > last.width + tolerance_x || common_y.size > last.height + tolerance_y;
+    const bool round_read =
+        may_be_part && !part_x && !part_y && holds && larger && !at_border(motion.previous);
+    const bool round_part = round_read && is_round(motion.previous, config.rig);
+    if (reading) reading->round_read = round_read;
+    const bool grown_x = round_part || (grows_x && !part_x && covers(common_x, x_span(last)) &&
+                                        common_x.size > last.width + tolerance_x);
+    const bool grown_y = round_part || (grows_y && !part_y && covers(common_y, y_span(last)) &&
+                                        common_y.size > last.height + tolerance_y);
     const span previous_x =
         grown_x ? common_x : previous_axis(x_span(motion.before), x_span(motion.after), last.width);
     const span previous_y =

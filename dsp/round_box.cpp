@@ -23,21 +23,35 @@ bool falls_short(int side, int shape) {
     return side + max_int(2, shape / 8) < shape;
 }
 
+// The height a sphere's image as wide as `b` has at b's place, and the
+// width one as high has.
+struct sphere_shape {
+    int height = 0, width = 0;
+};
+
+sphere_shape shape_at(box b, const camera_rig& rig) {
+    const int64_t f = rig.focal_px_q8();
+    const int64_t wide = extent_scale_q8(f, int64_t{b.center_x2()} * 128 - rig.cx_right_q8);
+    const int64_t high = extent_scale_q8(f, int64_t{b.center_y2()} * 128 - rig.cy_right_q8);
+    return {scaled(b.width, high, wide), scaled(b.height, wide, high)};
+}
+
 }  // namespace
+
+bool is_round(box b, const camera_rig& rig) {
+    const sphere_shape shape = shape_at(b, rig);
+    return !b.empty() && !falls_short(b.height, shape.height) && !falls_short(b.width, shape.width);
+}
 
 box rounded_box(box b, int image_width, int image_height, const camera_rig& rig) {
     if (b.empty() || b.x <= 0 || b.y <= 0 || b.right() >= image_width || b.bottom() >= image_height)
         return b;
-    const int64_t f = rig.focal_px_q8();
-    const int64_t wide = extent_scale_q8(f, int64_t{b.center_x2()} * 128 - rig.cx_right_q8);
-    const int64_t high = extent_scale_q8(f, int64_t{b.center_y2()} * 128 - rig.cy_right_q8);
-    const int shape_height = scaled(b.width, high, wide);
-    const int shape_width = scaled(b.height, wide, high);
+    const sphere_shape shape = shape_at(b, rig);
     box grown = b;
-    if (falls_short(b.height, shape_height)) {
-        grown = resized_about_centre(b, b.width, shape_height);
-    } else if (falls_short(b.width, shape_width)) {
-        grown = resized_about_centre(b, shape_width, b.height);
+    if (falls_short(b.height, shape.height)) {
+        grown = resized_about_centre(b, b.width, shape.height);
+    } else if (falls_short(b.width, shape.width)) {
+        grown = resized_about_centre(b, shape.width, b.height);
     } else {
         return b;
     }

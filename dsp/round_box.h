@@ -28,4 +28,8 @@ namespace dsp {
 // a box longer than the shape is not cut back.
 box rounded_box(box b, int image_width, int image_height, const camera_rig& rig);
 
+// Whether neither side of `b` falls short of the sphere's shape at b's place
+// by over an eighth (at least 2 px): a box a ball's image may fill.
+bool is_round(box b, const camera_rig& rig);
+
 }  // namespace dsp

@@ -1579,6 +1579,26 @@ INSTANTIATE_TEST_SUITE_P(ShortSideGrown, BoxOnMotion,
                                                        40}),
                          case_name);
 
+// A detection that is a sliver of its ball, grown to both differences'
+// common part where that part holds it and is round, read over the whole
+// frame (dsp/controller_track.cpp, follow_object, measure_motion); then in
+// DISABLED_Open. A 160 px ball thrown at half speed over kodim19, found by
+// a sweep of 45 large balls (160-230 px) thrown at half speed over five
+// backdrops (44 passed): detected as a 35 x 11 px sliver of its top, its
+// box grew by about 20 px a pair and was 54.8 px above the ball's centre at
+// its first judged pair (49 x 110 px short), depth 1.84 % off (now 0.65 /
+// 1.49 px, 0.46 %). The circle from its other side at 3 px a frame for 32
+// frames, beside DriftAcrossCircleBack: a 90 px ball spinning about z over
+// cones, 35.7 px off at one pair before the round box (its box a 14 x 8 px
+// part of the ball), then 0.89 / 1.83 px with its depth 1.14 % off (now
+// 0.77 / 1.44 px, 0.53 %).
+INSTANTIATE_TEST_SUITE_P(RoundCommonPart, BoxOnMotion,
+                         ::testing::Values(motion_case{"throw160px_half_kodim19", 160, 2.6, thrown,
+                                                       0.5, 0.0, 'x', photo3, 40},
+                                           motion_case{"circle_back90px_3pxpf_1rps_z_cones_32f", 90,
+                                                       2.6, circle_back, 0.4, 1.0, 'z', photo, 32}),
+                         case_name);
+
 // Open: small balls thrown fast 3.5-4 m away, found while looking for the
 // apex cases above. The box centre stays within its bounds, but at one pair
 // near the bounce the depth is off by more than 1 % (23.7 px of disparity
@@ -1596,10 +1616,6 @@ INSTANTIATE_TEST_SUITE_P(ShortSideGrown, BoxOnMotion,
 // the stereo reach took teddy for the ball, a side or end moved out 41-44
 // px), and one more at 30 frames past its 24th (the depth 1.13 % off at
 // about 77 px, untiled).
-// The circle from its other side at 3 px a frame for 32 frames, beside
-// DriftAcrossCircleBack: a 90 px ball spinning about z over cones, 35.7 px
-// off at one pair (its box a 14 x 8 px part of the ball); with the box
-// rounded 1.83 px, but its depth 1.14 % off.
 // Found while looking for the other mutants' cases: a 35 px circle over
 // cones (6.06 px off at one pair).
 // Round 80's nine held-out failures (HeldOutSweep80): four on the depth
@@ -1608,11 +1624,7 @@ INSTANTIATE_TEST_SUITE_P(ShortSideGrown, BoxOnMotion,
 // circle's other side over venus 8.2 px off at one pair, a 210 px circle
 // 6.23 px; balls going away (174 px, 44 px over kodim23, 46 px over aloe)
 // 9.5-24.5 px off before they reach the background plane.
-// Found by a sweep of 45 large balls (160-230 px) thrown at half speed over
-// five backdrops, 44 of which pass: a 160 px ball not spinning over
-// kodim19, its box 54.8 px above the ball's centre at its first judged
-// pair (a part of the ball, 49 x 110 px short), the depth 1.84 % off. And
-// by a sweep of 144 slow passes and circles (50-140 px at 1-2 px a frame,
+// Found by a sweep of 144 slow passes and circles (50-140 px at 1-2 px a frame,
 // spinning 0.5-1 rev/s about z or x), 143 of which pass: a 50 px circle over
 // aloe, its depth 1.01 % off at one pair.
 // Not run by default (DISABLED_): the firmware does not meet them yet.
@@ -1647,8 +1659,6 @@ INSTANTIATE_TEST_SUITE_P(
                     24},
         motion_case{"recede120px_6pxpf_2rps_x_teddy_30f", 120, 2.6, recede, 0.8, 2.0, 'x', photo4,
                     30},
-        motion_case{"circle_back90px_3pxpf_1rps_z_cones_32f", 90, 2.6, circle_back, 0.4, 1.0, 'z',
-                    photo, 32},
         motion_case{"circle35px_3pxpf_2rps_x_cones_32f", 35, 2.6, circle, 0.4, 2.0, 'x', photo, 32},
         motion_case{"heldout80_00_back112px_3_1m_4_3rps_z_venus", 112, 3.1, circle_back, 3.6, 4.3,
                     'z', venus, 32},
@@ -1668,7 +1678,6 @@ INSTANTIATE_TEST_SUITE_P(
                     aloe, 32},
         motion_case{"heldout80_38_approach29px_3_1m_kodim23", 29, 3.1, approach, 0.8, 0.0, 'x',
                     photo2, 40},
-        motion_case{"throw160px_half_kodim19", 160, 2.6, thrown, 0.5, 0.0, 'x', photo3, 40},
         motion_case{"circle50px_2pxpf_1rps_x_aloe", 50, 2.6, circle, 0.2, 1.0, 'x', aloe, 30}),
     case_name);
 

@@ -161,4 +161,26 @@ TEST(RoundBox, NotWhereTheBorderCutsTheBoxNorWhereItWouldLeaveTheImage) {
     EXPECT_TRUE(same(dsp::rounded_box(box{}, image_width, image_height, rig), box{}));
 }
 
+// is_round against the same projections: a sphere's own box is round at any
+// lens and place, and one cut by over an eighth on either axis is not, up to
+// the image's borders, which is_round does not look at.
+TEST(RoundBox, IsRoundHoldsForASpheresBoxNotForOneCutShort) {
+    const int checked =
+        for_each_sphere_in_image([](const dsp::camera_rig& rig, const std::string& at, box b) {
+            EXPECT_TRUE(dsp::is_round(b, rig)) << at;
+            const box low = cut_about_centre(b, b.width, b.height * 8 / 10);
+            const box narrow = cut_about_centre(b, b.width * 8 / 10, b.height);
+            EXPECT_FALSE(dsp::is_round(low, rig)) << at;
+            EXPECT_FALSE(dsp::is_round(narrow, rig)) << at;
+        });
+    EXPECT_GE(checked, 30);
+    const dsp::camera_rig rig;
+    const box on_axis{272, 192, 96, 96};
+    EXPECT_TRUE(dsp::is_round(cut_about_centre(on_axis, 96, 84), rig));   // an eighth short
+    EXPECT_FALSE(dsp::is_round(cut_about_centre(on_axis, 96, 83), rig));  // past it
+    EXPECT_FALSE(dsp::is_round(cut_about_centre(on_axis, 83, 96), rig));
+    EXPECT_TRUE(dsp::is_round(box{0, 200, 50, 50}, rig));  // at the border: its shape alone
+    EXPECT_FALSE(dsp::is_round(box{}, rig));
+}
+
 }  // namespace
