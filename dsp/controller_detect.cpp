@@ -245,6 +245,7 @@ bool controller::impl::confirm_slow_object(uint64_t* cycles, sdram_traffic* traf
     *cycles += cycles_of(
         cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
     take_key(cycles, traffic);
+    box_may_be_part = false;  // the key's outline: the whole object
     return true;
 }
 

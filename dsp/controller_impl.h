@@ -119,8 +119,8 @@ struct controller::impl {
     uint8_t* right_gray[2] = {};     // f(t) and f(t-1); roles swap every pair
     uint8_t* left_gray = nullptr;    // the current left gray frame
     uint8_t* motion_mask = nullptr;  // packed Dif(t-2,t-1), then Dif(t-1,t)
-    uint8_t* refit_rows = nullptr;  // one row of Dif(t-2,t-1) and of Dif(t-1,t) around the last box
-    motion_blocks later_blocks;     // block groups of Dif(t-1,t); Dif(t-2,t-1)'s: the detector's
+    uint8_t* refit_rows = nullptr;   // a row of Dif(t-2,t-1) and of Dif(t-1,t): TRACK's region
+    motion_blocks later_blocks;      // block groups of Dif(t-1,t); Dif(t-2,t-1)'s: the detector's
     uint8_t* edge_band_storage = nullptr;  // own Sobel bands, or null: inside f(t-1)
     int band_rows = 0;
 
@@ -262,7 +262,8 @@ struct controller::impl {
         bool x = false, y = false;
         bool round_read = false;  // the common part tested for a sphere's shape (is_round)
     };
-    part_growth grow_part(const motion_extents& motion, box last, bool part_x, bool part_y) const;
+    part_growth grow_part(const motion_extents& motion, box last, bool may_be_part, bool part_x,
+                          bool part_y) const;
     bool follow_object(const motion_extents& motion, box last, bool may_be_part, bool keyed,
                        box* followed, follow_reading* reading = nullptr) const;
     int fit_to_window(bool fit_x, bool fit_y, int size_x, int size_y, box last, span* object_x,

@@ -9,7 +9,9 @@ using namespace controller_parts;
 
 namespace {
 
-// Where the differences are read when the object's box at t-1 was `last`:
+// Where the differences are read when the object's box at t-1 was `last`
+// (a box that may be a part of its object reads the whole frame instead,
+// measure_motion):
 // the box grown by its own size and by `reach` (how far the object may have
 // moved since) each side, clipped to the frame. A box much smaller than the
 // object (an 8-21 px box started on an 80 px ball) sees its object's extent
@@ -181,8 +183,9 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
 // While the box may be a part of its object (box_may_be_part), the
 // differences are read over the whole frame: the object may reach a ball's
 // width past a part, and a region grown by the part's own size cut both
-// differences short (a 35 x 11 px part of a 163 px ball grew by 20 px a
-// pair, four pairs to the ball's size).
+// differences short (around a 35 x 11 px part of a 160 px ball thrown up;
+// the SAD's pull then grew its box by about 20 px a pair, four pairs to the
+// ball's size).
 controller::impl::motion_extents controller::impl::measure_motion(box last, const box* detected,
                                                                   uint64_t* cycles,
                                                                   sdram_traffic* traffic) {
@@ -242,8 +245,9 @@ controller::impl::motion_extents controller::impl::measure_motion(box last, cons
     return m;
 }
 
-// Where a box that may be a part of its object takes object(t-1)'s extent,
-// both differences' common part, as it is (follow_object). Per axis for a
+// Where a box that may be a part of its object (`may_be_part`) takes
+// object(t-1)'s extent, both differences' common part, as it is
+// (follow_object); neither axis where Dif(t-1,t) is a part of it. Per axis for a
 // slow object (both differences' extents within min_shift px of each
 // other), where that part holds the box and is over an eighth larger: the
 // three-frame AND of a slow spinning ball holds where its texture changed
@@ -255,21 +259,23 @@ controller::impl::motion_extents controller::impl::measure_motion(box last, cons
 // is over an eighth larger on one, is clear of the border and has a
 // sphere's shape (dsp/round_box.h, is_round): object(t-1) whole, of which a
 // three-frame AND of a large ball moving along an axis leaves a sliver (a
-// 35 x 11 px detection of a 163 px ball thrown up).
+// 35 x 11 px detection of a 160 px ball thrown up).
 controller::impl::part_growth controller::impl::grow_part(const motion_extents& motion, box last,
-                                                          bool part_x, bool part_y) const {
+                                                          bool may_be_part, bool part_x,
+                                                          bool part_y) const {
     const int tolerance_x = max_int(2, last.width / 8), tolerance_y = max_int(2, last.height / 8);
     const span common_x = x_span(motion.previous), common_y = y_span(motion.previous);
     const int slow = key_frame::min_shift;
-    const bool slow_x = near_size(motion.before.x, motion.after.x, slow) &&
+    const bool slow_x = may_be_part && near_size(motion.before.x, motion.after.x, slow) &&
                         near_size(motion.before.right(), motion.after.right(), slow);
-    const bool slow_y = near_size(motion.before.y, motion.after.y, slow) &&
+    const bool slow_y = may_be_part && near_size(motion.before.y, motion.after.y, slow) &&
                         near_size(motion.before.bottom(), motion.after.bottom(), slow);
     const bool holds = covers(common_x, x_span(last)) && covers(common_y, y_span(last));
     const bool larger =
         common_x.size > last.width + tolerance_x || common_y.size > last.height + tolerance_y;
     part_growth g;
-    g.round_read = !part_x && !part_y && holds && larger && !at_border(motion.previous);
+    g.round_read =
+        may_be_part && !part_x && !part_y && holds && larger && !at_border(motion.previous);
     const bool round = g.round_read && is_round(motion.previous, config.rig);
     g.x = round || (slow_x && !part_x && covers(common_x, x_span(last)) &&
                     common_x.size > last.width + tolerance_x);
@@ -302,7 +308,7 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
     if (part_x && part_y) return false;
     const int tolerance_x = max_int(2, last.width / 8), tolerance_y = max_int(2, last.height / 8);
     const span common_x = x_span(motion.previous), common_y = y_span(motion.previous);
-    const part_growth grown = may_be_part ? grow_part(motion, last, part_x, part_y) : part_growth{};
+    const part_growth grown = grow_part(motion, last, may_be_part, part_x, part_y);
     if (reading) reading->round_read = grown.round_read;
     const bool grown_x = grown.x, grown_y = grown.y;
     const int slow = key_frame::min_shift;

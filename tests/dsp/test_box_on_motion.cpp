@@ -1581,12 +1581,12 @@ INSTANTIATE_TEST_SUITE_P(ShortSideGrown, BoxOnMotion,
 
 // A detection that is a sliver of its ball, grown to both differences'
 // common part where that part holds it and is round, read over the whole
-// frame (dsp/controller_track.cpp, follow_object, measure_motion); then in
+// frame (dsp/controller_track.cpp, grow_part, measure_motion); until then in
 // DISABLED_Open. A 160 px ball thrown at half speed over kodim19, found by
 // a sweep of 45 large balls (160-230 px) thrown at half speed over five
 // backdrops (44 passed): detected as a 35 x 11 px sliver of its top, its
 // box grew by about 20 px a pair and was 54.8 px above the ball's centre at
-// its first judged pair (49 x 110 px short), depth 1.84 % off (now 0.65 /
+// its first judged pair (54.87 px; 49 x 110 px short), depth 1.84 % off (now 0.65 /
 // 1.49 px, 0.46 %). The circle from its other side at 3 px a frame for 32
 // frames, beside DriftAcrossCircleBack: a 90 px ball spinning about z over
 // cones, 35.7 px off at one pair before the round box (its box a 14 x 8 px
@@ -1616,8 +1616,8 @@ INSTANTIATE_TEST_SUITE_P(RoundCommonPart, BoxOnMotion,
 // the stereo reach took teddy for the ball, a side or end moved out 41-44
 // px), and one more at 30 frames past its 24th (the depth 1.13 % off at
 // about 77 px, untiled).
-// Found while looking for the other mutants' cases: a 35 px circle over
-// cones (6.06 px off at one pair).
+// Found while looking for the drift mutants' cases beside
+// DriftAcrossCircleBack: a 35 px circle over cones (6.06 px off at one pair).
 // Round 80's nine held-out failures (HeldOutSweep80): four on the depth
 // alone, 1.07-1.20 % too far at one or two pairs (43-55 px balls over
 // kodim23, tsukuba, aloe; a 29 px ball coming nearer); a 112 px ball on the
