@@ -1585,9 +1585,9 @@ INSTANTIATE_TEST_SUITE_P(ShortSideGrown, BoxOnMotion,
 // DISABLED_Open. A 160 px ball thrown at half speed over kodim19, found by
 // a sweep of 45 large balls (160-230 px) thrown at half speed over five
 // backdrops (44 passed): detected as a 35 x 11 px sliver of its top, its
-// box grew by about 20 px a pair and was 54.8 px above the ball's centre at
-// its first judged pair (54.87 px; 49 x 110 px short), depth 1.84 % off (now 0.65 /
-// 1.49 px, 0.46 %). The circle from its other side at 3 px a frame for 32
+// box grew by about 20 px a pair and was 54.87 px off, above the ball's
+// centre, at its first judged pair (49 x 110 px short), depth 1.84 % off
+// (now 0.65 / 1.49 px, 0.46 %). The circle from its other side at 3 px a frame for 32
 // frames, beside DriftAcrossCircleBack: a 90 px ball spinning about z over
 // cones, 35.7 px off at one pair before the round box (its box a 14 x 8 px
 // part of the ball), then 0.89 / 1.83 px with its depth 1.14 % off (now

@@ -270,7 +270,7 @@ TEST(default_scenario, golden_stage_cycles_and_one_timeline) {
     // A detection's box that may be a part of its object reads both
     // differences over the whole frame, and its common part is tested for a
     // sphere's shape (dsp/controller_track.cpp, measure_motion and
-    // follow_object; is_round charged as round_box_profile, 308 cycles):
+    // grow_part; is_round charged as round_box_profile, 308 cycles):
     // track alone moved, by 659,247 cycles, 308 of them is_round on one
     // pair; the boxes, and so the other stages and the timeline, did not
     // (2,891,816 before).
