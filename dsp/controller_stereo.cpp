@@ -2,6 +2,7 @@
 // match), the disparity chosen, and the 3D point.
 #include "dsp/controller_impl.h"
 #include "dsp/object_depth.h"
+#include "dsp/round_box.h"
 #include "dsp/stereo_reach.h"
 
 namespace dsp {
@@ -151,18 +152,39 @@ uint64_t controller::impl::read_short_of(box core, const frame_output& out,
 // object stops short of it. The tracker's box is not: handed to it, the
 // wider box was placed by the difference rules from its other edge, and
 // walked off the object (docs/firmware.md).
+// A widening that draws the box out on one axis past a sphere's image
+// (dsp/round_box.h, drawn_out) read what is behind as the object: a ball a
+// few tenths of a metre before the background stands within its own
+// disparity span of it (a 120 px ball going away over teddy, 0.6 m before
+// it: widened 42 px down, its tracker's box 74 x 84 px on a ball of 83).
+// That axis's reach is not taken. Each axis is judged against the other's
+// larger size, the tracker's or the reported one: a side moved in too far
+// makes the box oblong too, and is no sign of a wrong reach (a 140 px ball
+// going away, its tracker's box held 29 px too large, trimmed 9 px too far
+// on y). Away from the image's border only: a cut object is not round.
 uint64_t controller::impl::widen_to_stereo_reach(box core, const stereo_reach& short_sides,
                                                  const stereo_reach& short_ends,
                                                  frame_output& out) {
     const box b = out.box_right;
     const stereo_reach_params params;
     const object_match match = match_of(out.sad_match, core, b, config.rig);
-    const stereo_reach r =
+    stereo_reach r =
         reach_past_sides(history(0), left(), b, match, b.width / 2, config.stereo, params);
-    const stereo_reach v =
+    stereo_reach v =
         reach_past_ends(history(0), left(), b, match, b.height / 2, config.stereo, params);
+    uint64_t cycles = reach_cycles(r, false) + reach_cycles(v, true);
+    const box widened = moved_box(b, r, v, short_sides, short_ends);
+    if (!at_border(b) && !at_border(widened)) {
+        const box against_width{widened.x, widened.y, widened.width,
+                                max_int(widened.height, b.height)};
+        const box against_height{widened.x, widened.y, max_int(widened.width, b.width),
+                                 widened.height};
+        if (drawn_out(against_width, config.rig) == drawn_out_axis::width) r = stereo_reach{};
+        if (drawn_out(against_height, config.rig) == drawn_out_axis::height) v = stereo_reach{};
+        cycles += 2 * cycles_of(cost::round_box_profile());  // a sphere's shape, twice
+    }
     out.box_right = moved_box(b, r, v, short_sides, short_ends);
-    return reach_cycles(r, false) + reach_cycles(v, true);
+    return cycles;
 }
 
 // Stage stereo_edge: Sobel on a band of the pattern's rows of both images

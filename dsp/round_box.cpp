@@ -43,6 +43,14 @@ bool is_round(box b, const camera_rig& rig) {
     return !b.empty() && !falls_short(b.height, shape.height) && !falls_short(b.width, shape.width);
 }
 
+drawn_out_axis drawn_out(box b, const camera_rig& rig) {
+    if (b.empty()) return drawn_out_axis::neither;
+    const sphere_shape shape = shape_at(b, rig);
+    if (falls_short(b.width, shape.width)) return drawn_out_axis::height;
+    if (falls_short(b.height, shape.height)) return drawn_out_axis::width;
+    return drawn_out_axis::neither;
+}
+
 box rounded_box(box b, int image_width, int image_height, const camera_rig& rig) {
     if (b.empty() || b.x <= 0 || b.y <= 0 || b.right() >= image_width || b.bottom() >= image_height)
         return b;

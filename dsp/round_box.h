@@ -32,4 +32,10 @@ box rounded_box(box b, int image_width, int image_height, const camera_rig& rig)
 // by over an eighth (at least 2 px): a box a ball's image may fill.
 bool is_round(box b, const camera_rig& rig);
 
+// The axis on which `b` is longer than a sphere's image as wide (as high)
+// at b's place by over an eighth (at least 2 px): the other side falls
+// short of the shape the long one gives it (is_round's test, turned).
+enum class drawn_out_axis { neither, width, height };
+drawn_out_axis drawn_out(box b, const camera_rig& rig);
+
 }  // namespace dsp

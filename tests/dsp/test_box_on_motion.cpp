@@ -1599,6 +1599,29 @@ INSTANTIATE_TEST_SUITE_P(RoundCommonPart, BoxOnMotion,
                                                        2.6, circle_back, 0.4, 1.0, 'z', photo, 32}),
                          case_name);
 
+// A reach that draws the reported box out on one axis past a sphere's
+// image is not taken on that axis (dsp/controller_stereo.cpp,
+// widen_to_stereo_reach); until then in DISABLED_Open. Balls going away a
+// few tenths of a metre before the background plane, which then matches
+// inside the object's disparity span: 120-140 px over teddy (one end or
+// side widened 41-44 px at one pair, 13.7-22.8 px off), round 78's 160 px
+// ball over kodim23 (24.7 px), round 80's 44 px over kodim23 and 46 px over
+// aloe (9.5 and 10.3 px).
+INSTANTIATE_TEST_SUITE_P(ReachKeptRound, BoxOnMotion,
+                         ::testing::Values(motion_case{"heldout78_31_recede160px_2_9m_kodim23", 160,
+                                                       2.9, recede, 0.3, 0.0, 'y', photo2, 32},
+                                           motion_case{"recede140px_6pxpf_1rps_y_teddy_3m", 140,
+                                                       3.0, recede, 1.0, 1.0, 'y', photo4, 24},
+                                           motion_case{"recede120px_8pxpf_2rps_x_teddy_3m", 120,
+                                                       3.0, recede, 1.2, 2.0, 'x', photo4, 24},
+                                           motion_case{"recede130px_6pxpf_1rps_y_teddy_3m", 130,
+                                                       3.0, recede, 1.0, 1.0, 'y', photo4, 24},
+                                           motion_case{"heldout80_30_recede44px_3_5m_kodim23", 44,
+                                                       3.5, recede, 1.7, 0.0, 'x', photo2, 32},
+                                           motion_case{"heldout80_35_recede46px_3_9m_4_4rps_y_aloe",
+                                                       46, 3.9, recede, 1.6, 4.4, 'y', aloe, 32}),
+                         case_name);
+
 // Open: small balls thrown fast 3.5-4 m away, found while looking for the
 // apex cases above. The box centre stays within its bounds, but at one pair
 // near the bounce the depth is off by more than 1 % (23.7 px of disparity
@@ -1608,22 +1631,21 @@ INSTANTIATE_TEST_SUITE_P(RoundCommonPart, BoxOnMotion,
 // Round 78's nine held-out failures (HeldOutSweep78): seven of its ten
 // balls under 30 px wide fail (the 16 px and 17 px circles over kodim23
 // with the depth 26 % and 70 % off), the 185 px ball going away over aloe
-// loses its track, the 160 px one over kodim23 is 24.7 px off at one pair.
+// loses its track (the 160 px one over kodim23 passes: ReachKeptRound).
 // Balls 120-140 px going away over teddy at 6-8 px a frame, most spinning,
 // tried beside round 23's 120 px ball (which passes): 10 of 24 failed at 24
-// frames, 7 of them on the depth alone (TiledFromEighty since); three are
-// 13.7-22.8 px off at one pair (the ball 4.6 m away, 0.4 m before teddy:
-// the stereo reach took teddy for the ball, a side or end moved out 41-44
-// px), and one more at 30 frames past its 24th (the depth 1.13 % off at
-// about 77 px, untiled).
+// frames, 7 of them on the depth alone (TiledFromEighty since); three were
+// 13.7-22.8 px off at one pair (ReachKeptRound since), and one more at 30
+// frames past its 24th (the depth 1.13 % off at about 77 px, untiled).
 // Found while looking for the drift mutants' cases beside
 // DriftAcrossCircleBack: a 35 px circle over cones (6.06 px off at one pair).
 // Round 80's nine held-out failures (HeldOutSweep80): four on the depth
 // alone, 1.07-1.20 % too far at one or two pairs (43-55 px balls over
 // kodim23, tsukuba, aloe; a 29 px ball coming nearer); a 112 px ball on the
 // circle's other side over venus 8.2 px off at one pair, a 210 px circle
-// 6.23 px; balls going away (174 px, 44 px over kodim23, 46 px over aloe)
-// 9.5-24.5 px off before they reach the background plane.
+// 6.23 px; a 174 px ball going away 24.5 px off before it reaches the
+// background plane, its tracker's box held at 153 x 151 px while it shrank
+// (the 44 px and 46 px ones pass: ReachKeptRound).
 // Found by a sweep of 144 slow passes and circles (50-140 px at 1-2 px a frame,
 // spinning 0.5-1 rev/s about z or x), 143 of which pass: a 50 px circle over
 // aloe, its depth 1.01 % off at one pair.
@@ -1647,16 +1669,8 @@ INSTANTIATE_TEST_SUITE_P(
                     venus, 24},
         motion_case{"heldout78_16_circle29px_2_5m_8_7rps_x_kodim23", 29, 2.5, circle, 1.7, 8.7, 'x',
                     photo2, 32},
-        motion_case{"heldout78_31_recede160px_2_9m_kodim23", 160, 2.9, recede, 0.3, 0.0, 'y',
-                    photo2, 32},
         motion_case{"heldout78_32_circle21px_3_5m_cones", 21, 3.5, circle, 1.3, 0.0, 'x', photo,
                     32},
-        motion_case{"recede140px_6pxpf_1rps_y_teddy_3m", 140, 3.0, recede, 1.0, 1.0, 'y', photo4,
-                    24},
-        motion_case{"recede120px_8pxpf_2rps_x_teddy_3m", 120, 3.0, recede, 1.2, 2.0, 'x', photo4,
-                    24},
-        motion_case{"recede130px_6pxpf_1rps_y_teddy_3m", 130, 3.0, recede, 1.0, 1.0, 'y', photo4,
-                    24},
         motion_case{"recede120px_6pxpf_2rps_x_teddy_30f", 120, 2.6, recede, 0.8, 2.0, 'x', photo4,
                     30},
         motion_case{"circle35px_3pxpf_2rps_x_cones_32f", 35, 2.6, circle, 0.4, 2.0, 'x', photo, 32},
@@ -1672,10 +1686,6 @@ INSTANTIATE_TEST_SUITE_P(
                     aloe, 40},
         motion_case{"heldout80_25_circle210px_3_2m_6_1rps_x_kodim23", 210, 3.2, circle, 3.6, 6.1,
                     'x', photo2, 40},
-        motion_case{"heldout80_30_recede44px_3_5m_kodim23", 44, 3.5, recede, 1.7, 0.0, 'x', photo2,
-                    32},
-        motion_case{"heldout80_35_recede46px_3_9m_4_4rps_y_aloe", 46, 3.9, recede, 1.6, 4.4, 'y',
-                    aloe, 32},
         motion_case{"heldout80_38_approach29px_3_1m_kodim23", 29, 3.1, approach, 0.8, 0.0, 'x',
                     photo2, 40},
         motion_case{"circle50px_2pxpf_1rps_x_aloe", 50, 2.6, circle, 0.2, 1.0, 'x', aloe, 30}),

@@ -183,4 +183,26 @@ TEST(RoundBox, IsRoundHoldsForASpheresBoxNotForOneCutShort) {
     EXPECT_FALSE(dsp::is_round(box{}, rig));
 }
 
+// drawn_out against the same projections: a sphere's own box is drawn out
+// on neither axis; widened by over an eighth on one side it is drawn out on
+// that axis, on the other none.
+TEST(RoundBox, DrawnOutNamesTheAxisAWideningLengthened) {
+    const int checked =
+        for_each_sphere_in_image([](const dsp::camera_rig& rig, const std::string& at, box b) {
+            EXPECT_EQ(dsp::drawn_out(b, rig), dsp::drawn_out_axis::neither) << at;
+            const box taller{b.x, b.y, b.width, b.height * 13 / 10};
+            const box wider{b.x - b.width * 3 / 10, b.y, b.width * 13 / 10, b.height};
+            EXPECT_EQ(dsp::drawn_out(taller, rig), dsp::drawn_out_axis::height) << at;
+            EXPECT_EQ(dsp::drawn_out(wider, rig), dsp::drawn_out_axis::width) << at;
+        });
+    EXPECT_GE(checked, 30);
+    const dsp::camera_rig rig;
+    const box on_axis{272, 192, 84, 84};
+    EXPECT_EQ(dsp::drawn_out(box{272, 192, 84, 96}, rig), dsp::drawn_out_axis::neither);
+    EXPECT_EQ(dsp::drawn_out(box{272, 192, 84, 97}, rig), dsp::drawn_out_axis::height);
+    EXPECT_EQ(dsp::drawn_out(box{272, 192, 97, 84}, rig), dsp::drawn_out_axis::width);
+    EXPECT_EQ(dsp::drawn_out(on_axis, rig), dsp::drawn_out_axis::neither);
+    EXPECT_EQ(dsp::drawn_out(box{}, rig), dsp::drawn_out_axis::neither);
+}
+
 }  // namespace
