@@ -1622,6 +1622,64 @@ INSTANTIATE_TEST_SUITE_P(ReachKeptRound, BoxOnMotion,
                                                        46, 3.9, recede, 1.6, 4.4, 'y', aloe, 32}),
                          case_name);
 
+// Held out, round 84: 40 cases drawn at random (seed 84, round 80's
+// envelope) before they were run, on the firmware with the reach kept
+// round (ReachKeptRound). Seven moved faster than 30 px a frame (left
+// out); of the other 33, these 26 passed and 7 failed (DISABLED_Open).
+INSTANTIATE_TEST_SUITE_P(
+    HeldOutSweep84, BoxOnMotion,
+    ::testing::Values(
+        motion_case{"heldout84_00_back210px_2_1m_3_9rps_x_aloe", 210, 2.1, circle_back, 0.3, 3.9,
+                    'x', aloe, 32},
+        motion_case{"heldout84_01_enter167px_2_3m_5_7rps_y_tsukuba", 167, 2.3, enter, 4.8, 5.7, 'y',
+                    tsukuba, 40},
+        motion_case{"heldout84_03_back149px_2_2m_2_2rps_z_cones", 149, 2.2, circle_back, 1.4, 2.2,
+                    'z', photo, 32},
+        motion_case{"heldout84_04_left199px_2_2m_2_3rps_z_aloe", 199, 2.2, pass_left, 0.6, 2.3, 'z',
+                    aloe, 24},
+        motion_case{"heldout84_06_enter237px_2_7m_9_0rps_y_venus", 237, 2.7, enter, 1.7, 9.0, 'y',
+                    venus, 24},
+        motion_case{"heldout84_07_pass235px_3_6m_6_4rps_x_kodim23", 235, 3.6, pass, 0.4, 6.4, 'x',
+                    photo2, 32},
+        motion_case{"heldout84_08_recede111px_3_3m_6_9rps_y_cones", 111, 3.3, recede, 1.6, 6.9, 'y',
+                    photo, 24},
+        motion_case{"heldout84_14_approach40px_2_9m_tsukuba", 40, 2.9, approach, 1.3, 0.0, 'x',
+                    tsukuba, 24},
+        motion_case{"heldout84_16_enter163px_3_2m_6_4rps_z", 163, 3.2, enter, 3.9, 6.4, 'z',
+                    procedural, 32},
+        motion_case{"heldout84_17_enter126px_3_6m_tsukuba", 126, 3.6, enter, 2.8, 0.0, 'x', tsukuba,
+                    32},
+        motion_case{"heldout84_18_circle90px_2_5m_2_1rps_z_tsukuba", 90, 2.5, circle, 2.6, 2.1, 'z',
+                    tsukuba, 40},
+        motion_case{"heldout84_19_enter190px_2_8m_6_6rps_z_teddy", 190, 2.8, enter, 2.0, 6.6, 'z',
+                    photo4, 24},
+        motion_case{"heldout84_20_pass206px_2_0m_venus", 206, 2.0, pass, 0.8, 0.0, 'x', venus, 40},
+        motion_case{"heldout84_22_circle111px_3_9m_4_2rps_y", 111, 3.9, circle, 1.8, 4.2, 'y',
+                    procedural, 24},
+        motion_case{"heldout84_23_left193px_3_5m_3_8rps_y_venus", 193, 3.5, pass_left, 3.5, 3.8,
+                    'y', venus, 24},
+        motion_case{"heldout84_24_pass125px_3_5m_7_5rps_x_cones", 125, 3.5, pass, 0.8, 7.5, 'x',
+                    photo, 32},
+        motion_case{"heldout84_25_circle202px_2_5m_9_9rps_z_kodim23", 202, 2.5, circle, 1.5, 9.9,
+                    'z', photo2, 32},
+        motion_case{"heldout84_26_thrown180px_3_1m_5_9rps_x_aloe", 180, 3.1, thrown, 1.7, 5.9, 'x',
+                    aloe, 32},
+        motion_case{"heldout84_27_pass83px_3_5m_3_3rps_y_cones", 83, 3.5, pass, 3.9, 3.3, 'y',
+                    photo, 32},
+        motion_case{"heldout84_28_approach76px_2_9m_aloe", 76, 2.9, approach, 2.3, 0.0, 'x', aloe,
+                    24},
+        motion_case{"heldout84_30_circle66px_3_3m_aloe", 66, 3.3, circle, 0.9, 0.0, 'x', aloe, 40},
+        motion_case{"heldout84_31_back165px_2_0m_5_4rps_x_tsukuba", 165, 2.0, circle_back, 0.5, 5.4,
+                    'x', tsukuba, 32},
+        motion_case{"heldout84_33_thrown15px_3_3m_6_0rps_x_kodim23", 15, 3.3, thrown, 1.3, 6.0, 'x',
+                    photo2, 24},
+        motion_case{"heldout84_34_pass191px_3_3m", 191, 3.3, pass, 2.6, 0.0, 'x', procedural, 24},
+        motion_case{"heldout84_37_left203px_2_4m_aloe", 203, 2.4, pass_left, 3.4, 0.0, 'x', aloe,
+                    40},
+        motion_case{"heldout84_39_enter100px_3_5m_9_6rps_y_tsukuba", 100, 3.5, enter, 5.0, 9.6, 'y',
+                    tsukuba, 32}),
+    case_name);
+
 // Open: small balls thrown fast 3.5-4 m away, found while looking for the
 // apex cases above. The box centre stays within its bounds, but at one pair
 // near the bounce the depth is off by more than 1 % (23.7 px of disparity
@@ -1646,6 +1704,11 @@ INSTANTIATE_TEST_SUITE_P(ReachKeptRound, BoxOnMotion,
 // 6.23 px; a 174 px ball going away 24.5 px off before it reaches the
 // background plane, its tracker's box held at 153 x 151 px while it shrank
 // (the 44 px and 46 px ones pass: ReachKeptRound).
+// Round 84's seven held-out failures (HeldOutSweep84): four balls going
+// away (85-158 px) 7.3-26.4 px off near the background plane, their boxes
+// grown on both axes at once; a 44 px circle over aloe (9.36 px, depth
+// 1.93 %), a 34 px ball entering over venus (depth 1.48 %), and a 235 px
+// ball on the circle's other side that left TRACK for a pair.
 // Found by a sweep of 144 slow passes and circles (50-140 px at 1-2 px a frame,
 // spinning 0.5-1 rev/s about z or x), 143 of which pass: a 50 px circle over
 // aloe, its depth 1.01 % off at one pair.
@@ -1688,7 +1751,21 @@ INSTANTIATE_TEST_SUITE_P(
                     'x', photo2, 40},
         motion_case{"heldout80_38_approach29px_3_1m_kodim23", 29, 3.1, approach, 0.8, 0.0, 'x',
                     photo2, 40},
-        motion_case{"circle50px_2pxpf_1rps_x_aloe", 50, 2.6, circle, 0.2, 1.0, 'x', aloe, 30}),
+        motion_case{"circle50px_2pxpf_1rps_x_aloe", 50, 2.6, circle, 0.2, 1.0, 'x', aloe, 30},
+        motion_case{"heldout84_02_circle44px_3_3m_1_4rps_x_aloe", 44, 3.3, circle, 2.5, 1.4, 'x',
+                    aloe, 40},
+        motion_case{"heldout84_10_recede158px_3_2m_teddy", 158, 3.2, recede, 3.8, 0.0, 'x', photo4,
+                    40},
+        motion_case{"heldout84_11_back235px_3_0m_8_4rps_x_kodim19", 235, 3.0, circle_back, 2.2, 8.4,
+                    'x', photo3, 32},
+        motion_case{"heldout84_21_enter34px_3_8m_4_2rps_x_venus", 34, 3.8, enter, 1.5, 4.2, 'x',
+                    venus, 40},
+        motion_case{"heldout84_29_recede85px_3_8m_6_3rps_z_venus", 85, 3.8, recede, 4.9, 6.3, 'z',
+                    venus, 32},
+        motion_case{"heldout84_32_recede157px_2_7m_2_2rps_z_tsukuba", 157, 2.7, recede, 2.2, 2.2,
+                    'z', tsukuba, 40},
+        motion_case{"heldout84_35_recede129px_3_0m_5_2rps_x_teddy", 129, 3.0, recede, 3.0, 5.2, 'x',
+                    photo4, 40}),
     case_name);
 
 }  // namespace
