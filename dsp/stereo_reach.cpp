@@ -143,12 +143,19 @@ struct object_end {
 // wrong disparity (the background's), the background's tiles match there,
 // and the side would be moved out by its whole bound; it is not (-1). At
 // the image's edge the object ends there.
+// An end is taken only where the next tile is not the object's either
+// (where there is a next one within the bound and the image): past an
+// object's end the background goes on. One tile not the object's between
+// two that are is a flat patch (of the object, or of a background within
+// its disparity span, which the reach cannot tell from it: then it runs to
+// the bound and moves nothing).
 object_end find_end(const side_probe& p, const object_match& match, int max_distance,
                     uint32_t gate_q8, const stereo_params& search,
                     const stereo_reach_params& params, stereo_reach* r) {
     const int w = params.tile_width;
     const probe_gates gates = gates_of(gate_q8, params);
     object_end end;
+    int first_not = -1, first_not_d_out = -1;  // the first tile after end not the object's
     for (int k = 0; k * params.step < max_distance; ++k) {
         const int from = k * params.step;
         if (!p.in_ref(from, from + w)) return end;
@@ -158,13 +165,22 @@ object_end find_end(const side_probe& p, const object_match& match, int max_dist
         if (t.object) {
             end.distance = from + w;
             end.disparity = t.d_in;
+            first_not = -1;
             continue;
         }
-        if (end.distance < 0 || t.d_out < 0 || !p.fits(from - params.step, from + w, end.disparity))
-            return end;
+        if (end.distance < 0) return end;
+        const int next = from + params.step;
+        if (first_not < 0 && next < max_distance && p.in_ref(next, next + w)) {
+            first_not = from;
+            first_not_d_out = t.d_out;
+            continue;
+        }
+        const int at = first_not >= 0 ? first_not : from;
+        const int d_out = first_not >= 0 ? first_not_d_out : t.d_out;
+        if (d_out < 0 || !p.fits(at - params.step, at + w, end.disparity)) return end;
         r->split_columns += params.step + w;
         end.distance =
-            split_at(p, from - params.step, from + w, end.disparity, t.d_out, gates.line, params);
+            split_at(p, at - params.step, at + w, end.disparity, d_out, gates.line, params);
         return end;
     }
     return object_end{};

@@ -29,14 +29,16 @@
 //   and at most gate_factor x the object's SAD a pixel + gate_floor_per_pixel
 //   a pixel of the tile
 // (a flat tile of background matches about equally everywhere, and is not
-// taken). Where a tile is not, the object ends between it and the last
-// tile that was: each column of the two is read at the last one's best
-// disparity (the object's, the rim's) and at its own best elsewhere (what
-// is behind, its SAD at most the gate), and the end is the split with the
-// least SAD, the columns nearer the box the object's (past an end a row's
-// SAD as the object's weighed x clear_den, as background x clear_num, as
-// clearly as a tile must be, so that a row of flat background stays
-// background).
+// taken). Where a tile is not, and the next one is not either (past an
+// object's end the background goes on; one tile between two of the
+// object's is a flat patch), the object ends between the first of them
+// and the last tile that was: each column of the two is read at the last
+// one's best disparity (the object's, the rim's) and at its own best
+// elsewhere (what is behind, its SAD at most the gate), and the end is
+// the split with the least SAD, the columns nearer the box the object's
+// (past an end a row's SAD as the object's weighed x clear_den, as
+// background x clear_num, as clearly as a tile must be, so that a row of
+// flat background stays background).
 // (A tile part object, part background is taken by whichever has the
 // stronger texture, so its middle misses the end by up to half a tile.)
 // The right side's end is brought back to the right image at the rim's
@@ -48,7 +50,11 @@
 // d_object is the object's integer disparity (its core's), spread its
 // disparity span (object_depth.h).
 // Assumes: a rectified pair (the tile's rows only); the object nearer
-//   than its background by more than `spread`.
+//   than its background by more than `spread` (a background within it
+//   matches as the object: a ball 0.5 m before a wall was widened 17-50
+//   px to a flat patch of it; the patch's next tile, the object's again,
+//   carries the reach on to its bound, where it moves nothing. A patch
+//   two tiles wide still ends it there).
 // Costs: per tile a SAD search (dsp::cost::sad_search_cycles); per split
 //   its columns read at two disparities (charged as a SAD search of
 //   split_columns x band_height at 2 positions).

@@ -1622,6 +1622,20 @@ INSTANTIATE_TEST_SUITE_P(ReachKeptRound, BoxOnMotion,
                                                        46, 3.9, recede, 1.6, 4.4, 'y', aloe, 32}),
                          case_name);
 
+// A reach's end is taken only where the next tile is not the object's
+// either (dsp/stereo_reach.cpp, find_end); until then in DISABLED_Open.
+// Round 84's balls going away near the background plane, which matches
+// inside their disparity span: the reach ran over it to a flat patch and
+// widened both axes at once (158 px over teddy: 17 px left and 33 px up at
+// one pair, 20.1 px off; 85 px over venus, 7.3 px).
+INSTANTIATE_TEST_SUITE_P(ReachEndConfirmed, BoxOnMotion,
+                         ::testing::Values(motion_case{"heldout84_10_recede158px_3_2m_teddy", 158,
+                                                       3.2, recede, 3.8, 0.0, 'x', photo4, 40},
+                                           motion_case{
+                                               "heldout84_29_recede85px_3_8m_6_3rps_z_venus", 85,
+                                               3.8, recede, 4.9, 6.3, 'z', venus, 32}),
+                         case_name);
+
 // Held out, round 84: 40 cases drawn at random (seed 84, round 80's
 // envelope) before they were run, on the firmware with the reach kept
 // round (ReachKeptRound). Seven moved faster than 30 px a frame (left
@@ -1706,9 +1720,12 @@ INSTANTIATE_TEST_SUITE_P(
 // (the 44 px and 46 px ones pass: ReachKeptRound).
 // Round 84's seven held-out failures (HeldOutSweep84): four balls going
 // away (85-158 px) 7.3-26.4 px off near the background plane, their boxes
-// grown on both axes at once; a 44 px circle over aloe (9.36 px, depth
-// 1.93 %), a 34 px ball entering over venus (depth 1.48 %), and a 235 px
-// ball on the circle's other side that left TRACK for a pair.
+// grown on both axes at once (two pass: ReachEndConfirmed; the 157 px one
+// over tsukuba now fails on the depth alone, 1.01 %, and the 129 px one
+// over teddy on a side 0.8 px past its bound); a 44 px circle over aloe
+// (9.36 px, depth 1.93 %), a 34 px ball entering over venus (depth
+// 1.48 %), and a 235 px ball on the circle's other side that left TRACK
+// for a pair.
 // Found by a sweep of 144 slow passes and circles (50-140 px at 1-2 px a frame,
 // spinning 0.5-1 rev/s about z or x), 143 of which pass: a 50 px circle over
 // aloe, its depth 1.01 % off at one pair.
@@ -1754,14 +1771,10 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"circle50px_2pxpf_1rps_x_aloe", 50, 2.6, circle, 0.2, 1.0, 'x', aloe, 30},
         motion_case{"heldout84_02_circle44px_3_3m_1_4rps_x_aloe", 44, 3.3, circle, 2.5, 1.4, 'x',
                     aloe, 40},
-        motion_case{"heldout84_10_recede158px_3_2m_teddy", 158, 3.2, recede, 3.8, 0.0, 'x', photo4,
-                    40},
         motion_case{"heldout84_11_back235px_3_0m_8_4rps_x_kodim19", 235, 3.0, circle_back, 2.2, 8.4,
                     'x', photo3, 32},
         motion_case{"heldout84_21_enter34px_3_8m_4_2rps_x_venus", 34, 3.8, enter, 1.5, 4.2, 'x',
                     venus, 40},
-        motion_case{"heldout84_29_recede85px_3_8m_6_3rps_z_venus", 85, 3.8, recede, 4.9, 6.3, 'z',
-                    venus, 32},
         motion_case{"heldout84_32_recede157px_2_7m_2_2rps_z_tsukuba", 157, 2.7, recede, 2.2, 2.2,
                     'z', tsukuba, 40},
         motion_case{"heldout84_35_recede129px_3_0m_5_2rps_x_teddy", 129, 3.0, recede, 3.0, 5.2, 'x',

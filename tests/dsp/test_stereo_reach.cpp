@@ -31,7 +31,12 @@ bool on_object(int x, int y) {
     return x >= object_x0 && x < object_x1 && y >= object_y0 && y < object_y1;
 }
 
-enum class backdrop { textured, flat, faint, periodic, noisy };
+enum class backdrop { textured, flat, faint, periodic, noisy, flat_patch };
+
+// The flat_patch backdrop's flat columns (in the right image): 12 px, so
+// that exactly one tile of the reach's past the left side lies wholly on
+// them (tiles of 8 px every 4 px).
+constexpr int patch_x0 = 68, patch_x1 = 80;
 
 // The period of the periodic backdrop: the object's disparity less the
 // background's, so that right of the object, where the left camera sees
@@ -50,6 +55,8 @@ pair_images make_pair(backdrop kind, int noisy_rim = 0) {
     auto back = [&](int x, int y) {
         if (kind == backdrop::periodic)
             return layer_texture(0, ((x % period) + period) % period, y);
+        if (kind == backdrop::flat_patch)
+            return x >= patch_x0 && x < patch_x1 ? uint8_t{90} : layer_texture(0, x, y);
         return kind == backdrop::flat    ? uint8_t{90}
                : kind == backdrop::faint ? static_cast<uint8_t>(88 + layer_texture(0, x, y) % 6)
                                          : layer_texture(0, x, y);
@@ -106,10 +113,11 @@ TEST(StereoReach, ABoxShortAtBothSidesReachesTheObjectsSides) {
     EXPECT_NEAR(r.left, 24, 2);
     EXPECT_NEAR(r.right, 13, 2);
     // The tiles wholly on the object (5 left, 2 right), a part-object one
-    // either way, and the first not the object's a side, each over the depth
-    // range (81 disparities); both ends split.
-    EXPECT_GE(r.tiles, 9);
-    EXPECT_LE(r.tiles, 11);
+    // either way, and the first two not the object's a side (an end is
+    // taken where the next tile is not the object's either), each over the
+    // depth range (81 disparities); both ends split.
+    EXPECT_GE(r.tiles, 11);
+    EXPECT_LE(r.tiles, 13);
     EXPECT_EQ(r.positions, 81 * r.tiles);
     EXPECT_EQ(r.split_columns, 2 * 12);
 }
@@ -191,6 +199,20 @@ TEST(StereoReach, ABoxAskedAtTheBackgroundsDisparityIsNotWidenedToTheBound) {
     EXPECT_EQ(r.right, 0);
 }
 
+// Asked at 13 px, the background's 10 within the spread (3 px): it matches
+// as the object does, as the background 0.5 m behind a ball going away did.
+// A flat patch 12 px wide in it, 14-26 px left of the box, breaks the run
+// of its tiles for one tile; the next is the object's again, so the
+// patch is not the object's end and the reach runs on to its bound. Taken
+// for the end, the box was widened 12-20 px to the patch.
+TEST(StereoReach, AFlatPatchInABackgroundWithinTheSpanIsNotTheObjectsEnd) {
+    const pair_images p = make_pair(backdrop::flat_patch);
+    const dsp::stereo_reach r =
+        reach(p, dsp::box{object_x0 - 8, object_y0, 136, 80}, 30, background_disparity + 3);
+    EXPECT_EQ(r.left, 0);
+    EXPECT_EQ(r.right, 0);
+}
+
 TEST(StereoReach, AnObjectAtTheBackgroundsDisparityIsNotWidened) {
     const pair_images p = make_pair(backdrop::textured);
     const dsp::box narrow{object_x0 + 24, object_y0, 60, 80};
@@ -225,10 +247,10 @@ TEST(StereoReachEnds, ABoxShortAtTopAndBottomReachesTheObjectsEnds) {
     EXPECT_EQ(r.left, 0);
     EXPECT_EQ(r.right, 0);
     // 16 columns x 8 rows a tile: over the rows from 3 px inside (the
-    // spread) to the object's end, a part-object one and the first of
+    // spread) to the object's end, a part-object one and the first two of
     // background each way; over the depth range (81 disparities); both split.
-    EXPECT_GE(r.tiles, 6);
-    EXPECT_LE(r.tiles, 9);
+    EXPECT_GE(r.tiles, 8);
+    EXPECT_LE(r.tiles, 11);
     EXPECT_EQ(r.positions, 81 * r.tiles);
     EXPECT_EQ(r.split_columns, 2 * 12);
 }
