@@ -1694,6 +1694,67 @@ INSTANTIATE_TEST_SUITE_P(
                     tsukuba, 32}),
     case_name);
 
+// Held out, round 85: 40 cases drawn at random (seed 85, round 80's
+// envelope) before they were run, on the firmware whose reach's end is
+// confirmed by the next tile (ReachEndConfirmed). Eleven moved faster than
+// 30 px a frame (left out); of the other 29, these 26 passed and 3 failed
+// (DISABLED_Open).
+INSTANTIATE_TEST_SUITE_P(
+    HeldOutSweep85, BoxOnMotion,
+    ::testing::Values(motion_case{"heldout85_00_circle191px_3_2m_2_7rps_y_tsukuba", 191, 3.2,
+                                  circle, 0.8, 2.7, 'y', tsukuba, 40},
+                      motion_case{"heldout85_02_recede42px_2_0m_6_6rps_y_aloe", 42, 2.0, recede,
+                                  2.9, 6.6, 'y', aloe, 40},
+                      motion_case{"heldout85_03_circle177px_3_7m_2_0rps_x", 177, 3.7, circle, 0.9,
+                                  2.0, 'x', procedural, 32},
+                      motion_case{"heldout85_04_thrown140px_3_7m_aloe", 140, 3.7, thrown, 3.5, 0.0,
+                                  'x', aloe, 40},
+                      motion_case{"heldout85_05_enter238px_3_5m_kodim23", 238, 3.5, enter, 0.6, 0.0,
+                                  'x', photo2, 24},
+                      motion_case{"heldout85_06_enter121px_3_1m_tsukuba", 121, 3.1, enter, 1.1, 0.0,
+                                  'x', tsukuba, 40},
+                      motion_case{"heldout85_08_back92px_2_4m_1_2rps_y_kodim23", 92, 2.4,
+                                  circle_back, 1.1, 1.2, 'y', photo2, 24},
+                      motion_case{"heldout85_10_left207px_3_2m_5_8rps_z_teddy", 207, 3.2, pass_left,
+                                  1.0, 5.8, 'z', photo4, 24},
+                      motion_case{"heldout85_11_recede200px_2_9m_3_2rps_z_venus", 200, 2.9, recede,
+                                  1.9, 3.2, 'z', venus, 40},
+                      motion_case{"heldout85_13_back130px_2_4m_tsukuba", 130, 2.4, circle_back, 1.2,
+                                  0.0, 'x', tsukuba, 24},
+                      motion_case{"heldout85_14_circle166px_2_4m", 166, 2.4, circle, 1.8, 0.0, 'x',
+                                  procedural, 40},
+                      motion_case{"heldout85_16_back152px_3_0m_2_4rps_x_teddy", 152, 3.0,
+                                  circle_back, 3.7, 2.4, 'x', photo4, 24},
+                      motion_case{"heldout85_19_left234px_3_5m", 234, 3.5, pass_left, 1.9, 0.0, 'x',
+                                  procedural, 24},
+                      motion_case{"heldout85_21_approach178px_2_4m_2_9rps_x_cones", 178, 2.4,
+                                  approach, 0.6, 2.9, 'x', photo, 40},
+                      motion_case{"heldout85_24_enter230px_3_6m_venus", 230, 3.6, enter, 2.1, 0.0,
+                                  'x', venus, 32},
+                      motion_case{"heldout85_25_thrown81px_3_1m_7_5rps_z_tsukuba", 81, 3.1, thrown,
+                                  1.3, 7.5, 'z', tsukuba, 24},
+                      motion_case{"heldout85_27_left39px_3_7m_teddy", 39, 3.7, pass_left, 3.2, 0.0,
+                                  'x', photo4, 24},
+                      motion_case{"heldout85_28_left77px_3_4m_teddy", 77, 3.4, pass_left, 1.4, 0.0,
+                                  'x', photo4, 40},
+                      motion_case{"heldout85_29_back227px_4_0m_teddy", 227, 4.0, circle_back, 3.3,
+                                  0.0, 'x', photo4, 24},
+                      motion_case{"heldout85_30_approach180px_3_2m_tsukuba", 180, 3.2, approach,
+                                  1.0, 0.0, 'x', tsukuba, 32},
+                      motion_case{"heldout85_32_left62px_3_1m_tsukuba", 62, 3.1, pass_left, 4.3,
+                                  0.0, 'x', tsukuba, 24},
+                      motion_case{"heldout85_34_circle151px_2_1m_6_3rps_y_venus", 151, 2.1, circle,
+                                  2.7, 6.3, 'y', venus, 40},
+                      motion_case{"heldout85_36_approach68px_2_2m_kodim23", 68, 2.2, approach, 1.0,
+                                  0.0, 'x', photo2, 32},
+                      motion_case{"heldout85_37_recede76px_2_8m_6_5rps_y_cones", 76, 2.8, recede,
+                                  4.7, 6.5, 'y', photo, 32},
+                      motion_case{"heldout85_38_enter131px_2_8m_4_8rps_x_tsukuba", 131, 2.8, enter,
+                                  2.4, 4.8, 'x', tsukuba, 32},
+                      motion_case{"heldout85_39_circle71px_3_6m_4_6rps_z_tsukuba", 71, 3.6, circle,
+                                  1.4, 4.6, 'z', tsukuba, 40}),
+    case_name);
+
 // Open: small balls thrown fast 3.5-4 m away, found while looking for the
 // apex cases above. The box centre stays within its bounds, but at one pair
 // near the bounce the depth is off by more than 1 % (23.7 px of disparity
@@ -1726,6 +1787,11 @@ INSTANTIATE_TEST_SUITE_P(
 // (9.36 px, depth 1.93 %), a 34 px ball entering over venus (depth
 // 1.48 %), and a 235 px ball on the circle's other side that left TRACK
 // for a pair.
+// Round 85's three held-out failures (HeldOutSweep85): a 17 px pass over
+// tsukuba (depth 1.01 %) and a 38 px ball on the circle's other side over
+// kodim19 (1.29 %) on the depth alone; a 111 px ball going away from 4 m
+// over teddy, 2.88 / 3.31 px, with 4 pairs scored of the 5 a case needs
+// (from pair 10 it is not wholly before the background plane at 5 m).
 // Found by a sweep of 144 slow passes and circles (50-140 px at 1-2 px a frame,
 // spinning 0.5-1 rev/s about z or x), 143 of which pass: a 50 px circle over
 // aloe, its depth 1.01 % off at one pair.
@@ -1778,7 +1844,13 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"heldout84_32_recede157px_2_7m_2_2rps_z_tsukuba", 157, 2.7, recede, 2.2, 2.2,
                     'z', tsukuba, 40},
         motion_case{"heldout84_35_recede129px_3_0m_5_2rps_x_teddy", 129, 3.0, recede, 3.0, 5.2, 'x',
-                    photo4, 40}),
+                    photo4, 40},
+        motion_case{"heldout85_17_pass17px_3_9m_tsukuba", 17, 3.9, pass, 4.6, 0.0, 'x', tsukuba,
+                    24},
+        motion_case{"heldout85_18_back38px_3_4m_kodim19", 38, 3.4, circle_back, 1.7, 0.0, 'x',
+                    photo3, 24},
+        motion_case{"heldout85_23_recede111px_4_0m_teddy", 111, 4.0, recede, 1.9, 0.0, 'x', photo4,
+                    24}),
     case_name);
 
 }  // namespace

@@ -49,8 +49,9 @@ constexpr int period = object_disparity - background_disparity;
 // noisy: one grey level under each camera's own noise of 8 levels (a flat
 // wall as a sensor sees it: it matches about equally badly everywhere).
 // The object's first `noisy_rim` columns are such a wall too (a shaded rim
-// with no texture left).
-pair_images make_pair(backdrop kind, int noisy_rim = 0) {
+// with no texture left); its columns [flat_from, flat_to) one grey level (a
+// plain band on its surface).
+pair_images make_pair(backdrop kind, int noisy_rim = 0, int flat_from = 0, int flat_to = 0) {
     pair_images p{std::vector<uint8_t>(width * height), std::vector<uint8_t>(width * height)};
     auto back = [&](int x, int y) {
         if (kind == backdrop::periodic)
@@ -67,6 +68,7 @@ pair_images make_pair(backdrop kind, int noisy_rim = 0) {
     const bool noisy = kind == backdrop::noisy;
     // The object's pixel at its column x_object, seen by `camera` at x.
     auto object = [&](int camera, int x_object, int x, int y) {
+        if (x_object >= flat_from && x_object < flat_to) return uint8_t{120};
         return x_object < object_x0 + noisy_rim ? noise(camera, x, y)
                                                 : layer_texture(1, x_object, y);
     };
@@ -178,6 +180,18 @@ TEST(StereoReach, AtMostMaxReach) {
     EXPECT_EQ(r.right, 10);
 }
 
+// The object's sides 21 px past the box's, the bound 10: the last tile
+// read (20-27 px out from the probe's start, 3 px inside the side) is the
+// first not the object's. No tile past it is read (it would be past the
+// bound), so the end is taken there, not waited for, and the box is
+// widened by the bound.
+TEST(StereoReach, ASideMetAtTheLastTileReadIsTaken) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::stereo_reach r = reach(p, dsp::box{object_x0 + 21, object_y0, 120 - 42, 80}, 10);
+    EXPECT_EQ(r.left, 10);
+    EXPECT_EQ(r.right, 10);
+}
+
 // The object's sides farther out than the tiles read (40 px, the bound
 // 10): its end not met, the box is not widened.
 TEST(StereoReach, AnObjectWhoseSidesAreNotMetIsNotWidened) {
@@ -197,6 +211,18 @@ TEST(StereoReach, ABoxAskedAtTheBackgroundsDisparityIsNotWidenedToTheBound) {
         reach(p, dsp::box{object_x0 - 8, object_y0, 136, 80}, 30, background_disparity);
     EXPECT_EQ(r.left, 0);
     EXPECT_EQ(r.right, 0);
+}
+
+// A plain band 12 px wide on the object, 5-17 px left of a box 24 px short
+// of its side, asked at 43 px (its core 3 px nearer than its rim): the
+// band's one tile wholly on it matches as well at 36-39 px, outside the
+// span, and is not the object's; the next one is. The reach goes on past
+// the band to the object's side. Taken for the end, the side was moved out
+// by 5 px.
+TEST(StereoReach, APlainBandOnTheObjectIsNotItsEnd) {
+    const pair_images p = make_pair(backdrop::textured, 0, 107, 119);
+    const dsp::box narrow{object_x0 + 24, object_y0, 120 - 24 - 13, 80};
+    EXPECT_NEAR(reach(p, narrow, 60, 43).left, 24, 2);
 }
 
 // Asked at 13 px, the background's 10 within the spread (3 px): it matches
