@@ -271,10 +271,10 @@ struct controller::impl {
     box pull_box(const motion_extents& motion, box last, box found, bool hold_size) const;
     void stereo_sad(box object, bool outlined, frame_output& out);
     uint64_t match_surface(box object, bool outlined, frame_output& out);
-    // core: the box's core, whose SAD match `out` holds.
-    uint64_t read_short_of(box core, const frame_output& out, stereo_reach* short_sides,
+    // core_pixels: the pixels of the box's core, whose SAD match `out` holds.
+    uint64_t read_short_of(int core_pixels, const frame_output& out, stereo_reach* short_sides,
                            stereo_reach* short_ends);
-    uint64_t widen_to_stereo_reach(box core, const stereo_reach& short_sides,
+    uint64_t widen_to_stereo_reach(int core_pixels, const stereo_reach& short_sides,
                                    const stereo_reach& short_ends, frame_output& out);
     uint64_t reach_cycles(const stereo_reach& reach, bool rows) const;
     box moved_box(box b, const stereo_reach& sides, const stereo_reach& ends,

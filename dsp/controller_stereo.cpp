@@ -1,6 +1,7 @@
 // Stereo on the object box (the core's SAD match, its tiles, the edge
 // match), the disparity chosen, and the 3D point.
 #include "dsp/controller_impl.h"
+#include "dsp/object_core.h"
 #include "dsp/object_depth.h"
 #include "dsp/round_box.h"
 #include "dsp/stereo_reach.h"
@@ -8,33 +9,6 @@
 namespace dsp {
 
 using namespace controller_parts;
-
-namespace {
-
-// The part of an object box SAD stereo matches: the box less one seventh of
-// its width and height on each side (same centre). A round object fills only
-// pi/4 of its bounding box; the corners are background at another depth and
-// pulled the disparity towards it (measured +1.5 % to +2 % depth at 2.2 m,
-// background at 5 m). A core of side c is inside a disc of diameter w when
-// c <= w / sqrt(2): at a seventh c = 0.714 w, its corners on the rim (0.02 %
-// of it background; at an eighth 0.67 %, and a 62 px ball spinning about x
-// was 1.17 % far in one pair, 0.60 % at a seventh), its mean surface 0.13 r
-// nearer than the whole visible surface's (0.11 r at an eighth; at a sixth
-// 0.16 r, which took four 90 px balls past 1 % near).
-// Below 16 px a seventh rounds down to 1 px, which leaves the corners of a
-// small disc's core on the background: 2 px. The 10 px ball's depth error
-// was 1.02 % in one pair with 1 px, 0.37 % with 2 px.
-int core_trim(int side) {
-    return side < 16 ? 2 : side / 7;
-}
-
-box object_core(box object) {
-    const int trim_x = core_trim(object.width), trim_y = core_trim(object.height);
-    return box{object.x + trim_x, object.y + trim_y, object.width - 2 * trim_x,
-               object.height - 2 * trim_y};
-}
-
-}  // namespace
 
 // Stage stereo_sad: the object's core (the right pattern) along the same rows
 // (+-row_slack) of the left image over the depth range; a large
@@ -45,8 +19,13 @@ box object_core(box object) {
 // reaches past a side, else moved in (dsp/stereo_reach.h).
 void controller::impl::stereo_sad(box object, bool outlined, frame_output& out) {
     stage_scope scope(*hardware, stage::stereo_sad, out);
-    const box core = object_core(object);
-    out.sad_match = stereo_match_sad(history(0), left(), core, config.stereo);
+    row_span spans[max_round_core_rows];
+    const object_core_pattern pattern = object_core(object, config.surface, spans);
+    const box core = pattern.core;
+    const int core_pixels = pattern.pixels;
+    out.sad_match = pattern.round
+                        ? stereo_match_sad_masked(history(0), left(), core, spans, config.stereo)
+                        : stereo_match_sad(history(0), left(), core, config.stereo);
     out.sad_at_range_end = at_range_end(out.sad_match, core, config.stereo.min_disparity,
                                         config.stereo.max_disparity, width);
     scope.charge(
@@ -61,12 +40,12 @@ void controller::impl::stereo_sad(box object, bool outlined, frame_output& out) 
     stereo_reach short_sides, short_ends;
     box surface = object;
     if (outlined) {
-        scope.charge(read_short_of(core, out, &short_sides, &short_ends));
+        scope.charge(read_short_of(core_pixels, out, &short_sides, &short_ends));
         surface = moved_box(object, stereo_reach{}, stereo_reach{}, short_sides, short_ends);
     }
     if (object_is_tiled(surface, config.surface))
         scope.charge(match_surface(surface, outlined, out));
-    if (outlined) scope.charge(widen_to_stereo_reach(core, short_sides, short_ends, out));
+    if (outlined) scope.charge(widen_to_stereo_reach(core_pixels, short_sides, short_ends, out));
 }
 
 // The tiled disparity of a large object (dsp/object_depth.h), its cycles.
@@ -91,13 +70,14 @@ uint64_t controller::impl::match_surface(box object, bool outlined, frame_output
 
 namespace {
 
-// The object's match as the stereo reach reads it (dsp/stereo_reach.h).
-object_match match_of(const stereo_result& sad, box core, box b, const camera_rig& rig) {
+// The object's match as the stereo reach reads it (dsp/stereo_reach.h),
+// from its core's `pixels`.
+object_match match_of(const stereo_result& sad, int pixels, box b, const camera_rig& rig) {
     object_match match;
     match.disparity = (sad.disparity_q8 + 128) >> 8;
     match.spread = surface_spread_px(sad.disparity_q8, max_int(b.width, b.height), rig);
-    match.sad_per_pixel_q8 = static_cast<uint32_t>(
-        (uint64_t{sad.sad} << 8) / static_cast<uint64_t>(max_int(1, core.width * core.height)));
+    match.sad_per_pixel_q8 =
+        static_cast<uint32_t>((uint64_t{sad.sad} << 8) / static_cast<uint64_t>(max_int(1, pixels)));
     return match;
 }
 
@@ -136,11 +116,11 @@ box controller::impl::moved_box(box b, const stereo_reach& sides, const stereo_r
 
 // How far the object stops short of the box's sides and ends, at most a
 // quarter of its size a side, read at the core's disparity; its cycles.
-uint64_t controller::impl::read_short_of(box core, const frame_output& out,
+uint64_t controller::impl::read_short_of(int core_pixels, const frame_output& out,
                                          stereo_reach* short_sides, stereo_reach* short_ends) {
     const box b = out.box_right;
     const stereo_reach_params params;
-    const object_match match = match_of(out.sad_match, core, b, config.rig);
+    const object_match match = match_of(out.sad_match, core_pixels, b, config.rig);
     *short_sides = short_of_sides(history(0), left(), b, match, b.width / 4, config.stereo, params);
     *short_ends = short_of_ends(history(0), left(), b, match, b.height / 4, config.stereo, params);
     return reach_cycles(*short_sides, false) + reach_cycles(*short_ends, true);
@@ -162,12 +142,12 @@ uint64_t controller::impl::read_short_of(box core, const frame_output& out,
 // makes the box oblong too, and is no sign of a wrong reach (a 140 px ball
 // going away, its tracker's box held 29 px too large, trimmed 9 px too far
 // on y). Away from the image's border only: a cut object is not round.
-uint64_t controller::impl::widen_to_stereo_reach(box core, const stereo_reach& short_sides,
+uint64_t controller::impl::widen_to_stereo_reach(int core_pixels, const stereo_reach& short_sides,
                                                  const stereo_reach& short_ends,
                                                  frame_output& out) {
     const box b = out.box_right;
     const stereo_reach_params params;
-    const object_match match = match_of(out.sad_match, core, b, config.rig);
+    const object_match match = match_of(out.sad_match, core_pixels, b, config.rig);
     stereo_reach r =
         reach_past_sides(history(0), left(), b, match, b.width / 2, config.stereo, params);
     stereo_reach v =

@@ -39,23 +39,6 @@ uint64_t sad_gate(const uint32_t* sads, int n, int area, const object_depth_para
            static_cast<uint64_t>(params.gate_floor_per_pixel) * static_cast<uint64_t>(area);
 }
 
-// The columns [begin, end) of row y (absolute) whose pixel centres lie in
-// the ellipse inscribed in `object`: (2x + 1 - cx)^2 h^2 + (2y + 1 - cy)^2 w^2
-// <= w^2 h^2 with cx = 2 object.x + w, cy = 2 object.y + h (doubled units).
-row_span ellipse_row(box object, int y) {
-    const int64_t w = object.width, h = object.height;
-    const int64_t dy = 2 * int64_t{y} + 1 - (2 * int64_t{object.y} + h);
-    if (dy * dy > h * h) return {};
-    const int64_t half = isqrt64((h * h - dy * dy) * w * w) / h;  // doubled units
-    const int64_t cx = 2 * int64_t{object.x} + w;
-    // 2x + 1 in [cx - half, cx + half]; cx - half >= 2 object.x >= 0.
-    row_span span;
-    span.begin = static_cast<int>((cx - half) / 2);  // ceil((cx - half - 1) / 2)
-    span.end = static_cast<int>((cx + half - 1) / 2 + 1);
-    if (span.end < span.begin) span.end = span.begin;
-    return span;
-}
-
 // `tile`'s part of the object rows (absolute columns, one per tile row) as
 // spans relative to the tile; returns its pixels.
 int clip_to_tile(const row_span* object_rows, box tile, row_span* spans) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "dsp/int_bounds.h"
+
 namespace dsp {
 
 namespace {
@@ -138,6 +140,23 @@ stereo_result match(gray_cplane right, gray_cplane left, box pattern, const row_
 stereo_result stereo_match_sad(gray_cplane right, gray_cplane left, box pattern,
                                const stereo_params& params) {
     return match(right, left, pattern, nullptr, params);
+}
+
+// The columns [begin, end) of row y (absolute) whose pixel centres lie in
+// the ellipse inscribed in `object`: (2x + 1 - cx)^2 h^2 + (2y + 1 - cy)^2 w^2
+// <= w^2 h^2 with cx = 2 object.x + w, cy = 2 object.y + h (doubled units).
+row_span ellipse_row(box object, int y) {
+    const int64_t w = object.width, h = object.height;
+    const int64_t dy = 2 * int64_t{y} + 1 - (2 * int64_t{object.y} + h);
+    if (dy * dy > h * h) return {};
+    const int64_t half = isqrt64((h * h - dy * dy) * w * w) / h;  // doubled units
+    const int64_t cx = 2 * int64_t{object.x} + w;
+    // 2x + 1 in [cx - half, cx + half]; cx - half >= 2 object.x >= 0.
+    row_span span;
+    span.begin = static_cast<int>((cx - half) / 2);  // ceil((cx - half - 1) / 2)
+    span.end = static_cast<int>((cx + half - 1) / 2 + 1);
+    if (span.end < span.begin) span.end = span.begin;
+    return span;
 }
 
 stereo_result stereo_match_sad_masked(gray_cplane right, gray_cplane left, box pattern,

@@ -68,6 +68,10 @@ struct row_span {
     int end = 0;
 };
 
+// The columns [begin, end) of row y (absolute) whose pixel centres lie in
+// the ellipse inscribed in `object`; begin == end: none.
+row_span ellipse_row(box object, int y);
+
 // As stereo_match_sad, with the SAD summed over each row's span only
 // (`spans` holds pattern.height rows): a pattern that is part object, part
 // background matches on the object's pixels alone. Positions and ties as

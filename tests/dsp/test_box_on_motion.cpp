@@ -1636,6 +1636,26 @@ INSTANTIATE_TEST_SUITE_P(ReachEndConfirmed, BoxOnMotion,
                                                3.8, recede, 4.9, 6.3, 'z', venus, 32}),
                          case_name);
 
+// The depth of an object of 24-59 px read on a round core, the ellipse
+// inscribed in its box less a tenth a side (dsp/object_core.h); until then
+// in DISABLED_Open, failing on the depth alone (38-55 px balls at
+// 1.01-1.45 % at one pair, their boxes 2-3 px too wide or off, the square
+// core's corners on the background).
+INSTANTIATE_TEST_SUITE_P(RoundCore, BoxOnMotion,
+                         ::testing::Values(motion_case{"circle50px_2pxpf_1rps_x_aloe", 50, 2.6,
+                                                       circle, 0.2, 1.0, 'x', aloe, 30},
+                                           motion_case{"heldout80_02_circle55px_3_9m_kodim23", 55,
+                                                       3.9, circle, 2.9, 0.0, 'z', photo2, 24},
+                                           motion_case{"heldout80_07_circle43px_3_3m_tsukuba", 43,
+                                                       3.3, circle, 0.4, 0.0, 'y', tsukuba, 32},
+                                           motion_case{"heldout80_20_thrown43px_3_5m_3_6rps_y_aloe",
+                                                       43, 3.5, thrown, 0.3, 3.6, 'y', aloe, 40},
+                                           motion_case{"heldout85_18_back38px_3_4m_kodim19", 38,
+                                                       3.4, circle_back, 1.7, 0.0, 'x', photo3, 24},
+                                           motion_case{"throw40px_2_0_4rps_x_teddy_3_5m", 40, 3.5,
+                                                       thrown, 2.0, 4.0, 'x', photo4, 24}),
+                         case_name);
+
 // Held out, round 84: 40 cases drawn at random (seed 84, round 80's
 // envelope) before they were run, on the firmware with the reach kept
 // round (ReachKeptRound). Seven moved faster than 30 px a frame (left
@@ -1760,7 +1780,7 @@ INSTANTIATE_TEST_SUITE_P(
 // near the bounce the depth is off by more than 1 % (23.7 px of disparity
 // at 4 m: 1 % is 0.24 px). 30 px at 28 px a frame: 1.22 / 3.87 px, depth
 // 1.37 % (pair 16), and one box side 1 px past its bound; 40 px at 3.5 m,
-// 30 px a frame: 0.72 / 1.92 px, depth 1.45 % (pair 17).
+// 30 px a frame: 0.72 / 1.92 px, depth 1.45 % (pair 17; passes: RoundCore).
 // Round 78's nine held-out failures (HeldOutSweep78): seven of its ten
 // balls under 30 px wide fail (the 16 px and 17 px circles over kodim23
 // with the depth 26 % and 70 % off), the 185 px ball going away over aloe
@@ -1774,7 +1794,8 @@ INSTANTIATE_TEST_SUITE_P(
 // DriftAcrossCircleBack: a 35 px circle over cones (6.06 px off at one pair).
 // Round 80's nine held-out failures (HeldOutSweep80): four on the depth
 // alone, 1.07-1.20 % too far at one or two pairs (43-55 px balls over
-// kodim23, tsukuba, aloe; a 29 px ball coming nearer); a 112 px ball on the
+// kodim23, tsukuba, aloe, which pass: RoundCore; a 29 px ball coming
+// nearer); a 112 px ball on the
 // circle's other side over venus 8.2 px off at one pair, a 210 px circle
 // 6.23 px; a 174 px ball going away 24.5 px off before it reaches the
 // background plane, its tracker's box held at 153 x 151 px while it shrank
@@ -1789,18 +1810,17 @@ INSTANTIATE_TEST_SUITE_P(
 // for a pair.
 // Round 85's three held-out failures (HeldOutSweep85): a 17 px pass over
 // tsukuba (depth 1.01 %) and a 38 px ball on the circle's other side over
-// kodim19 (1.29 %) on the depth alone; a 111 px ball going away from 4 m
+// kodim19 (1.29 %; passes: RoundCore) on the depth alone; a 111 px ball going away from 4 m
 // over teddy, 2.88 / 3.31 px, with 4 pairs scored of the 5 a case needs
 // (from pair 10 it is not wholly before the background plane at 5 m).
 // Found by a sweep of 144 slow passes and circles (50-140 px at 1-2 px a frame,
 // spinning 0.5-1 rev/s about z or x), 143 of which pass: a 50 px circle over
-// aloe, its depth 1.01 % off at one pair.
+// aloe, its depth 1.01 % off at one pair (passes: RoundCore).
 // Not run by default (DISABLED_): the firmware does not meet them yet.
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
     ::testing::Values(
         motion_case{"throw30px_2_2_4rps_x_teddy_4m", 30, 4.0, thrown, 2.2, 4.0, 'x', photo4, 24},
-        motion_case{"throw40px_2_0_4rps_x_teddy_3_5m", 40, 3.5, thrown, 2.0, 4.0, 'x', photo4, 24},
         motion_case{"heldout78_00_circle16px_3_8m_3_3rps_x_kodim23", 16, 3.8, circle, 2.6, 3.3, 'x',
                     photo2, 40},
         motion_case{"heldout78_03_left22px_2_9m_6_8rps_z_kodim23", 22, 2.9, pass_left, 0.9, 6.8,
@@ -1822,19 +1842,12 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"circle35px_3pxpf_2rps_x_cones_32f", 35, 2.6, circle, 0.4, 2.0, 'x', photo, 32},
         motion_case{"heldout80_00_back112px_3_1m_4_3rps_z_venus", 112, 3.1, circle_back, 3.6, 4.3,
                     'z', venus, 32},
-        motion_case{"heldout80_02_circle55px_3_9m_kodim23", 55, 3.9, circle, 2.9, 0.0, 'z', photo2,
-                    24},
-        motion_case{"heldout80_07_circle43px_3_3m_tsukuba", 43, 3.3, circle, 0.4, 0.0, 'y', tsukuba,
-                    32},
         motion_case{"heldout80_17_recede174px_2_8m_5_3rps_z", 174, 2.8, recede, 0.6, 5.3, 'z',
                     procedural, 40},
-        motion_case{"heldout80_20_thrown43px_3_5m_3_6rps_y_aloe", 43, 3.5, thrown, 0.3, 3.6, 'y',
-                    aloe, 40},
         motion_case{"heldout80_25_circle210px_3_2m_6_1rps_x_kodim23", 210, 3.2, circle, 3.6, 6.1,
                     'x', photo2, 40},
         motion_case{"heldout80_38_approach29px_3_1m_kodim23", 29, 3.1, approach, 0.8, 0.0, 'x',
                     photo2, 40},
-        motion_case{"circle50px_2pxpf_1rps_x_aloe", 50, 2.6, circle, 0.2, 1.0, 'x', aloe, 30},
         motion_case{"heldout84_02_circle44px_3_3m_1_4rps_x_aloe", 44, 3.3, circle, 2.5, 1.4, 'x',
                     aloe, 40},
         motion_case{"heldout84_11_back235px_3_0m_8_4rps_x_kodim19", 235, 3.0, circle_back, 2.2, 8.4,
@@ -1847,8 +1860,6 @@ INSTANTIATE_TEST_SUITE_P(
                     photo4, 40},
         motion_case{"heldout85_17_pass17px_3_9m_tsukuba", 17, 3.9, pass, 4.6, 0.0, 'x', tsukuba,
                     24},
-        motion_case{"heldout85_18_back38px_3_4m_kodim19", 38, 3.4, circle_back, 1.7, 0.0, 'x',
-                    photo3, 24},
         motion_case{"heldout85_23_recede111px_4_0m_teddy", 111, 4.0, recede, 1.9, 0.0, 'x', photo4,
                     24}),
     case_name);
