@@ -68,6 +68,34 @@ scene::scenario turntable_return_scenario() {
                              255, 0.08);
 }
 
+namespace {
+
+// The first ball on `first`, the second still at 2.4 m on the left until
+// second_object_start_frame(), then to the right at 0.25 m/s.
+scene::scenario first_then_new_object_scenario(const scene::trajectory& first) {
+    const double period = scene::scenario{}.frame_period_s;
+    scene::scenario s = one_ball_scenario(first, second_object_start_frame() + 40, 0.06);
+    scene::ball_desc second = s.scene.balls.front();
+    second.path = scene::trajectory::line({-0.5, 0.0, 2.4}, {0.25, 0.0, 0.0},
+                                          second_object_start_frame() * period);
+    s.scene.balls.push_back(second);
+    return s;
+}
+
+}  // namespace
+
+scene::scenario exit_then_new_object_scenario() {
+    const double period = scene::scenario{}.frame_period_s;
+    return first_then_new_object_scenario(scene::trajectory::line(
+        {0.3, 0.05, 4.5}, {1.2, 0.0, 0.0}, scene::motion_start_s(3, period)));
+}
+
+scene::scenario vanish_then_new_object_scenario() {
+    const double period = scene::scenario{}.frame_period_s;
+    return first_then_new_object_scenario(scene::trajectory::line(
+        {0.3, 0.05, 3.2}, {0.05, 0.0, 1.5}, scene::motion_start_s(3, period)));
+}
+
 exit_return_frames exit_return_timing(const scene::sequence& sequence, int frames) {
     exit_return_frames f;
     for (int n = 0; n < frames; ++n) {

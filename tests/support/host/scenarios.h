@@ -44,6 +44,20 @@ scene::scenario exit_return_scenario(int still_frames = 4);
 // keyed (dsp/key_frame.h). exit_return_timing() applies to it too.
 scene::scenario turntable_return_scenario();
 
+// One ball's track ends and another object is tracked at another depth: a
+// ball 12 cm wide crosses to the right at 4.5 m, 1.2 m/s (5 px a frame),
+// and leaves the right edge by frame 56; a second one, still at 2.4 m on
+// the left since frame 0, starts to the right at 0.25 m/s (2 px a frame:
+// keyed, dsp/key_frame.h) at frame second_object_start_frame().
+scene::scenario exit_then_new_object_scenario();
+// The same second ball; the first goes away from 3.2 m at 1.5 m/s, near
+// the middle of the view, until it is behind the background plane (5 m)
+// from frame 55: it leaves no border behind.
+scene::scenario vanish_then_new_object_scenario();
+constexpr int second_object_start_frame() {
+    return 90;
+}
+
 // Frame indices of exit_return_scenario(still_frames), from the scene's
 // closed-form ellipse: the last frame fully inside the image before the
 // exit, the first frame with no pixel in the image, the last such frame,
