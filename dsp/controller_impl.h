@@ -44,6 +44,10 @@ inline bool same_box(box a, box b) {
     return a.x == b.x && a.y == b.y && a.width == b.width && a.height == b.height;
 }
 
+inline bool same_size(box a, box b) {
+    return a.width == b.width && a.height == b.height;
+}
+
 inline box from_spans(span x, span y) {
     return box{x.start, y.start, x.size, y.size};
 }

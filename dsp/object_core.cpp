@@ -5,7 +5,7 @@ namespace dsp {
 namespace {
 
 int square_trim(int side) {
-    return side < 16 ? 2 : side / 7;
+    return side < 16 ? 2 : side < round_core_min_side ? side / 5 : side / 7;
 }
 
 bool core_is_round(box object, const object_depth_params& surface) {

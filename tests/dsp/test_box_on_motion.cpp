@@ -1656,6 +1656,24 @@ INSTANTIATE_TEST_SUITE_P(RoundCore, BoxOnMotion,
                                                        thrown, 2.0, 4.0, 'x', photo4, 24}),
                          case_name);
 
+// Small balls, 17-22 px, failing on the depth alone in DISABLED_Open
+// (1.01-1.29 % far at one or two pairs, their boxes 1-2 px off or too
+// large, a seventh's corners on the background) until a core of 16-23 px
+// was trimmed by a fifth (dsp/object_core.h): 0.54, 0.68 and 0.88 %.
+// With the fifth alone round 78's 17 px ball coming nearer over teddy
+// (HeldOutSweep78) failed, its box 5 px narrow at one pair, until a box
+// carried with no difference stands for the depth it was sized at
+// (dsp/controller_track.cpp, track_object).
+INSTANTIATE_TEST_SUITE_P(
+    SmallCoreFifth, BoxOnMotion,
+    ::testing::Values(motion_case{"heldout78_03_left22px_2_9m_6_8rps_z_kodim23", 22, 2.9, pass_left,
+                                  0.9, 6.8, 'z', photo2, 40},
+                      motion_case{"heldout78_32_circle21px_3_5m_cones", 21, 3.5, circle, 1.3, 0.0,
+                                  'x', photo, 32},
+                      motion_case{"heldout85_17_pass17px_3_9m_tsukuba", 17, 3.9, pass, 4.6, 0.0,
+                                  'x', tsukuba, 24}),
+    case_name);
+
 // Held out, round 84: 40 cases drawn at random (seed 84, round 80's
 // envelope) before they were run, on the firmware with the reach kept
 // round (ReachKeptRound). Seven moved faster than 30 px a frame (left
@@ -1783,7 +1801,8 @@ INSTANTIATE_TEST_SUITE_P(
 // 30 px a frame: 0.72 / 1.92 px, depth 1.45 % (pair 17; passes: RoundCore).
 // Round 78's nine held-out failures (HeldOutSweep78): seven of its ten
 // balls under 30 px wide fail (the 16 px and 17 px circles over kodim23
-// with the depth 26 % and 70 % off), the 185 px ball going away over aloe
+// with the depth 26 % and 70 % off; the 17 px one 5.3 % since a fifth's
+// core, and the 21-22 px ones pass: SmallCoreFifth), the 185 px ball going away over aloe
 // loses its track (the 160 px one over kodim23 passes: ReachKeptRound).
 // Balls 120-140 px going away over teddy at 6-8 px a frame, most spinning,
 // tried beside round 23's 120 px ball (which passes): 10 of 24 failed at 24
@@ -1809,7 +1828,7 @@ INSTANTIATE_TEST_SUITE_P(
 // 1.48 %), and a 235 px ball on the circle's other side that left TRACK
 // for a pair.
 // Round 85's three held-out failures (HeldOutSweep85): a 17 px pass over
-// tsukuba (depth 1.01 %) and a 38 px ball on the circle's other side over
+// tsukuba (depth 1.01 %; passes: SmallCoreFifth) and a 38 px ball on the circle's other side over
 // kodim19 (1.29 %; passes: RoundCore) on the depth alone; a 111 px ball going away from 4 m
 // over teddy, 2.88 / 3.31 px, with 4 pairs scored of the 5 a case needs
 // (from pair 10 it is not wholly before the background plane at 5 m).
@@ -1823,8 +1842,6 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"throw30px_2_2_4rps_x_teddy_4m", 30, 4.0, thrown, 2.2, 4.0, 'x', photo4, 24},
         motion_case{"heldout78_00_circle16px_3_8m_3_3rps_x_kodim23", 16, 3.8, circle, 2.6, 3.3, 'x',
                     photo2, 40},
-        motion_case{"heldout78_03_left22px_2_9m_6_8rps_z_kodim23", 22, 2.9, pass_left, 0.9, 6.8,
-                    'z', photo2, 40},
         motion_case{"heldout78_04_recede185px_3_9m_aloe", 185, 3.9, recede, 0.6, 0.0, 'x', aloe,
                     40},
         motion_case{"heldout78_06_back17px_3_1m_kodim23", 17, 3.1, circle_back, 2.9, 0.0, 'y',
@@ -1835,8 +1852,6 @@ INSTANTIATE_TEST_SUITE_P(
                     venus, 24},
         motion_case{"heldout78_16_circle29px_2_5m_8_7rps_x_kodim23", 29, 2.5, circle, 1.7, 8.7, 'x',
                     photo2, 32},
-        motion_case{"heldout78_32_circle21px_3_5m_cones", 21, 3.5, circle, 1.3, 0.0, 'x', photo,
-                    32},
         motion_case{"recede120px_6pxpf_2rps_x_teddy_30f", 120, 2.6, recede, 0.8, 2.0, 'x', photo4,
                     30},
         motion_case{"circle35px_3pxpf_2rps_x_cones_32f", 35, 2.6, circle, 0.4, 2.0, 'x', photo, 32},
@@ -1858,8 +1873,6 @@ INSTANTIATE_TEST_SUITE_P(
                     'z', tsukuba, 40},
         motion_case{"heldout84_35_recede129px_3_0m_5_2rps_x_teddy", 129, 3.0, recede, 3.0, 5.2, 'x',
                     photo4, 40},
-        motion_case{"heldout85_17_pass17px_3_9m_tsukuba", 17, 3.9, pass, 4.6, 0.0, 'x', tsukuba,
-                    24},
         motion_case{"heldout85_23_recede111px_4_0m_teddy", 111, 4.0, recede, 1.9, 0.0, 'x', photo4,
                     24}),
     case_name);

@@ -40,12 +40,16 @@ TEST(EllipseRow, HoldsThePixelsWhoseCentresLieInTheInscribedEllipse) {
 TEST(ObjectCore, SquareUnderAndOverTheRoundSizes) {
     const dsp::object_depth_params surface;  // tiled from 80 px
     dsp::row_span spans[dsp::max_round_core_rows];
-    const dsp::object_core_pattern small = dsp::object_core(box{10, 10, 23, 30}, surface, spans);
+    const dsp::object_core_pattern small = dsp::object_core(box{10, 10, 23, 35}, surface, spans);
     EXPECT_FALSE(small.round);
-    EXPECT_EQ(small.core.width, 23 - 2 * 3);
+    EXPECT_EQ(small.core.width, 23 - 2 * 4);   // a fifth a side from 16 to 23 px
+    EXPECT_EQ(small.core.height, 35 - 2 * 5);  // a seventh from 24 px
     EXPECT_EQ(small.pixels, small.core.width * small.core.height);
-    const dsp::object_core_pattern tiny = dsp::object_core(box{10, 10, 12, 12}, surface, spans);
-    EXPECT_EQ(tiny.core.width, 8);  // 2 px a side under 16 px
+    const dsp::object_core_pattern sixteen = dsp::object_core(box{10, 10, 16, 16}, surface, spans);
+    EXPECT_EQ(sixteen.core.width, 16 - 2 * 3);
+    const dsp::object_core_pattern tiny = dsp::object_core(box{10, 10, 15, 12}, surface, spans);
+    EXPECT_EQ(tiny.core.width, 11);  // 2 px a side under 16 px
+    EXPECT_EQ(tiny.core.height, 8);
     const dsp::object_core_pattern large = dsp::object_core(box{10, 10, 90, 70}, surface, spans);
     EXPECT_FALSE(large.round);
     EXPECT_EQ(large.core.width, 90 - 2 * 12);
