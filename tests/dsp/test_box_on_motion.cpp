@@ -1793,6 +1793,64 @@ INSTANTIATE_TEST_SUITE_P(
                                   1.4, 4.6, 'z', tsukuba, 40}),
     case_name);
 
+// Held out, round 86: 40 cases drawn at random (seed 86, round 80's
+// envelope) before they were run, on the firmware with a small core a
+// fifth (SmallCoreFifth). Eleven moved faster than 30 px a frame (left
+// out); of the other 29, these 26 passed and 3 failed (DISABLED_Open).
+INSTANTIATE_TEST_SUITE_P(
+    HeldOutSweep86, BoxOnMotion,
+    ::testing::Values(
+        motion_case{"heldout86_00_pass154px_3_7m_cones", 154, 3.7, pass, 1.8, 0.0, 'x', photo, 40},
+        motion_case{"heldout86_01_back222px_3_4m_5_5rps_y_aloe", 222, 3.4, circle_back, 2.1, 5.5,
+                    'y', aloe, 24},
+        motion_case{"heldout86_03_left87px_4_0m_4_3rps_y_venus", 87, 4.0, pass_left, 1.0, 4.3, 'y',
+                    venus, 40},
+        motion_case{"heldout86_04_circle64px_3_4m_3_9rps_z_tsukuba", 64, 3.4, circle, 0.5, 3.9, 'z',
+                    tsukuba, 32},
+        motion_case{"heldout86_05_recede168px_2_8m_aloe", 168, 2.8, recede, 3.1, 0.0, 'x', aloe,
+                    40},
+        motion_case{"heldout86_06_approach119px_2_1m_kodim23", 119, 2.1, approach, 0.8, 0.0, 'x',
+                    photo2, 24},
+        motion_case{"heldout86_07_recede136px_3_6m_8_3rps_z", 136, 3.6, recede, 4.6, 8.3, 'z',
+                    procedural, 40},
+        motion_case{"heldout86_08_pass208px_3_6m", 208, 3.6, pass, 1.9, 0.0, 'x', procedural, 40},
+        motion_case{"heldout86_11_pass77px_2_5m_6_2rps_z_venus", 77, 2.5, pass, 4.0, 6.2, 'z',
+                    venus, 32},
+        motion_case{"heldout86_12_enter237px_2_9m_cones", 237, 2.9, enter, 4.5, 0.0, 'x', photo,
+                    32},
+        motion_case{"heldout86_13_pass221px_2_6m_4_7rps_y_kodim19", 221, 2.6, pass, 0.5, 4.7, 'y',
+                    photo3, 40},
+        motion_case{"heldout86_14_back187px_3_5m_3_6rps_x_kodim19", 187, 3.5, circle_back, 2.6, 3.6,
+                    'x', photo3, 24},
+        motion_case{"heldout86_15_enter206px_2_3m", 206, 2.3, enter, 4.0, 0.0, 'x', procedural, 24},
+        motion_case{"heldout86_16_left32px_2_9m_5_7rps_y_kodim23", 32, 2.9, pass_left, 5.0, 5.7,
+                    'y', photo2, 32},
+        motion_case{"heldout86_17_thrown55px_2_7m_cones", 55, 2.7, thrown, 0.8, 0.0, 'x', photo,
+                    24},
+        motion_case{"heldout86_19_enter153px_3_4m_kodim23", 153, 3.4, enter, 2.8, 0.0, 'x', photo2,
+                    40},
+        motion_case{"heldout86_20_left222px_4_0m_7_3rps_y_aloe", 222, 4.0, pass_left, 1.5, 7.3, 'y',
+                    aloe, 24},
+        motion_case{"heldout86_21_approach113px_2_8m_9_6rps_x_tsukuba", 113, 2.8, approach, 1.9,
+                    9.6, 'x', tsukuba, 24},
+        motion_case{"heldout86_22_enter141px_2_8m_1_7rps_y_cones", 141, 2.8, enter, 3.6, 1.7, 'y',
+                    photo, 32},
+        motion_case{"heldout86_26_thrown145px_3_8m", 145, 3.8, thrown, 0.9, 0.0, 'x', procedural,
+                    32},
+        motion_case{"heldout86_27_recede230px_2_5m_tsukuba", 230, 2.5, recede, 1.1, 0.0, 'x',
+                    tsukuba, 40},
+        motion_case{"heldout86_28_enter222px_3_7m_1_9rps_x", 222, 3.7, enter, 0.7, 1.9, 'x',
+                    procedural, 32},
+        motion_case{"heldout86_34_enter122px_3_7m_kodim23", 122, 3.7, enter, 0.5, 0.0, 'x', photo2,
+                    40},
+        motion_case{"heldout86_36_pass116px_2_1m_1_2rps_y_tsukuba", 116, 2.1, pass, 1.0, 1.2, 'y',
+                    tsukuba, 40},
+        motion_case{"heldout86_38_circle70px_2_0m_6_3rps_x_kodim23", 70, 2.0, circle, 3.1, 6.3, 'x',
+                    photo2, 32},
+        motion_case{"heldout86_39_recede31px_3_8m_9_3rps_x", 31, 3.8, recede, 3.5, 9.3, 'x',
+                    procedural, 40}),
+    case_name);
+
 // Open: small balls thrown fast 3.5-4 m away, found while looking for the
 // apex cases above. The box centre stays within its bounds, but at one pair
 // near the bounce the depth is off by more than 1 % (23.7 px of disparity
@@ -1836,6 +1894,14 @@ INSTANTIATE_TEST_SUITE_P(
 // spinning 0.5-1 rev/s about z or x), 143 of which pass: a 50 px circle over
 // aloe, its depth 1.01 % off at one pair (passes: RoundCore).
 // Not run by default (DISABLED_): the firmware does not meet them yet.
+// Round 86's three held-out failures (HeldOutSweep86): a 209 px ball on
+// the circle's other side over venus at 30 px a frame, spinning 9.2 rev/s,
+// depth 1.17 % near at one pair (its box 25-35 px short of its height for
+// three pairs); a 227 px ball going away over teddy, its box 9-12 px too
+// large from pair 20 and its depth 1.27-1.67 % far at its last four pairs
+// (near the background plane); a 229 px ball on the circle's other side
+// over tsukuba lost TRACK at pair 25 and was detected again for three
+// pairs after a box 12 px too wide.
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
     ::testing::Values(
@@ -1874,7 +1940,13 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"heldout84_35_recede129px_3_0m_5_2rps_x_teddy", 129, 3.0, recede, 3.0, 5.2, 'x',
                     photo4, 40},
         motion_case{"heldout85_23_recede111px_4_0m_teddy", 111, 4.0, recede, 1.9, 0.0, 'x', photo4,
-                    24}),
+                    24},
+        motion_case{"heldout86_09_back209px_2_4m_9_2rps_x_venus", 209, 2.4, circle_back, 3.7, 9.2,
+                    'x', venus, 40},
+        motion_case{"heldout86_23_recede227px_3_0m_teddy", 227, 3.0, recede, 1.0, 0.0, 'x', photo4,
+                    40},
+        motion_case{"heldout86_25_back229px_3_7m_2_4rps_y_tsukuba", 229, 3.7, circle_back, 1.0, 2.4,
+                    'y', tsukuba, 40}),
     case_name);
 
 }  // namespace
