@@ -171,9 +171,8 @@ int expect_same_as_fresh(const scene::scenario& scenario, int from, int compare_
 // The ball leaves the view and comes back: compared from the last frame it
 // is out of view on, the fresh run started two frames earlier.
 int expect_new_track_as_fresh(const scene::scenario& scenario) {
-    host::stereo_runner timing(scenario, default_config(scenario));
     const host::exit_return_frames when =
-        host::exit_return_timing(timing.sequence(), scenario.frame_count);
+        host::exit_return_timing(scene::sequence(scenario), scenario.frame_count);
     const int from = when.last_outside - 2;
     EXPECT_GT(from, when.first_outside);
     return expect_same_as_fresh(scenario, from, when.last_outside);
