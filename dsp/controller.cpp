@@ -189,6 +189,7 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
                 m_state = tracker_state::track;
                 s.measured_disparity_q8 = s.sized_disparity_q8 = s.key_sized_q8 = 0;
                 s.size_from_key = false;
+                s.still_pairs = 0;
             }
             break;
         case tracker_state::track:

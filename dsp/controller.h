@@ -46,6 +46,10 @@
 //     it) is then taken from a key frame (dsp/key_frame.h): the key's
 //     pattern's displacement since, and once it is 4 px, Dif(key, t)'s
 //     extent, which one pair's thin differences miss across the motion.
+//     A still track (no difference around its box, which moved under 4 px,
+//     for 20 pairs) ends -> LOST on a pair whose Dif(t-1,t) holds a moving
+//     object away from it: an object that vanished mid-view, or stopped,
+//     gives way to one that moves.
 //   LOST: nothing but preprocess; after lost_frames_to_detect pairs in LOST
 //     the state becomes DETECT (so the three-frame history no longer holds
 //     the frames the track was lost in).

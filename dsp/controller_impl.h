@@ -25,6 +25,11 @@ constexpr int history_frames = 3;  // paper eq. 2-4 needs f(t-2), f(t-1), f(t)
 // Pairs a slow detection waits for its object to move key_frame::min_shift
 // px: slower than 0.4 px per frame it is taken as still.
 constexpr int max_candidate_pairs = 10;
+// Pairs a track's box stays within min_shift px, with no difference
+// around it, before it is still (yields_to_mover): under 0.2 px a pair,
+// half the slowest object DETECT starts. With max_candidate_pairs a ball
+// at 0.45 px a frame, its box lagging it, was taken as still.
+constexpr int still_track_pairs = 2 * max_candidate_pairs;
 
 // `b` within `step` px of `a` on both axes.
 inline bool moved_at_most(box a, box b, int step) {
@@ -167,6 +172,9 @@ struct controller::impl {
     int newest = 1;             // right_gray[newest] = f(t)
     int frames_in_history = 0;  // right frames seen, at most 3
     int lost_pairs = 0;
+    // TRACK: pairs the box has been still, and where it was on the first (yields_to_mover)
+    int still_pairs = 0;
+    box still_anchor;
     uint32_t frame_index = 0;
     bool left_made = false;  // left_gray holds this pair's left image
 
@@ -202,8 +210,10 @@ struct controller::impl {
         bool outlined = false;       // the box followed a silhouette (follow_object)
         bool outline_slow = false;   // whose centre moved at most key_frame::max_step px
         bool window_moving = false;  // the extent window read a motion (follow_reading)
+        bool no_difference = false;  // neither difference held the object around the box
     };
     bool track_object(uint64_t* cycles, sdram_traffic* traffic, track_motion* seen);
+    bool yields_to_mover(bool no_difference, uint64_t* cycles);
     void follow_slow_object(track_motion seen, uint64_t* cycles, sdram_traffic* traffic);
     void follow_outline_key(track_motion seen, uint64_t* cycles, sdram_traffic* traffic);
     span first_outline(key_axis& axis, span both, span key_box);

@@ -74,9 +74,10 @@ bool controller::impl::track(frame_output& out) {
     uint64_t cycles = 0;
     sdram_traffic traffic;
     track_motion seen;
-    const bool tracking = track_object(&cycles, &traffic, &seen);
+    bool tracking = track_object(&cycles, &traffic, &seen);
     // The refit has used Dif(t-2,t-1); now Dif(t-1,t) for the next pair.
     update_motion_mask(&cycles, &traffic);
+    if (tracking && yields_to_mover(seen.no_difference, &cycles)) tracking = false;
     if (tracking) {
         follow_slow_object(seen, &cycles, &traffic);
     } else {
@@ -142,6 +143,7 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
             cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
 
     const box found = tracker.position();
+    seen->no_difference = !motion.found;
     const int step = key_frame::max_step;
     seen->sad_slow = status == track_status::tracking && moved_at_most(last, found, step);
     if (follows) {
@@ -172,6 +174,45 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
             cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
     }
     return true;
+}
+
+// A still track gives way to a moving object elsewhere. Still: no
+// difference around the box, which moved under key_frame::min_shift px,
+// for still_track_pairs pairs. Then on each pair Dif(t-1,t) (the
+// packed mask, just made) is read away from the box, outside the region
+// its own differences are read in (size_rule_region): a block group of at
+// least min_area set pixels there ends the track, and DETECT takes that
+// object. An object that vanished away from every border (behind the
+// background) leaves its box on a still patch of background, which the SAD
+// pattern, re-taken each pair, matches in place for ever, as it does a
+// ball that stopped; DETECT then never saw a second object (0 of 30 pairs).
+// A stopped object with nothing else moving keeps its track. The mask is
+// in L2; its unpacking is charged as a packed difference there (the same
+// loads and bit operations per 8 pixels).
+bool controller::impl::yields_to_mover(bool no_difference, uint64_t* cycles) {
+    const box now = tracker.position();
+    if (!no_difference) {
+        still_pairs = 0;
+        return false;
+    }
+    if (still_pairs == 0 || !moved_at_most(still_anchor, now, key_frame::min_shift - 1)) {
+        still_anchor = now;  // a still run starts here
+        still_pairs = 0;
+    }
+    if (++still_pairs < still_track_pairs) return false;
+    const box own = size_rule_region(now, config.track.search_radius, width, height);
+    later_blocks.begin(width, height);
+    uint8_t* row = refit_rows;
+    for (int y = 0; y < height; ++y) {
+        const bool beside = y >= own.y && y < own.bottom();
+        for (int x = 0; x < width; ++x)
+            row[x] =
+                !(beside && x >= own.x && x < own.right()) && packed_bit(motion_mask, width, x, y);
+        later_blocks.add_row(row, y);
+    }
+    *cycles += cycles_of(cost::difference_packed_profile(width, height, cost::memory::l2)) +
+               cycles_of(cost::motion_blocks_profile(width, height));
+    return later_blocks.extent(box{}, config.detect.min_area).found;
 }
 
 // object(t-1)'s box is the box where both differences around it agree:

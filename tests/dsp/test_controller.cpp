@@ -16,6 +16,7 @@
 #include "dsp/controller.h"
 #include "tb/platform/scoring/error_metrics.h"
 #include "tests/support/data_path.h"
+#include "tests/support/host/box_judge.h"
 #include "tests/support/host/scenarios.h"
 #include "tests/support/host/stereo_runner.h"
 #include "tests/support/photo_texture.h"
@@ -209,28 +210,73 @@ TEST(ControllerStates, ANewKeyedTrackAtAnotherDepthKeepsNothingOfTheLast) {
     EXPECT_GE(expect_same_as_fresh(scenario, start - 10, start), 20);
 }
 
-// Open (docs/firmware.md, "Open"): the first ball goes behind the
-// background plane near the middle of the view, so no border ends its
-// track. The firmware tracks the patch of background where it vanished
-// until the run ends (a still pattern matches in place, as a ball that
-// stopped), and never sees the second ball, which moves from frame 90 on.
-// Asked: the second ball tracked from ten pairs after it starts.
-TEST(ControllerStates, DISABLED_ANewObjectIsSeenAfterTheLastVanished) {
-    const scene::scenario scenario = host::vanish_then_new_object_scenario();
+namespace {
+
+// The pairs from `from` on whose TRACK box has its centre in ball `ball`'s
+// image (scene truth), how many were asked, and the longest processing of
+// any pair (the still track's check of the mask included).
+struct pairs_on_ball {
+    int on = 0, asked = 0;
+    double processing_max_ms = 0.0;
+};
+pairs_on_ball track_on_ball(const scene::scenario& scenario, size_t ball, int from) {
     host::stereo_runner runner(scenario, default_config(scenario));
     const std::vector<host::host_record> records = runner.run(0, scenario.frame_count);
     std::printf("states: %s\n", state_timeline(records).c_str());
-    int on_second = 0, asked = 0;
+    pairs_on_ball p;
     for (const host::host_record& r : records) {
-        if (r.index < host::second_object_start_frame() + 10) continue;
-        const dsp::box b = runner.sequence().truth(r.index)[1].right.pixel_box;
+        p.processing_max_ms = std::max(p.processing_max_ms, host::processing_ms(r));
+        if (r.index < from) continue;
+        const dsp::box b = runner.sequence().truth(r.index)[ball].right.pixel_box;
         const dsp::box& got = r.firmware.box_right;
         const int cx = got.x + got.width / 2, cy = got.y + got.height / 2;
-        ++asked;
-        on_second += r.firmware.state == tracker_state::track && cx >= b.x && cx < b.right() &&
-                     cy >= b.y && cy < b.bottom();
+        ++p.asked;
+        p.on += r.firmware.state == tracker_state::track && cx >= b.x && cx < b.right() &&
+                cy >= b.y && cy < b.bottom();
     }
-    EXPECT_EQ(on_second, asked);
+    std::printf("ball %zu: %d of %d pairs from frame %d tracked on it, processing max %.2f ms\n",
+                ball, p.on, p.asked, from, p.processing_max_ms);
+    EXPECT_LE(p.processing_max_ms, host::frame_period_ms);
+    return p;
+}
+
+}  // namespace
+
+// The first ball goes behind the background plane near the middle of the
+// view, so no border ends its track; its box stays on the still patch of
+// background where it vanished (a pattern that matches in place, as a ball
+// that stopped). Once the second ball moves, the still track gives way
+// (yields_to_mover, dsp/controller_track.cpp): the second ball tracked
+// from ten pairs after it starts. Before that rule: 0 of 30.
+TEST(ControllerStates, ANewObjectIsSeenAfterTheLastVanished) {
+    const pairs_on_ball p = track_on_ball(host::vanish_then_new_object_scenario(), 1,
+                                          host::second_object_start_frame() + 10);
+    EXPECT_EQ(p.on, p.asked);
+}
+
+// A dropped ball bounces and comes to rest; nothing else moves. Its track
+// is kept, still, to the end of the run (75 pairs and more).
+TEST(ControllerStates, AStoppedObjectKeepsItsTrack) {
+    const pairs_on_ball p = track_on_ball(host::dropped_then_new_object_scenario(false), 0, 40);
+    EXPECT_GE(p.asked, 75);
+    EXPECT_EQ(p.on, p.asked);
+}
+
+// The same dropped ball at rest, and the second ball starts to move: the
+// still track gives way to the moving object.
+TEST(ControllerStates, AStoppedObjectGivesWayToAMovingOne) {
+    const pairs_on_ball p = track_on_ball(host::dropped_then_new_object_scenario(true), 1,
+                                          host::second_object_start_frame() + 10);
+    EXPECT_EQ(p.on, p.asked);
+}
+
+// A slow ball (0.45 px a frame, its box lagging it) is tracked while a
+// second ball starts to move: a track whose object moves as fast as
+// DETECT starts one keeps it. Still after max_candidate_pairs (10) pairs
+// instead of still_track_pairs, this track gave way at pair 101.
+TEST(ControllerStates, ASlowObjectKeepsItsTrackWhileAnotherMoves) {
+    const pairs_on_ball p = track_on_ball(host::slow_then_new_object_scenario(), 0, 30);
+    EXPECT_EQ(p.on, p.asked);
 }
 
 // Nothing moves for 40 frames: the detector runs on every pair from the

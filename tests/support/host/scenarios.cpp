@@ -96,6 +96,20 @@ scene::scenario vanish_then_new_object_scenario() {
         {0.3, 0.05, 3.2}, {0.05, 0.0, 1.5}, scene::motion_start_s(3, period)));
 }
 
+scene::scenario dropped_then_new_object_scenario(bool second_moves) {
+    const double period = scene::scenario{}.frame_period_s;
+    scene::scenario s = first_then_new_object_scenario(scene::trajectory::ballistic(
+        {0.3, -0.25, 3.0}, {0.0, 0.0, 0.0}, scene::motion_start_s(3, period), true, 0.2, 0.3));
+    if (!second_moves) s.scene.balls.back().path = scene::trajectory::still({-0.5, 0.0, 2.4});
+    return s;
+}
+
+scene::scenario slow_then_new_object_scenario() {
+    const double period = scene::scenario{}.frame_period_s;
+    return first_then_new_object_scenario(scene::trajectory::line(
+        {0.0, 0.05, 3.0}, {0.07, 0.0, 0.0}, scene::motion_start_s(3, period)));
+}
+
 exit_return_frames exit_return_timing(const scene::sequence& sequence, int frames) {
     exit_return_frames f;
     for (int n = 0; n < frames; ++n) {

@@ -54,6 +54,15 @@ scene::scenario exit_then_new_object_scenario();
 // the middle of the view, until it is behind the background plane (5 m)
 // from frame 55: it leaves no border behind.
 scene::scenario vanish_then_new_object_scenario();
+// The same second ball; the first, 12 cm wide at 3 m, is dropped from rest
+// at frame 3, bounces on a floor 0.45 m below (restitution 0.3) and lies
+// still from about frame 26. With second_moves false the second ball stays
+// still: nothing moves after the first comes to rest.
+scene::scenario dropped_then_new_object_scenario(bool second_moves);
+// The same second ball; the first, 12 cm wide, goes right at 0.07 m/s 3 m
+// away (0.45 px a frame, just over the slowest DETECT starts: 0.4), still
+// moving while the second starts.
+scene::scenario slow_then_new_object_scenario();
 constexpr int second_object_start_frame() {
     return 90;
 }
