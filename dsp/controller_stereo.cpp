@@ -143,7 +143,11 @@ uint64_t controller::impl::read_short_of(int core_pixels, const frame_output& ou
 // larger size, the tracker's or the reported one: a side moved in too far
 // makes the box oblong too, and is no sign of a wrong reach (a 140 px ball
 // going away, its tracker's box held 29 px too large, trimmed 9 px too far
-// on y). Away from the image's border only: a cut object is not round.
+// on y). A reach refused is no size to judge the other axis against: a
+// 129 px ball going away over teddy, 88 px wide by then, had a 37 px reach
+// of its width refused, and against that width a 16 px reach of its height
+// passed (its box 18 px too tall); the other axis is judged again without
+// it. Away from the image's border only: a cut object is not round.
 uint64_t controller::impl::widen_to_stereo_reach(int core_pixels, const stereo_reach& short_sides,
                                                  const stereo_reach& short_ends,
                                                  frame_output& out) {
@@ -161,9 +165,22 @@ uint64_t controller::impl::widen_to_stereo_reach(int core_pixels, const stereo_r
                                 max_int(widened.height, b.height)};
         const box against_height{widened.x, widened.y, max_int(widened.width, b.width),
                                  widened.height};
-        if (drawn_out(against_width, config.rig) == drawn_out_axis::width) r = stereo_reach{};
-        if (drawn_out(against_height, config.rig) == drawn_out_axis::height) v = stereo_reach{};
+        bool refuse_x = drawn_out(against_width, config.rig) == drawn_out_axis::width;
+        bool refuse_y = drawn_out(against_height, config.rig) == drawn_out_axis::height;
         cycles += 2 * cycles_of(cost::round_box_profile());  // a sphere's shape, twice
+        if (refuse_x != refuse_y) {  // the other axis judged again without the refused reach
+            const box kept = moved_box(b, refuse_x ? stereo_reach{} : r,
+                                       refuse_y ? stereo_reach{} : v, short_sides, short_ends);
+            const box against =
+                refuse_x ? box{kept.x, kept.y, max_int(kept.width, b.width), kept.height}
+                         : box{kept.x, kept.y, kept.width, max_int(kept.height, b.height)};
+            const drawn_out_axis axis = drawn_out(against, config.rig);
+            refuse_x = refuse_x || axis == drawn_out_axis::width;
+            refuse_y = refuse_y || axis == drawn_out_axis::height;
+            cycles += cycles_of(cost::round_box_profile());
+        }
+        if (refuse_x) r = stereo_reach{};
+        if (refuse_y) v = stereo_reach{};
     }
     out.box_right = moved_box(b, r, v, short_sides, short_ends);
     return cycles;

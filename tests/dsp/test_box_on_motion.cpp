@@ -1636,6 +1636,17 @@ INSTANTIATE_TEST_SUITE_P(ReachEndConfirmed, BoxOnMotion,
                                                3.8, recede, 4.9, 6.3, 'z', venus, 32}),
                          case_name);
 
+// A reach refused as drawn out is no size to judge the other axis's reach
+// against (dsp/controller_stereo.cpp, widen_to_stereo_reach); until then in
+// DISABLED_Open: round 84's 129 px ball going away over teddy had its width
+// reach (37-44 px) refused at two pairs and its height reach (9 and 16 px)
+// taken against it, a side 18 px (20.9 %) too long.
+INSTANTIATE_TEST_SUITE_P(ReachJudgedWithoutTheRefused, BoxOnMotion,
+                         ::testing::Values(motion_case{
+                             "heldout84_35_recede129px_3_0m_5_2rps_x_teddy", 129, 3.0, recede, 3.0,
+                             5.2, 'x', photo4, 40}),
+                         case_name);
+
 // The depth of an object of 24-59 px read on a round core, the ellipse
 // inscribed in its box less a tenth a side (dsp/object_core.h); until then
 // in DISABLED_Open, failing on the depth alone (38-55 px balls at
@@ -1880,8 +1891,8 @@ INSTANTIATE_TEST_SUITE_P(
 // Round 84's seven held-out failures (HeldOutSweep84): four balls going
 // away (85-158 px) 7.3-26.4 px off near the background plane, their boxes
 // grown on both axes at once (two pass: ReachEndConfirmed; the 157 px one
-// over tsukuba now fails on the depth alone, 1.01 %, and the 129 px one
-// over teddy on a side 0.8 px past its bound); a 44 px circle over aloe
+// over tsukuba now fails on the depth alone, 1.01 %; the 129 px one over
+// teddy passes: ReachJudgedWithoutTheRefused); a 44 px circle over aloe
 // (9.36 px, depth 1.93 %), a 34 px ball entering over venus (depth
 // 1.48 %), and a 235 px ball on the circle's other side that left TRACK
 // for a pair.
@@ -1937,8 +1948,6 @@ INSTANTIATE_TEST_SUITE_P(
                     venus, 40},
         motion_case{"heldout84_32_recede157px_2_7m_2_2rps_z_tsukuba", 157, 2.7, recede, 2.2, 2.2,
                     'z', tsukuba, 40},
-        motion_case{"heldout84_35_recede129px_3_0m_5_2rps_x_teddy", 129, 3.0, recede, 3.0, 5.2, 'x',
-                    photo4, 40},
         motion_case{"heldout85_23_recede111px_4_0m_teddy", 111, 4.0, recede, 1.9, 0.0, 'x', photo4,
                     24},
         motion_case{"heldout86_09_back209px_2_4m_9_2rps_x_venus", 209, 2.4, circle_back, 3.7, 9.2,
