@@ -104,10 +104,23 @@ scene::scenario dropped_then_new_object_scenario(bool second_moves) {
     return s;
 }
 
+scene::scenario dropped_then_speck_scenario() {
+    scene::scenario s = dropped_then_new_object_scenario(true);
+    s.scene.balls.back().radius_m = 0.004;
+    return s;
+}
+
 scene::scenario slow_then_new_object_scenario() {
     const double period = scene::scenario{}.frame_period_s;
     return first_then_new_object_scenario(scene::trajectory::line(
         {0.0, 0.05, 3.0}, {0.07, 0.0, 0.0}, scene::motion_start_s(3, period)));
+}
+
+scene::scenario spinning_then_new_object_scenario() {
+    scene::scenario s = first_then_new_object_scenario(scene::trajectory::still({0.3, 0.05, 3.0}));
+    const double pi = std::acos(-1.0);
+    s.scene.balls.front().spin_rad_s = 2.0 * 2.0 * pi;
+    return s;
 }
 
 exit_return_frames exit_return_timing(const scene::sequence& sequence, int frames) {

@@ -59,10 +59,16 @@ scene::scenario vanish_then_new_object_scenario();
 // still from about frame 26. With second_moves false the second ball stays
 // still: nothing moves after the first comes to rest.
 scene::scenario dropped_then_new_object_scenario(bool second_moves);
+// The same dropped ball; the second ball is a speck 8 mm wide (3 px), whose
+// differences are under the detector's min_area.
+scene::scenario dropped_then_speck_scenario();
 // The same second ball; the first, 12 cm wide, goes right at 0.07 m/s 3 m
 // away (0.45 px a frame, just over the slowest DETECT starts: 0.4), still
 // moving while the second starts.
 scene::scenario slow_then_new_object_scenario();
+// The same second ball; the first, 12 cm wide at 3 m, stays where it is
+// and spins at 2 rev/s about y: its texture moves, its outline does not.
+scene::scenario spinning_then_new_object_scenario();
 constexpr int second_object_start_frame() {
     return 90;
 }
