@@ -211,6 +211,7 @@ struct controller::impl {
         bool outline_slow = false;   // whose centre moved at most key_frame::max_step px
         bool window_moving = false;  // the extent window read a motion (follow_reading)
         bool no_difference = false;  // neither difference held the object around the box
+        bool depth_resized = false;  // the depth moved a side of the box more than max_step px
     };
     bool track_object(uint64_t* cycles, sdram_traffic* traffic, track_motion* seen);
     bool yields_to_mover(bool no_difference, uint64_t* cycles);

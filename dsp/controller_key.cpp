@@ -154,7 +154,14 @@ void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
     // while a thrown ball fell from its apex (its box grew 127 -> 141 px in
     // four pairs, and the fast rule kept that size); one taken held a 100 px
     // ball moving 5 px a pair whose pattern matched where it had been.
-    if (seen.window_moving && !seen.outline_slow) {
+    // Nor where the depth moved a side of the box by more than max_step px
+    // since the last pair: a key holds its object's size where it was taken
+    // (a key of the outline spans Dif(key, t)'s hull, the key's object at
+    // its size), which an object going away or coming nearer outgrows. A
+    // 227 px ball going away over teddy was held at 180 x 180 px for four
+    // pairs while its image shrank by 4 px a pair, its box then 9-12 px too
+    // large; a 174 px ball at 153 x 151 px when it was 106 px.
+    if ((seen.window_moving && !seen.outline_slow) || seen.depth_resized) {
         key.drop();
         size_from_key = false;
         return;

@@ -103,6 +103,8 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
     const box last = disparity_jumped(sized_disparity_q8, measured_disparity_q8)
                          ? tracked
                          : at_disparity(tracked, sized_disparity_q8, measured_disparity_q8);
+    seen->depth_resized = abs_int(last.width - tracked.width) > key_frame::max_step ||
+                          abs_int(last.height - tracked.height) > key_frame::max_step;
     const int64_t sized_before = sized_disparity_q8;
     sized_disparity_q8 = measured_disparity_q8;
     const box pattern = tracker.pattern_box();

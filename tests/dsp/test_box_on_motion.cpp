@@ -1647,6 +1647,16 @@ INSTANTIATE_TEST_SUITE_P(ReachJudgedWithoutTheRefused, BoxOnMotion,
                              5.2, 'x', photo4, 40}),
                          case_name);
 
+// No key is taken or kept while the depth moves a side of the box by more
+// than max_step px a pair (dsp/controller_key.cpp, follow_slow_object);
+// until then in DISABLED_Open: a 120 px ball going away over teddy at 6 px
+// a frame, spinning 2 rev/s: its depth 1.13 % off at its 26th pair, its
+// box 5.28 px off at its 27th (not traced).
+INSTANTIATE_TEST_SUITE_P(NoKeyWhileTheDepthResizes, BoxOnMotion,
+                         ::testing::Values(motion_case{"recede120px_6pxpf_2rps_x_teddy_30f", 120,
+                                                       2.6, recede, 0.8, 2.0, 'x', photo4, 30}),
+                         case_name);
+
 // The depth of an object of 24-59 px read on a round core, the ellipse
 // inscribed in its box less a tenth a side (dsp/object_core.h); until then
 // in DISABLED_Open, failing on the depth alone (38-55 px balls at
@@ -1877,7 +1887,9 @@ INSTANTIATE_TEST_SUITE_P(
 // tried beside round 23's 120 px ball (which passes): 10 of 24 failed at 24
 // frames, 7 of them on the depth alone (TiledFromEighty since); three were
 // 13.7-22.8 px off at one pair (ReachKeptRound since), and one more at 30
-// frames past its 24th (the depth 1.13 % off at about 77 px, untiled).
+// frames past its 24th (the depth 1.13 % off at about 77 px, untiled;
+// passes since no key is kept while the depth resizes the box:
+// NoKeyWhileTheDepthResizes).
 // Found while looking for the drift mutants' cases beside
 // DriftAcrossCircleBack: a 35 px circle over cones (6.06 px off at one pair).
 // Round 80's nine held-out failures (HeldOutSweep80): four on the depth
@@ -1929,8 +1941,6 @@ INSTANTIATE_TEST_SUITE_P(
                     venus, 24},
         motion_case{"heldout78_16_circle29px_2_5m_8_7rps_x_kodim23", 29, 2.5, circle, 1.7, 8.7, 'x',
                     photo2, 32},
-        motion_case{"recede120px_6pxpf_2rps_x_teddy_30f", 120, 2.6, recede, 0.8, 2.0, 'x', photo4,
-                    30},
         motion_case{"circle35px_3pxpf_2rps_x_cones_32f", 35, 2.6, circle, 0.4, 2.0, 'x', photo, 32},
         motion_case{"heldout80_00_back112px_3_1m_4_3rps_z_venus", 112, 3.1, circle_back, 3.6, 4.3,
                     'z', venus, 32},
