@@ -14,6 +14,22 @@ span previous_axis(span before, span after, int size) {
     return span{start, max_int(0, min_int(before.end(), after.end()) - start)};
 }
 
+bool returned_axis(span earlier, span before, span after, span last, span* previous) {
+    const int size = last.size, tolerance = max_int(2, size / 8);
+    const bool shared =
+        abs_int(before.start - after.start) <= 1 && abs_int(before.end() - after.end()) <= 1;
+    const int motion = after.size - size;
+    if (!shared || motion <= tolerance) return false;
+    const bool at_start = abs_int(last.start - after.start) <= tolerance;
+    const bool at_end = abs_int(last.end() - after.end()) <= tolerance;
+    if (at_start == at_end) return false;
+    const bool came = at_end ? earlier.end() <= after.end() - motion + tolerance
+                             : earlier.start >= after.start + motion - tolerance;
+    if (!came) return false;
+    *previous = at_end ? span{after.end() - size, size} : span{after.start, size};
+    return true;
+}
+
 span follow_axis(span previous, span both, span last, int size) {
     if (both.size < size)
         return span{max_int(min_int(last.start, both.start), both.end() - size), size};

@@ -35,6 +35,23 @@ struct span {
 // Edges within 1 px count as shared.
 span previous_axis(span before, span after, int size);
 
+// object(t-1) on one axis where the motion reversed and brought object(t)
+// back to object(t-2): both extents, Dif(t-2,t-1)'s (`before`) and
+// Dif(t-1,t)'s (`after`), share both edges (within 1 px) and are larger
+// than the last box `last` by over an eighth of it (at least 2 px, the
+// tolerance), so their common part is all three. object(t-1) is the last
+// box's size from the end the last box holds (within the tolerance; not
+// when it holds both or neither), when Dif(t-3,t-2)'s extent `earlier`
+// stops short of that end by the motion (within the tolerance): the object
+// came to it in the pair before. True and `previous` set then. A 30 px
+// ball thrown over teddy bounced so, its extents both 54 px high: the
+// common part was not the ball's size, no box was followed, and the SAD box
+// pulled towards it was 41 x 43 px at the bounce, 6 px past its sides'
+// bound. The pair before is asked for by a 160 px ball thrown slowly, near
+// its apex: both extents held it whole (169 px) around a last box 145 px
+// high that held their end, but the extent before them held that end too.
+bool returned_axis(span earlier, span before, span after, span last, span* previous);
+
 // object(t) on one axis, `size` wide, from object(t-1)'s extent `previous`,
 // Dif(t-1,t)'s extent `both` and the last box `last`. The object moved
 // towards the side where `both` reaches further past `previous`, by

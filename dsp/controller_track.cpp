@@ -60,6 +60,15 @@ bool on_trailing_edges(box both, int step_x2, int step_y2, int size_x, int size_
     return edge_x || edge_y;
 }
 
+// object(t-1) on one axis: where the motion came back onto object(t-2),
+// the last box's end (returned_axis, with the window's extent of the pair
+// before, `window[2]`: `window[0]` is `after`'s); else previous_axis.
+span previous_of(const span* window, int count, span before, span after, span last) {
+    span returned;
+    if (count >= 3 && returned_axis(window[2], before, after, last, &returned)) return returned;
+    return previous_axis(before, after, last.size);
+}
+
 }  // namespace
 
 // Stage track: SAD search around the last position (the tracker keeps the
@@ -364,11 +373,13 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
     if (reading) reading->round_read = grown.round_read;
     const bool grown_x = grown.x, grown_y = grown.y;
     const int slow = key_frame::min_shift;
-    const span previous_x =
-        grown_x ? common_x : previous_axis(x_span(motion.before), x_span(motion.after), last.width);
-    const span previous_y =
-        grown_y ? common_y
-                : previous_axis(y_span(motion.before), y_span(motion.after), last.height);
+    const int n = recent_extents.count;
+    const span previous_x = grown_x ? common_x
+                                    : previous_of(recent_extents.x, n, x_span(motion.before),
+                                                  x_span(motion.after), x_span(last));
+    const span previous_y = grown_y ? common_y
+                                    : previous_of(recent_extents.y, n, y_span(motion.before),
+                                                  y_span(motion.after), y_span(last));
     // How far Dif(t-1,t) reaches past object(t-1) on each axis.
     const int moved_x = motion.both.width - previous_x.size;
     const int moved_y = motion.both.height - previous_y.size;

@@ -1657,6 +1657,17 @@ INSTANTIATE_TEST_SUITE_P(NoKeyWhileTheDepthResizes, BoxOnMotion,
                                                        2.6, recede, 0.8, 2.0, 'x', photo4, 30}),
                          case_name);
 
+// A bounce that brings the ball back to where it was two frames before:
+// object(t-1) read at the end of the differences' common part the last box
+// holds (dsp/box_refit.h, returned_axis); until then in DISABLED_Open: the
+// 30 px throw over teddy (above), its two differences 54 px high at the
+// bounce, no box followed, and the SAD box pulled towards their common
+// part 41 x 43 px, a side 6-8 px (22.9 %) past its bound at two pairs.
+INSTANTIATE_TEST_SUITE_P(ReturnedAtTheBounce, BoxOnMotion,
+                         ::testing::Values(motion_case{"throw30px_2_2_4rps_x_teddy_4m", 30, 4.0,
+                                                       thrown, 2.2, 4.0, 'x', photo4, 24}),
+                         case_name);
+
 // The depth of an object of 24-59 px read on a round core, the ellipse
 // inscribed in its box less a tenth a side (dsp/object_core.h); until then
 // in DISABLED_Open, failing on the depth alone (38-55 px balls at
@@ -1876,8 +1887,9 @@ INSTANTIATE_TEST_SUITE_P(
 // apex cases above. The box centre stays within its bounds, but at one pair
 // near the bounce the depth is off by more than 1 % (23.7 px of disparity
 // at 4 m: 1 % is 0.24 px). 30 px at 28 px a frame: 1.22 / 3.87 px, depth
-// 1.37 % (pair 16), and one box side 1 px past its bound; 40 px at 3.5 m,
-// 30 px a frame: 0.72 / 1.92 px, depth 1.45 % (pair 17; passes: RoundCore).
+// 1.37 % (pair 16), and one box side 1 px past its bound (passes:
+// ReturnedAtTheBounce); 40 px at 3.5 m, 30 px a frame: 0.72 / 1.92 px,
+// depth 1.45 % (pair 17; passes: RoundCore).
 // Round 78's nine held-out failures (HeldOutSweep78): seven of its ten
 // balls under 30 px wide fail (the 16 px and 17 px circles over kodim23
 // with the depth 26 % and 70 % off; the 17 px one 5.3 % since a fifth's
@@ -1927,45 +1939,44 @@ INSTANTIATE_TEST_SUITE_P(
 // pairs after a box 12 px too wide.
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
-    ::testing::Values(
-        motion_case{"throw30px_2_2_4rps_x_teddy_4m", 30, 4.0, thrown, 2.2, 4.0, 'x', photo4, 24},
-        motion_case{"heldout78_00_circle16px_3_8m_3_3rps_x_kodim23", 16, 3.8, circle, 2.6, 3.3, 'x',
-                    photo2, 40},
-        motion_case{"heldout78_04_recede185px_3_9m_aloe", 185, 3.9, recede, 0.6, 0.0, 'x', aloe,
-                    40},
-        motion_case{"heldout78_06_back17px_3_1m_kodim23", 17, 3.1, circle_back, 2.9, 0.0, 'y',
-                    photo2, 24},
-        motion_case{"heldout78_13_recede14px_2_3m_1_7rps_z_aloe", 14, 2.3, recede, 3.2, 1.7, 'z',
-                    aloe, 40},
-        motion_case{"heldout78_14_enter21px_2_3m_7_4rps_y_venus", 21, 2.3, enter, 3.4, 7.4, 'y',
-                    venus, 24},
-        motion_case{"heldout78_16_circle29px_2_5m_8_7rps_x_kodim23", 29, 2.5, circle, 1.7, 8.7, 'x',
-                    photo2, 32},
-        motion_case{"circle35px_3pxpf_2rps_x_cones_32f", 35, 2.6, circle, 0.4, 2.0, 'x', photo, 32},
-        motion_case{"heldout80_00_back112px_3_1m_4_3rps_z_venus", 112, 3.1, circle_back, 3.6, 4.3,
-                    'z', venus, 32},
-        motion_case{"heldout80_17_recede174px_2_8m_5_3rps_z", 174, 2.8, recede, 0.6, 5.3, 'z',
-                    procedural, 40},
-        motion_case{"heldout80_25_circle210px_3_2m_6_1rps_x_kodim23", 210, 3.2, circle, 3.6, 6.1,
-                    'x', photo2, 40},
-        motion_case{"heldout80_38_approach29px_3_1m_kodim23", 29, 3.1, approach, 0.8, 0.0, 'x',
-                    photo2, 40},
-        motion_case{"heldout84_02_circle44px_3_3m_1_4rps_x_aloe", 44, 3.3, circle, 2.5, 1.4, 'x',
-                    aloe, 40},
-        motion_case{"heldout84_11_back235px_3_0m_8_4rps_x_kodim19", 235, 3.0, circle_back, 2.2, 8.4,
-                    'x', photo3, 32},
-        motion_case{"heldout84_21_enter34px_3_8m_4_2rps_x_venus", 34, 3.8, enter, 1.5, 4.2, 'x',
-                    venus, 40},
-        motion_case{"heldout84_32_recede157px_2_7m_2_2rps_z_tsukuba", 157, 2.7, recede, 2.2, 2.2,
-                    'z', tsukuba, 40},
-        motion_case{"heldout85_23_recede111px_4_0m_teddy", 111, 4.0, recede, 1.9, 0.0, 'x', photo4,
-                    24},
-        motion_case{"heldout86_09_back209px_2_4m_9_2rps_x_venus", 209, 2.4, circle_back, 3.7, 9.2,
-                    'x', venus, 40},
-        motion_case{"heldout86_23_recede227px_3_0m_teddy", 227, 3.0, recede, 1.0, 0.0, 'x', photo4,
-                    40},
-        motion_case{"heldout86_25_back229px_3_7m_2_4rps_y_tsukuba", 229, 3.7, circle_back, 1.0, 2.4,
-                    'y', tsukuba, 40}),
+    ::testing::Values(motion_case{"heldout78_00_circle16px_3_8m_3_3rps_x_kodim23", 16, 3.8, circle,
+                                  2.6, 3.3, 'x', photo2, 40},
+                      motion_case{"heldout78_04_recede185px_3_9m_aloe", 185, 3.9, recede, 0.6, 0.0,
+                                  'x', aloe, 40},
+                      motion_case{"heldout78_06_back17px_3_1m_kodim23", 17, 3.1, circle_back, 2.9,
+                                  0.0, 'y', photo2, 24},
+                      motion_case{"heldout78_13_recede14px_2_3m_1_7rps_z_aloe", 14, 2.3, recede,
+                                  3.2, 1.7, 'z', aloe, 40},
+                      motion_case{"heldout78_14_enter21px_2_3m_7_4rps_y_venus", 21, 2.3, enter, 3.4,
+                                  7.4, 'y', venus, 24},
+                      motion_case{"heldout78_16_circle29px_2_5m_8_7rps_x_kodim23", 29, 2.5, circle,
+                                  1.7, 8.7, 'x', photo2, 32},
+                      motion_case{"circle35px_3pxpf_2rps_x_cones_32f", 35, 2.6, circle, 0.4, 2.0,
+                                  'x', photo, 32},
+                      motion_case{"heldout80_00_back112px_3_1m_4_3rps_z_venus", 112, 3.1,
+                                  circle_back, 3.6, 4.3, 'z', venus, 32},
+                      motion_case{"heldout80_17_recede174px_2_8m_5_3rps_z", 174, 2.8, recede, 0.6,
+                                  5.3, 'z', procedural, 40},
+                      motion_case{"heldout80_25_circle210px_3_2m_6_1rps_x_kodim23", 210, 3.2,
+                                  circle, 3.6, 6.1, 'x', photo2, 40},
+                      motion_case{"heldout80_38_approach29px_3_1m_kodim23", 29, 3.1, approach, 0.8,
+                                  0.0, 'x', photo2, 40},
+                      motion_case{"heldout84_02_circle44px_3_3m_1_4rps_x_aloe", 44, 3.3, circle,
+                                  2.5, 1.4, 'x', aloe, 40},
+                      motion_case{"heldout84_11_back235px_3_0m_8_4rps_x_kodim19", 235, 3.0,
+                                  circle_back, 2.2, 8.4, 'x', photo3, 32},
+                      motion_case{"heldout84_21_enter34px_3_8m_4_2rps_x_venus", 34, 3.8, enter, 1.5,
+                                  4.2, 'x', venus, 40},
+                      motion_case{"heldout84_32_recede157px_2_7m_2_2rps_z_tsukuba", 157, 2.7,
+                                  recede, 2.2, 2.2, 'z', tsukuba, 40},
+                      motion_case{"heldout85_23_recede111px_4_0m_teddy", 111, 4.0, recede, 1.9, 0.0,
+                                  'x', photo4, 24},
+                      motion_case{"heldout86_09_back209px_2_4m_9_2rps_x_venus", 209, 2.4,
+                                  circle_back, 3.7, 9.2, 'x', venus, 40},
+                      motion_case{"heldout86_23_recede227px_3_0m_teddy", 227, 3.0, recede, 1.0, 0.0,
+                                  'x', photo4, 40},
+                      motion_case{"heldout86_25_back229px_3_7m_2_4rps_y_tsukuba", 229, 3.7,
+                                  circle_back, 1.0, 2.4, 'y', tsukuba, 40}),
     case_name);
 
 }  // namespace

@@ -303,6 +303,49 @@ TEST(PreviousAxis, OneSharedEdgeIsAReversalAndObjectTMinus1IsSizeFromIt) {
                         75, 60));
 }
 
+// A bounce at the bottom that brings object(t) back where object(t-2) was:
+// object(t-3) at [240, 275), object(t-2) and object(t) at [261, 296),
+// object(t-1) at [280, 315). Dif(t-3,t-2) spans [240, 296); both later
+// differences [261, 315).
+TEST(ReturnedAxis, ObjectTMinus1IsTheEndTheLastBoxHolds) {
+    const span earlier{240, 56}, extent{261, 54}, last{280, 35};
+    span previous;
+    ASSERT_TRUE(dsp::returned_axis(earlier, extent, extent, last, &previous));
+    EXPECT_TRUE(is_span(previous, 280, 35));
+    // object(t) then follows at the other end, where object(t-2) was.
+    EXPECT_TRUE(is_span(dsp::follow_axis(previous, extent, last, 35), 261, 35));
+    // Edges 1 px apart still shared; a last box 4 px off its end (an eighth
+    // of 35 px) still holds it.
+    ASSERT_TRUE(dsp::returned_axis(earlier, span{262, 53}, extent, span{276, 35}, &previous));
+    EXPECT_TRUE(is_span(previous, 280, 35));
+    // The same at the start, mirrored: object(t-1) at [100, 135), object(t-2)
+    // and object(t) at [119, 154), object(t-3) at [140, 175).
+    ASSERT_TRUE(
+        dsp::returned_axis(span{119, 56}, span{100, 54}, span{100, 54}, span{100, 35}, &previous));
+    EXPECT_TRUE(is_span(previous, 100, 35));
+}
+
+TEST(ReturnedAxis, NotWhereTheExtentsSayNothingOfAReturn) {
+    const span earlier{240, 56}, extent{261, 54};
+    span previous{1, 1};
+    // A last box 5 px off both ends holds neither.
+    EXPECT_FALSE(dsp::returned_axis(earlier, extent, extent, span{275, 35}, &previous));
+    // Extents within an eighth of the object (a ball the differences hold
+    // whole, with its rim): no motion to read.
+    EXPECT_FALSE(
+        dsp::returned_axis(earlier, span{261, 39}, span{261, 39}, span{265, 35}, &previous));
+    // One edge shared is previous_axis's reversal, not this.
+    EXPECT_FALSE(
+        dsp::returned_axis(earlier, span{261, 54}, span{255, 60}, span{280, 35}, &previous));
+    // The extent of the pair before already reached the end the last box
+    // holds: the object did not come to it (a slow 160 px ball near its
+    // apex, differences holding it whole around a box too small).
+    EXPECT_FALSE(
+        dsp::returned_axis(span{166, 94}, span{93, 169}, span{94, 169}, span{123, 145}, &previous));
+    EXPECT_FALSE(dsp::returned_axis(span{255, 56}, extent, extent, span{280, 35}, &previous));
+    EXPECT_TRUE(is_span(previous, 1, 1)) << "nothing written";
+}
+
 TEST(StepSize, AtMostAnEighthOfTheLargerSizePerFrame) {
     EXPECT_EQ(dsp::step_size(80, 100, 8, 640, 640), 92);    // step 100 / 8 = 12
     EXPECT_EQ(dsp::step_size(80, 70, 8, 640, 640), 70);     // within the step
