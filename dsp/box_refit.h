@@ -45,9 +45,9 @@ span previous_axis(span before, span after, int size);
 // stops short of that end by the motion (within the tolerance): the object
 // came to it in the pair before. True and `previous` set then. A 30 px
 // ball thrown over teddy bounced so, its extents both 54 px high: the
-// common part was not the ball's size, no box was followed, and the SAD box
-// pulled towards it was 41 x 43 px at the bounce, 6 px past its sides'
-// bound. The pair before is asked for by a 160 px ball thrown slowly, near
+// common part was not the ball's size, no box was followed, and the box
+// reported at the bounce was 41 x 43 px for the 35 px ball (the SAD box
+// pulled towards that part). The pair before is asked for by a 160 px ball thrown slowly, near
 // its apex: both extents held it whole (169 px) around a last box 145 px
 // high that held their end, but the extent before them held that end too.
 bool returned_axis(span earlier, span before, span after, span last, span* previous);

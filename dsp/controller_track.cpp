@@ -347,7 +347,7 @@ controller::impl::part_growth controller::impl::grow_part(const motion_extents& 
 
 // object(t) from the extents, per axis: object(t-1) (previous_of) and
 // where Dif(t-1,t) reaches past it (follow_axis), as wide as object(t-1)
-// (the last box's size where the motion reversed or came back). Not given when object(t-1)'s extent is not the
+// (the last box's size where the motion reversed). Not given when object(t-1)'s extent is not the
 // size of the last box (within an eighth, at least 2 px: else the difference did not outline the
 // object, which nearly stopped and only its texture changed, or it held more than the object), when
 // Dif(t-1,t) reaches further than the object could have moved (twice the search radius: a change of

@@ -1662,7 +1662,8 @@ INSTANTIATE_TEST_SUITE_P(NoKeyWhileTheDepthResizes, BoxOnMotion,
 // holds (dsp/box_refit.h, returned_axis); until then in DISABLED_Open: the
 // 30 px throw over teddy (above), its two differences 54 px high at the
 // bounce, no box followed, and the SAD box pulled towards their common
-// part 41 x 43 px, a side 6-8 px (22.9 %) past its bound at two pairs.
+// part: the box reported 41 x 43 px for the 35 px ball, its height 8 px
+// (22.9 %) too large, past the bound of 20 %.
 INSTANTIATE_TEST_SUITE_P(ReturnedAtTheBounce, BoxOnMotion,
                          ::testing::Values(motion_case{"throw30px_2_2_4rps_x_teddy_4m", 30, 4.0,
                                                        thrown, 2.2, 4.0, 'x', photo4, 24}),
