@@ -47,9 +47,10 @@ span previous_axis(span before, span after, int size);
 // ball thrown over teddy bounced so, its extents both 54 px high: the
 // common part was not the ball's size, no box was followed, and the box
 // reported at the bounce was 41 x 43 px for the 35 px ball (the SAD box
-// pulled towards that part). The pair before is asked for by a 160 px ball thrown slowly, near
-// its apex: both extents held it whole (169 px) around a last box 145 px
-// high that held their end, but the extent before them held that end too.
+// pulled towards that part). The pair before is asked for by a 160 px
+// ball thrown slowly, near its apex: both extents held it whole (169 px)
+// around a last box 145 px high that held their end, but the extent
+// before them held that end too.
 bool returned_axis(span earlier, span before, span after, span last, span* previous);
 
 // object(t) on one axis, `size` wide, from object(t-1)'s extent `previous`,
