@@ -8,8 +8,9 @@
 // from it stands behind the ball; while the same rim read a pair or two
 // earlier, or the trailing rim read now, still bounds where the ball is.
 //
-// window_axis fits one constant velocity to the last extents, each rim a
-// one-sided bound, and places object(t) inside every bound.
+// window_axis fits a velocity to the last extents, and its change from pair
+// to pair where every edge shows one (a ball turning on a circle), each rim
+// a one-sided bound, and places object(t) inside every bound.
 #pragma once
 
 #include <cstdint>
@@ -68,13 +69,20 @@ span from_trailing_edge(span now, int step2, int size);
 
 // object(t)'s extent on one axis, `size` wide, from the window's extents
 // on that axis (`extents[k]`: Dif(t-1-k, t-k)'s) and the last box `last`.
-// At a constant velocity v (px per pair) the extent k pairs back spans
-// object(t-k-1) and object(t-k), so with object(t) at s:
-//   s <= start_k + k v + max(v, 0)          (its start reads inside)
-//   s >= end_k - size + k v + min(v, 0)     (its end reads inside)
-// v is searched in half pixels within 8 px of the median step of the
-// extents' edges: the one whose bounds cross least is taken (among equals,
-// the one nearest the median). object(t) is the last box moved by v, held
+// With the velocity v (px per pair) in the last pair, changing by a every
+// pair, the extent k pairs back spans object(t-k-1) and object(t-k), which
+// stood b_k = k v - a k (k - 1) / 2 behind object(t) and moved v_k = v - k a;
+// so with object(t) at s:
+//   s <= start_k + b_k + max(v_k, 0)          (its start reads inside)
+//   s >= end_k - size + b_k + min(v_k, 0)     (its end reads inside)
+// a is read from a full window: the median of both edges' second
+// differences where all of them change the same way by 1 px or more and
+// the median by over 1 px (less is the extents' rounding), else 0. On a
+// 44 px ball circling at 20 px a frame, one velocity over the window was
+// the ball's speed a pair or two back, and put the box 5-7 px past the
+// ball. v is searched in half pixels within 8 px of the median step of the
+// extents' edges plus a: the one whose bounds cross least is taken (among
+// equals, the one nearest that). object(t) is the last box moved by v, held
 // inside the bounds (midway where they cross: the size or the velocity
 // changed). Where one side's bounds agree within 1 px over the window and
 // the other side's spread over 2 px, that side read the rim in every pair:

@@ -508,19 +508,28 @@ kernel_profile round_box_profile() {
 
 kernel_profile window_fit_profile(int extents) {
     // dsp/extent_window.h: the median of the 2 (n - 1) edge steps (an
-    // insertion sort, as surface_mean's); then for each of the 33
-    // half-pixel velocities the bounds over the n extents (per extent two
-    // ADDs, the k v term accumulated by one more, a MAX2 and a MIN2; the
-    // running bounds carried from one extent to the next) and the choice
-    // (the crossing, two compares, three conditional moves); then the
-    // steady side and the clamp.
+    // insertion sort, as surface_mean's); over a full window the 2 (n - 2)
+    // second differences of the edges (three loads, two SUBs and a shift
+    // each, two compares for their signs) and their median alike; then for
+    // each of the 33 half-pixel velocities the bounds over the n extents
+    // (per extent two ADDs, how far the extent stood behind accumulated by
+    // one more, the velocity then, v - k a, by a SUB and clamped at 0 by a
+    // MAX2 and a MIN2, and the running bounds' MAX2 and MIN2, carried from
+    // one extent to the next) and the choice (the crossing, two
+    // compares, three conditional moves); then the steady side and the
+    // clamp.
     const uint32_t n = static_cast<uint32_t>(non_negative(extents));
     const uint32_t steps = n > 1 ? 2 * (n - 1) : 0;
+    const uint32_t changes = n > 3 ? 2 * (n - 2) : 0;
     constexpr uint32_t velocities = 33;
     kernel_profile p("window_fit");
     p.add(block("sort step", op_mix{/*l*/ 1, /*s*/ 1, 0, /*d*/ 2, 0, /*lsd*/ 1},
                 latency_load + latency_alu + latency_store, steps * steps / 4 + steps));
-    p.add(loop("extent", op_mix{/*l*/ 2, 0, 0, 0, 0, /*lsd*/ 3}, n, 2 * latency_alu, velocities,
+    p.add(block("second difference", op_mix{/*l*/ 4, /*s*/ 1, 0, /*d*/ 3, 0, /*lsd*/ 2},
+                latency_load + 3 * latency_alu, changes));
+    p.add(block("sort change", op_mix{/*l*/ 1, /*s*/ 1, 0, /*d*/ 2, 0, /*lsd*/ 1},
+                latency_load + latency_alu + latency_store, changes * changes / 4 + changes));
+    p.add(loop("extent", op_mix{/*l*/ 5, 0, 0, 0, 0, /*lsd*/ 3}, n, 2 * latency_alu, velocities,
                latency_alu));
     p.add(
         block("choice", op_mix{/*l*/ 3, /*s*/ 1, 0, 0, 0, /*lsd*/ 4}, 3 * latency_alu, velocities));

@@ -20,9 +20,10 @@ namespace {
 using dsp::span;
 
 struct motion {
-    double s0, v;  // object(t) starts at s0 + v t (px)
+    double s0, v;  // object(t) starts at s0 + v t + a t^2 / 2 (px)
     int size;
-    double start(int t) const { return s0 + v * t; }
+    double a = 0;
+    double start(int t) const { return s0 + v * t + a * t * t / 2; }
     // Dif(t-1,t)'s extent: object(t-1) and object(t).
     span extent(int t) const {
         const double lo = std::fmin(start(t - 1), start(t));
@@ -126,6 +127,36 @@ TEST(WindowAxis, ARimReadAlikeInEveryPairPlacesTheBox) {
     span behind_left = left.object(t - 1);
     behind_left.start += 5;
     EXPECT_NEAR(fit(wl, left.size, behind_left).start, left.start(t), 1.0);
+}
+
+// A ball on a circle slows on one axis as it turns, 2-4 px a pair every
+// pair (a 44 px ball circling at 20 px a frame): one velocity over the
+// window is its speed a pair or two ago, and the box is placed past the
+// ball. Every rim read, the last box on object(t-1).
+TEST(WindowAxis, ASpeedThatChangesEveryPairIsFollowed) {
+    const int t = 8;
+    for (const motion m : {motion{100.3, 30.2, 44, -3.0}, motion{700.6, -40.3, 44, 4.1},
+                           motion{300.0, 5.0, 60, 2.2}, motion{400.4, 20.0, 80, -2.5}}) {
+        const span got = fit(window_at(m, t, 4), m.size, m.object(t - 1));
+        EXPECT_NEAR(got.start, m.start(t), 1.5) << "v " << m.v << ", a " << m.a;
+    }
+}
+
+// Edges read 1 px off from pair to pair (each extent's rounding, or a rim
+// read a pixel short) make every second difference 1 px the same way at a
+// constant velocity: no change of speed, so the fit stays where the
+// motion puts the ball.
+TEST(WindowAxis, AChangeWithinTheRoundingIsNoChangeOfSpeed) {
+    const int t = 8;
+    for (const motion m : {motion{218.0, 8.0, 22}, motion{400.0, -10.0, 30}}) {
+        std::vector<span> w = window_at(m, t, 4);
+        w[0] = shortened(w[0], 1, 0);
+        w[3] = shortened(w[3], 1, 0);
+        w[1] = shortened(w[1], 0, 1);
+        w[2] = shortened(w[2], 0, 1);
+        const span got = fit(w, m.size, m.object(t - 1));
+        EXPECT_NEAR(got.start, m.start(t), 1.0) << "v " << m.v;
+    }
 }
 
 TEST(WindowAxis, FewerThanThreeExtentsAreNotFitted) {
