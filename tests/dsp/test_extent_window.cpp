@@ -157,6 +157,15 @@ TEST(WindowAxis, AChangeWithinTheRoundingIsNoChangeOfSpeed) {
         const span got = fit(w, m.size, m.object(t - 1));
         EXPECT_NEAR(got.start, m.start(t), 1.0) << "v " << m.v;
     }
+    // Three extents hold one second difference an edge: both 2 px the same
+    // way here (the newest and oldest starts and the middle end a pixel
+    // short), which two rims read short make as well as a change of speed.
+    const motion m{218.0, 8.0, 22};
+    std::vector<span> w = window_at(m, t, 3);
+    w[0] = shortened(w[0], 1, 0);
+    w[2] = shortened(w[2], 1, 0);
+    w[1] = shortened(w[1], 0, 1);
+    EXPECT_NEAR(fit(w, m.size, m.object(t - 1)).start, m.start(t), 1.0);
 }
 
 TEST(WindowAxis, FewerThanThreeExtentsAreNotFitted) {
