@@ -45,7 +45,7 @@ struct start_bounds {
 // by 1 px or more and their median by more than 1 px, else 0. One edge's
 // second difference holds the rounding of three extents, up to 2 px: a
 // change of 1 px every pair is within it (a 21 px ball on a circle read
-// 1-2 px, and placed so its box stood 2 px past the ball).
+// 1-2 px, and placed so its box stood 2.5 px past the ball).
 int acceleration2(const span* extents, int count) {
     constexpr int min_change2 = 2, min_median2 = 3;
     if (count < extent_window::capacity) return 0;
