@@ -169,7 +169,7 @@ TEST(WindowAxis, AChangeWithinTheRoundingIsNoChangeOfSpeed) {
 }
 
 // Rims read 1-2 px short in some pairs, at a constant velocity, can make
-// three second differences 1.5-2 px the same way and the fourth none: a
+// three second differences 2-3 px the same way and the fourth none: a
 // change that not every edge shows is not read.
 TEST(WindowAxis, AChangeNotEveryEdgeShowsIsNotRead) {
     const int t = 8;
