@@ -421,9 +421,9 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
         on_trailing_edges(motion.both, fading.x2, fading.y2, size_x, size_y, &object_x, &object_y);
     // A fast object's box from the last pairs' extents (dsp/extent_window.h):
     // across the image at any time, down it only across a fast motion across
-    // it. Its velocity is taken constant over the window, which gravity
-    // breaks along a throw's fall, its bounce reverses within a pair, and
-    // its apex turns (there the window still reads the rise).
+    // it: along a throw's fall gravity changes the speed every pair, its
+    // bounce reverses it within a pair, and at its apex the window still
+    // reads the rise.
     const int fitted = fit_to_window(fast && !part_x, fast_x && !part_y && moved_x > moved_y,
                                      size_x, size_y, last, &object_x, &object_y);
     if (reading) {
