@@ -16,10 +16,13 @@ stereosim_kernel_profile abi_profile(const c64x::kernel_profile& kernel) {
     stereosim_kernel_profile p{};
     p.name = kernel.name;
     p.calls = kernel.calls;
-    p.section_count = static_cast<uint32_t>(kernel.section_count);
+    uint32_t sections = 0;
     for (int i = 0; i < kernel.section_count; ++i) {
         const c64x::loop_profile& in = kernel.sections[i];
-        stereosim_section& out = p.sections[i];
+        // A section entered or run 0 times costs nothing in the model, but
+        // the ABI takes 0 entries as 1 (stereosim_section): not passed on.
+        if (in.entries == 0 || in.iterations == 0) continue;
+        stereosim_section& out = p.sections[sections++];
         out.name = in.name;
         out.ops = {in.ops.l, in.ops.s, in.ops.m, in.ops.d, in.ops.ls, in.ops.lsd};
         out.iterations = in.iterations;
@@ -28,6 +31,7 @@ stereosim_kernel_profile abi_profile(const c64x::kernel_profile& kernel) {
         out.recurrence = in.recurrence;
         out.is_loop = in.is_loop ? 1u : 0u;
     }
+    p.section_count = sections;
     p.stream_count = static_cast<uint32_t>(kernel.traffic_count);
     for (int i = 0; i < kernel.traffic_count; ++i) {
         const c64x::memory_traffic& in = kernel.traffic[i];

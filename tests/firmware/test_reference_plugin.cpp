@@ -11,9 +11,12 @@
 #include <vector>
 
 #include "dsp/controller.h"
+#include "dsp/kernel_costs.h"
 #include "dsp/plugin/reference_firmware.h"
+#include "dsp/plugin/services_hal.h"
 #include "tb/firmware/plugin.h"
 #include "tb/platform/firmware_board.h"
+#include "tb/platform/host/cost_service.h"
 #include "tb/platform/host/firmware_host.h"
 #include "tb/platform/platform_config.h"
 #include "tests/support/host/reference_config.h"
@@ -216,6 +219,24 @@ TEST(ReferencePlugin, RunsAndReportsAMissingCard) {
     tiny.active_cols = 2;  // smaller than any usable image: refused with its line
     EXPECT_EQ(d.create(&s, &tiny, values.data(), error, sizeof error), nullptr);
     EXPECT_STREQ(error, "the image size (2x480) or the buffer placement is not usable");
+}
+
+// A kernel whose profile holds a block entered 0 times (the window fit's
+// second differences over a window of three) costs through the ABI's cost
+// service what it costs in the controller's own model: the ABI takes 0
+// entries as 1, so such a block must not cross it.
+TEST(ReferencePlugin, AKernelCostsThroughTheAbiWhatItCostsInProcess) {
+    const c64x::cost_model model;
+    for (const int extents : {3, 4}) {
+        const c64x::kernel_profile k = dsp::cost::window_fit_profile(extents);
+        c64x::kernel_profile with_empty = k;
+        with_empty.add(c64x::block("never", c64x::op_mix{1, 0, 0, 0, 0, 0}, 5, 0));
+        for (const c64x::kernel_profile& profile : {k, with_empty}) {
+            const stereosim_kernel_profile abi = dsp::plugin::abi_profile(profile);
+            EXPECT_EQ(host::kernel_cycles(model, abi, nullptr), model.cycles(profile))
+                << extents << " extents, " << profile.section_count << " sections";
+        }
+    }
 }
 
 // The .so's host entry over the default scenario (tb/platform/host/
