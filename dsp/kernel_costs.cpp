@@ -525,14 +525,10 @@ kernel_profile window_fit_profile(int extents) {
     kernel_profile p("window_fit");
     p.add(block("sort step", op_mix{/*l*/ 1, /*s*/ 1, 0, /*d*/ 2, 0, /*lsd*/ 1},
                 latency_load + latency_alu + latency_store, steps * steps / 4 + steps));
-    // Only where there are changes to read: a block entered 0 times crosses
-    // the plugin ABI as entered once (stereosim_section.entries).
-    if (changes > 0) {
-        p.add(block("second difference", op_mix{/*l*/ 4, /*s*/ 1, 0, /*d*/ 3, 0, /*lsd*/ 2},
-                    latency_load + 3 * latency_alu, changes));
-        p.add(block("sort change", op_mix{/*l*/ 1, /*s*/ 1, 0, /*d*/ 2, 0, /*lsd*/ 1},
-                    latency_load + latency_alu + latency_store, changes * changes / 4 + changes));
-    }
+    p.add(block("second difference", op_mix{/*l*/ 4, /*s*/ 1, 0, /*d*/ 3, 0, /*lsd*/ 2},
+                latency_load + 3 * latency_alu, changes));
+    p.add(block("sort change", op_mix{/*l*/ 1, /*s*/ 1, 0, /*d*/ 2, 0, /*lsd*/ 1},
+                latency_load + latency_alu + latency_store, changes * changes / 4 + changes));
     p.add(loop("extent", op_mix{/*l*/ 5, 0, 0, 0, 0, /*lsd*/ 3}, n, 2 * latency_alu, velocities,
                latency_alu));
     p.add(
