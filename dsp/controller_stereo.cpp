@@ -222,6 +222,17 @@ void controller::impl::stereo_edge(box object, frame_output& out) {
                                            config.edge.min_disparity)));
 }
 
+namespace {
+
+// The left image's zone matched: the right box at the chosen disparity.
+void place_left_box(stereo_method method, frame_output& out) {
+    out.box_left = out.box_right;
+    out.box_left.x += (out.disparity_q8 + 128) >> 8;
+    if (method == stereo_method::sad) out.box_left.y += out.sad_match.dy;
+}
+
+}  // namespace
+
 bool controller::impl::choose_disparity(frame_output& out) const {
     const bool sad_ok = out.sad_match.valid && !out.sad_at_range_end;
     const bool edge_ok = out.edge_match.valid && !out.edge_at_range_end;
@@ -251,16 +262,22 @@ bool controller::impl::choose_disparity(frame_output& out) const {
     // (6.9 m, beyond the 6 m range) against its true 38 px.
     if (!ok || out.disparity_q8 < far_disparity_q8 || out.disparity_q8 > near_disparity_q8)
         return false;
-    out.box_left = out.box_right;
-    out.box_left.x += (out.disparity_q8 + 128) >> 8;
-    if (config.method == stereo_method::sad) out.box_left.y += out.sad_match.dy;
+    place_left_box(config.method, out);
     return true;
 }
 
-// Stage xyz: the box centre (Q8, from the exact Q1 centre) and the chosen
-// disparity.
+// Stage xyz: the chosen disparity gated against the track's depths
+// (dsp/depth_track.h), then the box centre (Q8, from the exact Q1 centre)
+// and that disparity.
 void controller::impl::xyz(box object, frame_output& out) {
     stage_scope scope(*hardware, stage::xyz, out);
+    const depth_gate_result gated =
+        depth_line.gate(out.disparity_q8, config.rig.principal_offset_q8(), depth_track_params{});
+    scope.charge(cycles_of(cost::depth_track_profile(gated.fitted, gated.replaced)));
+    if (gated.replaced) {
+        out.disparity_q8 = gated.disparity_q8;
+        place_left_box(config.method, out);
+    }
     out.has_point = triangulate(config.rig, object.center_x2() * 128, object.center_y2() * 128,
                                 out.disparity_q8, &out.point);
     scope.charge(cycles_of(cost::triangulate_profile()));
