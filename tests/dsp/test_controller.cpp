@@ -140,8 +140,8 @@ TEST(ControllerStates, BallLeavesTheViewAndComesBack) {
 }
 
 // A new track keeps nothing of the last one: from frame `compare_from` on,
-// the firmware that tracked an object before reports the same states and
-// boxes as one started fresh at frame `from` (its history then full of a
+// the firmware that tracked an object before reports the same states,
+// boxes and disparities as one started fresh at frame `from` (its history then full of a
 // view where nothing moves). Returns the pairs tracked from there.
 namespace {
 
@@ -163,6 +163,11 @@ int expect_same_as_fresh(const scene::scenario& scenario, int from, int compare_
         EXPECT_EQ(a.box_right.y, b.box_right.y) << "frame " << r.index;
         EXPECT_EQ(a.box_right.width, b.box_right.width) << "frame " << r.index;
         EXPECT_EQ(a.box_right.height, b.box_right.height) << "frame " << r.index;
+        // ... and the same depths: nothing of the last track's line (dsp/depth_track.h).
+        EXPECT_EQ(a.has_point, b.has_point) << "frame " << r.index;
+        if (a.has_point && b.has_point) {
+            EXPECT_EQ(a.disparity_q8, b.disparity_q8) << "frame " << r.index;
+        }
     }
     std::printf("compared %d pairs from frame %d, %d of them tracked\n", compared, compare_from,
                 tracked);
