@@ -259,6 +259,33 @@ TEST(ControllerStates, ANewObjectIsSeenAfterTheLastVanished) {
     EXPECT_EQ(p.on, p.asked);
 }
 
+// The still track on the vanished ball's patch of background reports the
+// background's depth (5 m) up to the pair it gives way; the second ball's
+// track, 2.4 m away, reports its own from its first pair with a point: no
+// depth gated against the last track's line (dsp/depth_track.h).
+TEST(ControllerStates, ANewTrackAfterAStillOneReportsItsOwnDepth) {
+    const scene::scenario scenario = host::vanish_then_new_object_scenario();
+    host::stereo_runner runner(scenario, default_config(scenario));
+    const std::vector<host::host_record> records = runner.run(0, scenario.frame_count);
+    int points = 0;
+    double worst_pct = 0.0;
+    for (const host::host_record& r : records) {
+        if (r.index < host::second_object_start_frame() || !r.firmware.has_point) continue;
+        const scene::ball_truth& ball = runner.sequence().truth(r.index)[1];
+        const dsp::box b = ball.right.pixel_box;
+        const dsp::box& got = r.firmware.box_right;
+        const int cx = got.x + got.width / 2, cy = got.y + got.height / 2;
+        if (cx < b.x || cx >= b.right() || cy < b.y || cy >= b.bottom()) continue;
+        ++points;
+        const double err_pct =
+            100.0 * (r.firmware.point.z * 1e-6 / ball.visible_mean_depth_m - 1.0);
+        worst_pct = std::max(worst_pct, std::fabs(err_pct));
+        EXPECT_LE(std::fabs(err_pct), 2.0) << "frame " << r.index;
+    }
+    std::printf("points on the second ball: %d, |depth| max %.2f %%\n", points, worst_pct);
+    EXPECT_GE(points, 20);
+}
+
 // A dropped ball bounces and comes to rest; nothing else moves. Its track
 // is kept, still, to the end of the run (75 pairs and more).
 TEST(ControllerStates, AStoppedObjectKeepsItsTrack) {
