@@ -274,6 +274,7 @@ void controller::impl::xyz(box object, frame_output& out) {
     const depth_gate_result gated =
         depth_line.gate(out.disparity_q8, config.rig.principal_offset_q8(), depth_track_params{});
     scope.charge(cycles_of(cost::depth_track_profile(gated.fitted, gated.replaced)));
+    out.depth_from_track = gated.replaced;
     if (gated.replaced) {
         out.disparity_q8 = gated.disparity_q8;
         place_left_box(config.method, out);
