@@ -286,6 +286,39 @@ TEST(ControllerStates, ANewTrackAfterAStillOneReportsItsOwnDepth) {
     EXPECT_GE(points, 20);
 }
 
+// The track's depths are a line over consecutive pairs: after pairs
+// without a disparity (their left images dark: no match) the line starts
+// again, and the next 8 pairs report their own depths. The ball goes away
+// at 1.5 m/s 4.3 m from the rig, 0.85 % a pair: a line carried over two
+// such pairs would stand two pairs behind it, past the gate (0.6 %).
+TEST(ControllerStates, PairsWithoutADepthStartTheLineAgain) {
+    const scene::scenario scenario = host::vanish_then_new_object_scenario();
+    host::stereo_runner runner(scenario, default_config(scenario));
+    constexpr int gap = 34, gap_pairs = 2;
+    int tracked_before = 0, own_after = 0;
+    for (int n = 0; n < gap + gap_pairs + 8; ++n) {
+        runner.render(n);
+        const bool dark = n >= gap && n < gap + gap_pairs;
+        if (dark) std::fill(runner.raw_left().pixels.begin(), runner.raw_left().pixels.end(), 0);
+        const host::host_record r = runner.process();
+        if (n < gap) {
+            tracked_before += r.firmware.has_point;
+        } else if (dark) {
+            EXPECT_EQ(r.firmware.state, tracker_state::track) << "frame " << n;
+            EXPECT_FALSE(r.firmware.has_point) << "frame " << n;
+        } else {
+            ASSERT_TRUE(r.firmware.has_point) << "frame " << n;
+            EXPECT_FALSE(r.firmware.depth_from_track) << "frame " << n;
+            const double err_pct =
+                100.0 * (r.firmware.point.z * 1e-6 / r.truth.visible_mean_depth_m - 1.0);
+            EXPECT_LE(std::fabs(err_pct), 1.0) << "frame " << n;
+            ++own_after;
+        }
+    }
+    EXPECT_GE(tracked_before, 12);  // a line of 8 pairs and more before the gap
+    EXPECT_EQ(own_after, 8);
+}
+
 // A dropped ball bounces and comes to rest; nothing else moves. Its track
 // is kept, still, to the end of the run (75 pairs and more).
 TEST(ControllerStates, AStoppedObjectKeepsItsTrack) {
