@@ -271,7 +271,7 @@ TEST(ControllerStates, ANewTrackAfterAStillOneReportsItsOwnDepth) {
     double worst_pct = 0.0;
     for (const host::host_record& r : records) {
         if (r.index < host::second_object_start_frame() || !r.firmware.has_point) continue;
-        const scene::ball_truth& ball = runner.sequence().truth(r.index)[1];
+        const scene::ball_truth ball = runner.sequence().truth(r.index)[1];  // truth() is a copy
         const dsp::box b = ball.right.pixel_box;
         const dsp::box& got = r.firmware.box_right;
         const int cx = got.x + got.width / 2, cy = got.y + got.height / 2;
