@@ -1899,6 +1899,71 @@ INSTANTIATE_TEST_SUITE_P(
                     procedural, 40}),
     case_name);
 
+// Held out, round 91: 40 cases drawn at random (seed 91, round 78's
+// envelope: every path, balls 12-240 px wide 2-4 m away, 0.3-5 times the
+// path's speed, half of them spinning 1-10 rev/s about any axis, every
+// backdrop, 24-40 frames) before they were run, on the firmware with the
+// depth gated against the track's line (DepthOnItsLine). Eleven moved
+// faster than 30 px a frame (left out); of the other 29, 27 passed and 2
+// failed (DISABLED_Open). The firmware before the gate passed the same 27
+// and failed the same 2 (its depth maxima on three passing cases higher).
+INSTANTIATE_TEST_SUITE_P(
+    HeldOutSweep91, BoxOnMotion,
+    ::testing::Values(
+        motion_case{"heldout91_00_left163px_2_3m_aloe", 163, 2.3, pass_left, 3.5, 0.0, 'x', aloe,
+                    32},
+        motion_case{"heldout91_01_approach223px_2_5m_8_2rps_x_kodim19", 223, 2.5, approach, 1.2,
+                    8.2, 'x', photo3, 32},
+        motion_case{"heldout91_02_left208px_3_7m_7_3rps_z_teddy", 208, 3.7, pass_left, 4.1, 7.3,
+                    'z', photo4, 32},
+        motion_case{"heldout91_03_enter108px_3_5m_7_2rps_y_kodim23", 108, 3.5, enter, 4.0, 7.2, 'y',
+                    photo2, 32},
+        motion_case{"heldout91_05_pass112px_2_9m_venus", 112, 2.9, pass, 2.8, 0.0, 'x', venus, 32},
+        motion_case{"heldout91_06_back146px_3_6m_aloe", 146, 3.6, circle_back, 2.0, 0.0, 'x', aloe,
+                    40},
+        motion_case{"heldout91_07_enter127px_3_8m_7_0rps_y_tsukuba", 127, 3.8, enter, 4.2, 7.0, 'y',
+                    tsukuba, 24},
+        motion_case{"heldout91_08_recede57px_3_5m_3_8rps_z_kodim23", 57, 3.5, recede, 3.7, 3.8, 'z',
+                    photo2, 40},
+        motion_case{"heldout91_09_left116px_2_1m_kodim23", 116, 2.1, pass_left, 4.2, 0.0, 'x',
+                    photo2, 24},
+        motion_case{"heldout91_13_left128px_2_8m_5_3rps_z_venus", 128, 2.8, pass_left, 4.4, 5.3,
+                    'z', venus, 24},
+        motion_case{"heldout91_14_circle173px_2_5m_1_5rps_z_venus", 173, 2.5, circle, 3.7, 1.5, 'z',
+                    venus, 24},
+        motion_case{"heldout91_17_thrown195px_3_8m_5_5rps_z_cones", 195, 3.8, thrown, 0.4, 5.5, 'z',
+                    photo, 40},
+        motion_case{"heldout91_18_enter141px_2_6m_aloe", 141, 2.6, enter, 2.7, 0.0, 'x', aloe, 24},
+        motion_case{"heldout91_19_back102px_2_1m_kodim19", 102, 2.1, circle_back, 1.0, 0.0, 'x',
+                    photo3, 40},
+        motion_case{"heldout91_20_left62px_2_3m_venus", 62, 2.3, pass_left, 2.3, 0.0, 'x', venus,
+                    40},
+        motion_case{"heldout91_21_circle191px_2_7m_tsukuba", 191, 2.7, circle, 2.8, 0.0, 'x',
+                    tsukuba, 32},
+        motion_case{"heldout91_22_left153px_3_2m_6_1rps_y_kodim23", 153, 3.2, pass_left, 2.7, 6.1,
+                    'y', photo2, 32},
+        motion_case{"heldout91_23_circle66px_3_1m_cones", 66, 3.1, circle, 3.5, 0.0, 'x', photo,
+                    40},
+        motion_case{"heldout91_25_pass234px_3_8m_tsukuba", 234, 3.8, pass, 4.6, 0.0, 'x', tsukuba,
+                    24},
+        motion_case{"heldout91_28_enter132px_2_1m_cones", 132, 2.1, enter, 3.6, 0.0, 'x', photo,
+                    40},
+        motion_case{"heldout91_30_circle146px_3_9m_5_3rps_z_cones", 146, 3.9, circle, 2.7, 5.3, 'z',
+                    photo, 32},
+        motion_case{"heldout91_31_back64px_3_2m_cones", 64, 3.2, circle_back, 1.2, 0.0, 'x', photo,
+                    40},
+        motion_case{"heldout91_32_left129px_2_9m_2_6rps_z_kodim23", 129, 2.9, pass_left, 1.5, 2.6,
+                    'z', photo2, 40},
+        motion_case{"heldout91_33_enter238px_3_2m_2_0rps_z", 238, 3.2, enter, 3.7, 2.0, 'z',
+                    procedural, 40},
+        motion_case{"heldout91_34_left78px_2_5m_7_4rps_x_venus", 78, 2.5, pass_left, 2.9, 7.4, 'x',
+                    venus, 24},
+        motion_case{"heldout91_35_circle115px_3_7m_kodim19", 115, 3.7, circle, 2.1, 0.0, 'x',
+                    photo3, 32},
+        motion_case{"heldout91_37_thrown76px_3_8m_5_7rps_x_cones", 76, 3.8, thrown, 2.1, 5.7, 'x',
+                    photo, 32}),
+    case_name);
+
 // Open: small balls thrown fast 3.5-4 m away, found while looking for the
 // apex cases above. The box centre stays within its bounds, but at one pair
 // near the bounce the depth is off by more than 1 % (23.7 px of disparity
@@ -1983,6 +2048,11 @@ INSTANTIATE_TEST_SUITE_P(
                                   circle_back, 2.1, 5.5, 'y', aloe, 24}),
     case_name);
 
+// Round 91's two held-out failures (HeldOutSweep91), on the depth alone: a
+// 14 px ball going away over cones (1.42 % at one pair) and a 74 px circle
+// over teddy spinning 2.9 rev/s about z (2.92 % at one pair: a depth 1.46 %
+// off the track's line replaced, and the next, 2.45 % off, taken as
+// measured, as two pairs in a row are not gated, dsp/depth_track.h).
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
     ::testing::Values(motion_case{"heldout78_00_circle16px_3_8m_3_3rps_x_kodim23", 16, 3.8, circle,
@@ -2006,7 +2076,11 @@ INSTANTIATE_TEST_SUITE_P(
                       motion_case{"heldout86_23_recede227px_3_0m_teddy", 227, 3.0, recede, 1.0, 0.0,
                                   'x', photo4, 40},
                       motion_case{"heldout86_25_back229px_3_7m_2_4rps_y_tsukuba", 229, 3.7,
-                                  circle_back, 1.0, 2.4, 'y', tsukuba, 40}),
+                                  circle_back, 1.0, 2.4, 'y', tsukuba, 40},
+                      motion_case{"heldout91_10_recede14px_3_8m_cones", 14, 3.8, recede, 2.7, 0.0,
+                                  'x', photo, 32},
+                      motion_case{"heldout91_11_circle74px_3_1m_2_9rps_z_teddy", 74, 3.1, circle,
+                                  2.3, 2.9, 'z', photo4, 40}),
     case_name);
 
 }  // namespace
