@@ -72,6 +72,15 @@ trajectory trajectory::ballistic(vec3 start, vec3 velocity, double start_time_s,
     return t;
 }
 
+trajectory trajectory::rebound(vec3 start, vec3 velocity, double wall_z_m, double restitution,
+                               double start_time_s) {
+    trajectory t = line(start, velocity, start_time_s);
+    t.type = kind::rebound;
+    t.wall_z_m = wall_z_m;
+    t.restitution = restitution;
+    return t;
+}
+
 vec3 trajectory::position(double t_s) const {
     const double tau = elapsed(t_s);
     switch (type) {
@@ -79,6 +88,14 @@ vec3 trajectory::position(double t_s) const {
             return start;
         case kind::line:
             return start + velocity * tau;
+        case kind::rebound: {
+            vec3 p = start + velocity * tau;
+            if (velocity.z > 0.0 && p.z > wall_z_m) {
+                const double contact_s = (wall_z_m - start.z) / velocity.z;
+                p.z = wall_z_m - restitution * velocity.z * (tau - contact_s);
+            }
+            return p;
+        }
         case kind::circle: {
             const double a = phase_rad + angular_speed_rad_s * tau;
             return circle_centre + axis_u * (circle_radius_m * std::cos(a)) +

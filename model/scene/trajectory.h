@@ -15,6 +15,11 @@
 //              horizontal motion continues unchanged; the throw must start
 //              at or above the floor (start.y <= bounce_y). Closed form per flight
 //              (no time stepping): exact to rounding at any t.
+// - rebound:   a line towards a wall facing the rig (a ball thrown against
+//              the wall behind the scene): where the CENTRE reaches
+//              Z = wall_z (the wall's Z minus the radius) the depth speed is
+//              reversed and scaled by the restitution, X and Y go on; the
+//              line must start in front of the wall (start.z <= wall_z).
 #pragma once
 
 #include "model/scene/geometry.h"
@@ -22,12 +27,12 @@
 namespace scene {
 
 struct trajectory {
-    enum class kind { still, line, circle, ballistic };
+    enum class kind { still, line, circle, ballistic, rebound };
 
     kind type = kind::still;
     double start_time_s = 0.0;
-    vec3 start;     // still / line / ballistic: position at start_time_s
-    vec3 velocity;  // line: constant; ballistic: initial, m/s
+    vec3 start;     // still / line / ballistic / rebound: position at start_time_s
+    vec3 velocity;  // line: constant; ballistic, rebound: initial, m/s
 
     vec3 circle_centre;
     vec3 axis_u{1.0, 0.0, 0.0};
@@ -39,7 +44,8 @@ struct trajectory {
     double gravity_m_s2 = 9.81;  // standard gravity, along +Y
     bool has_floor = false;
     double bounce_y_m = 0.0;   // centre Y at contact
-    double restitution = 0.7;  // vertical speed kept at each bounce
+    double restitution = 0.7;  // speed across the floor or wall kept at each bounce
+    double wall_z_m = 0.0;     // rebound: centre Z at contact
 
     static trajectory still(vec3 position);
     static trajectory line(vec3 start, vec3 velocity, double start_time_s = 0.0);
@@ -50,6 +56,9 @@ struct trajectory {
     static trajectory ballistic(vec3 start, vec3 velocity, double start_time_s = 0.0,
                                 bool has_floor = false, double bounce_y_m = 0.0,
                                 double restitution = 0.7);
+    // A line from `start` with `velocity` that bounces back off the wall at wall_z_m.
+    static trajectory rebound(vec3 start, vec3 velocity, double wall_z_m, double restitution,
+                              double start_time_s = 0.0);
 
     vec3 position(double t_s) const;
     // Time since the motion started (0 before it).

@@ -127,6 +127,33 @@ TEST(Trajectory, BouncingMatchesTimeSteppedSimulation) {
     }
 }
 
+// A ball thrown against the wall behind the scene: time-stepped with the
+// depth speed reflected (times the restitution) where the centre crosses the
+// wall, and the contact and a later depth worked out by hand.
+TEST(Trajectory, ReboundOffTheWallMatchesTimeSteppedSimulation) {
+    const vec3 start{0.1, -0.05, 4.0}, velocity{0.5, 0.05, 2.0};
+    const double wall_z = 4.8, e = 0.75, t0 = 0.05;
+    const scene::trajectory t = scene::trajectory::rebound(start, velocity, wall_z, e, t0);
+    EXPECT_LT(distance(t.position(0.0), start), 1e-12);  // rests before it starts
+    // Contact 0.8 m / 2 m/s = 0.4 s after the start; 0.2 s later 0.3 m back.
+    EXPECT_NEAR(t.position(t0 + 0.4).z, wall_z, 1e-12);
+    EXPECT_NEAR(t.position(t0 + 0.6).z, 4.5, 1e-12);
+    EXPECT_NEAR(t.position(t0 + 0.6).x, 0.1 + 0.5 * 0.6, 1e-12);
+    for (double time : {0.2, 0.449, 0.451, 0.7, 1.5}) {
+        vec3 p = start, v = velocity;
+        const double dt = 1e-6;
+        for (long i = 0; i < static_cast<long>((time - t0) / dt + 0.5); ++i) {
+            p = p + v * dt;
+            if (p.z > wall_z && v.z > 0.0) {
+                p.z = wall_z - (p.z - wall_z) * e;
+                v.z = -e * v.z;
+            }
+        }
+        EXPECT_LT(distance(t.position(time), p), 1e-5) << time;
+        EXPECT_LE(t.position(time).z, wall_z + 1e-12) << time;
+    }
+}
+
 TEST(DefaultScenario, StillThenMovesIn3DInsideBothViews) {
     const int still = 6;
     const scene::scenario s = scene::default_scenario(still);
