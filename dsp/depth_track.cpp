@@ -9,7 +9,8 @@ namespace {
 constexpr uint64_t depth_scale = uint64_t{1} << 32;  // depth units: 2^32 / Q8 disparity
 
 // The least-squares line and quadratic through depths[0..n) at x = 0..n-1
-// (n >= 3), by the discrete orthogonal polynomials P0 = 1, P1 = 2x - (n-1)
+// (n >= 4, the F test's residuals n - 3 degrees of freedom), by the discrete
+// orthogonal polynomials P0 = 1, P1 = 2x - (n-1)
 // and P2 = 6x^2 - 6(n-1)x + (n-1)(n-2), whose squares sum to n, n(n^2-1)/3
 // and n(n^2-1)(n^2-4)/5: with S_k = sum P_k(x) y, the line at x is
 // (S0 (n^2-1)(n^2-4) + 3 S1 P1(x) (n^2-4)) / scale, the quadratic that plus
@@ -35,7 +36,7 @@ constexpr int64_t residual_unit = 4096;
 // The curvature's F statistic over the quadratic's residuals,
 // F = (RSS_line - RSS_quad) / (RSS_quad / (n - 3)), against f_critical:
 // the quadratic is taken only where its term stands out of the noise.
-bool curvature_stands_out(const uint32_t* depths, depth_fit& fit, int f_critical) {
+void test_curvature(const uint32_t* depths, depth_fit& fit, int f_critical) {
     fit.curved = true;
     int64_t rss_quad = 0, rss_curvature = 0;
     for (int64_t x = 0; x < fit.n; ++x) {
@@ -44,7 +45,6 @@ bool curvature_stands_out(const uint32_t* depths, depth_fit& fit, int f_critical
         rss_quad += r * r, rss_curvature += c * c;
     }
     fit.curved = rss_curvature * (fit.n - 3) > int64_t{f_critical} * rss_quad;
-    return fit.curved;
 }
 
 depth_fit fit_depths(const uint32_t* depths, int n, int f_critical) {
@@ -55,7 +55,7 @@ depth_fit fit_depths(const uint32_t* depths, int n, int f_critical) {
         f.s1 += (2 * x - (n - 1)) * depths[x];
         f.s2 += f.p2(x) * depths[x];
     }
-    curvature_stands_out(depths, f, f_critical);
+    test_curvature(depths, f, f_critical);
     return f;
 }
 
