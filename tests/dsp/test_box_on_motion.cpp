@@ -2101,6 +2101,56 @@ INSTANTIATE_TEST_SUITE_P(
         motion_case{"orbit_far90px_2_2m_3rps_z_aloe", 90, 2.2, orbit_far, 2.5, 3.0, 'z', aloe, 28}),
     case_name);
 
+// Held out, round 92: 20 balls whose depth turns, drawn at random (seed
+// 92, a script outside the tree) after the bounce and the curvature were
+// kept and committed before they were run: 10 thrown at the wall (20-120
+// px, from 3.3-4.5 m at 1-4 m/s, sideways at up to 200 px over the run)
+// and 10 swung round (20-150 px, 2-3 m, 1-3 times the circle's speed), on
+// the eight backgrounds, 60 % spinning at 0.5-8 rev/s.
+INSTANTIATE_TEST_SUITE_P(
+    HeldOutTurns92, BoxOnMotion,
+    ::testing::Values(motion_case{"heldout92_00_rebound54px_4_3m_3_9mps_4_6rps_z_venus", 54, 4.3,
+                                  rebound, 0.9, 4.6, 'z', venus, 21, 0.0, 3.9},
+                      motion_case{"heldout92_01_orbit_near106px_2_1m_2_7x_aloe", 106, 2.1,
+                                  orbit_near, 2.7, 0.0, 'x', aloe, 25},
+                      motion_case{"heldout92_02_rebound40px_4_2m_2_4mps_1_7rps_z_kodim23", 40, 4.2,
+                                  rebound, 0.9, 1.7, 'z', photo2, 27, 0.0, 2.4},
+                      motion_case{"heldout92_03_orbit_near37px_2_4m_1_8x_7_6rps_y_cones", 37, 2.4,
+                                  orbit_near, 1.8, 7.6, 'y', photo, 29},
+                      motion_case{"heldout92_04_rebound96px_3_5m_1_7mps_5_7rps_x_teddy", 96, 3.5,
+                                  rebound, 0.8, 5.7, 'x', photo4, 46, 0.0, 1.7},
+                      motion_case{"heldout92_05_orbit_far94px_2_3m_3_0x", 94, 2.3, orbit_far, 3.0,
+                                  0.0, 'y', procedural, 24},
+                      motion_case{"heldout92_06_rebound87px_3_4m_2_1mps_7_2rps_z_cones", 87, 3.4,
+                                  rebound, 0.8, 7.2, 'z', photo, 43, 0.0, 2.1},
+                      motion_case{"heldout92_07_orbit_far146px_2_5m_1_6x_1_2rps_z_tsukuba", 146,
+                                  2.5, orbit_far, 1.6, 1.2, 'z', tsukuba, 31},
+                      motion_case{"heldout92_08_rebound91px_4_0m_3_9mps_6_1rps_x_tsukuba", 91, 4.0,
+                                  rebound, 1.1, 6.1, 'x', tsukuba, 24, 0.0, 3.9},
+                      motion_case{"heldout92_09_orbit_near55px_2_7m_2_2x_0_6rps_x_kodim23", 55, 2.7,
+                                  orbit_near, 2.2, 0.6, 'x', photo2, 27},
+                      motion_case{"heldout92_10_rebound84px_3_7m_2_6mps_6_6rps_x_aloe", 84, 3.7,
+                                  rebound, 0.4, 6.6, 'x', aloe, 33, 0.0, 2.6},
+                      motion_case{"heldout92_11_orbit_near76px_2_4m_1_8x_4_6rps_z_venus", 76, 2.4,
+                                  orbit_near, 1.8, 4.6, 'z', venus, 29},
+                      motion_case{"heldout92_12_rebound102px_4_5m_2_2mps_teddy", 102, 4.5, rebound,
+                                  1.1, 0.0, 'x', photo4, 19, 0.0, 2.2},
+                      motion_case{"heldout92_13_orbit_far106px_2_2m_2_2x_1_0rps_z_kodim23", 106,
+                                  2.2, orbit_far, 2.2, 1.0, 'z', photo2, 27},
+                      motion_case{"heldout92_14_rebound102px_3_7m_1_0mps_venus", 102, 3.7, rebound,
+                                  0.7, 0.0, 'x', venus, 59, 0.0, 1.0},
+                      motion_case{"heldout92_15_orbit_near37px_2_9m_2_6x_kodim23", 37, 2.9,
+                                  orbit_near, 2.6, 0.0, 'y', photo2, 25},
+                      motion_case{"heldout92_16_rebound69px_3_8m_3_4mps_3_0rps_x_venus", 69, 3.8,
+                                  rebound, 0.4, 3.0, 'x', venus, 28, 0.0, 3.4},
+                      motion_case{"heldout92_17_orbit_far113px_2_5m_2_8x_4_3rps_x_teddy", 113, 2.5,
+                                  orbit_far, 2.8, 4.3, 'x', photo4, 24},
+                      motion_case{"heldout92_18_rebound61px_4_0m_3_1mps_tsukuba", 61, 4.0, rebound,
+                                  0.6, 0.0, 'y', tsukuba, 27, 0.0, 3.1},
+                      motion_case{"heldout92_19_orbit_far128px_2_9m_1_9x_kodim23", 128, 2.9,
+                                  orbit_far, 1.9, 0.0, 'z', photo2, 28}),
+    case_name);
+
 // Open on the depth alone at one pair until a pair's depth off the track's
 // line is reported at the line (dsp/depth_track.h; chosen on the per-pair
 // depths of every box case, these among them): round 78's 21 px ball
