@@ -2151,6 +2151,55 @@ INSTANTIATE_TEST_SUITE_P(
                                   orbit_far, 1.9, 0.0, 'z', photo2, 28}),
     case_name);
 
+// Held out, round 93: 12 balls whose depth turns (6 thrown at the wall, 6
+// swung round, round 92's envelope) and 8 going away from or coming nearer
+// the rig (20-200 px from 2-4 m, 0.3-5 times the path's speed), drawn at
+// random (seed 93, a script outside the tree) and committed before they
+// were run, after round 92 had been used to change the rules.
+INSTANTIATE_TEST_SUITE_P(
+    HeldOutTurns93, BoxOnMotion,
+    ::testing::Values(motion_case{"heldout93_00_rebound31px_3_7m_1_5mps_5_9rps_x_aloe", 31, 3.7,
+                                  rebound, 0.4, 5.9, 'x', aloe, 49, 0.0, 1.5},
+                      motion_case{"heldout93_01_orbit_near114px_2_4m_1_2x_7_2rps_z", 114, 2.4,
+                                  orbit_near, 1.2, 7.2, 'z', procedural, 36},
+                      motion_case{"heldout93_02_rebound103px_4_5m_1_5mps_5_4rps_x_cones", 103, 4.5,
+                                  rebound, 0.6, 5.4, 'x', photo, 21, 0.0, 1.5},
+                      motion_case{"heldout93_03_orbit_far36px_2_1m_1_3x_tsukuba", 36, 2.1,
+                                  orbit_far, 1.3, 0.0, 'y', tsukuba, 34},
+                      motion_case{"heldout93_04_rebound21px_3_5m_3_3mps_1_1rps_y_cones", 21, 3.5,
+                                  rebound, 0.8, 1.1, 'y', photo, 33, 0.0, 3.3},
+                      motion_case{"heldout93_05_orbit_near42px_2_5m_2_9x_7_2rps_z_tsukuba", 42, 2.5,
+                                  orbit_near, 2.9, 7.2, 'z', tsukuba, 24},
+                      motion_case{"heldout93_06_rebound52px_4_1m_3_5mps_5_4rps_z_kodim23", 52, 4.1,
+                                  rebound, 0.6, 5.4, 'z', photo2, 24, 0.0, 3.5},
+                      motion_case{"heldout93_07_orbit_near127px_2_5m_1_0x", 127, 2.5, orbit_near,
+                                  1.0, 0.0, 'x', procedural, 40},
+                      motion_case{"heldout93_08_rebound72px_4_4m_4_0mps_aloe", 72, 4.4, rebound,
+                                  1.1, 0.0, 'z', aloe, 20, 0.0, 4.0},
+                      motion_case{"heldout93_09_orbit_far30px_2_4m_1_3x_kodim23", 30, 2.4,
+                                  orbit_far, 1.3, 0.0, 'x', photo2, 34},
+                      motion_case{"heldout93_10_rebound26px_3_9m_2_8mps_2_9rps_y_cones", 26, 3.9,
+                                  rebound, 0.9, 2.9, 'y', photo, 31, 0.0, 2.8},
+                      motion_case{"heldout93_11_orbit_near92px_2_1m_1_5x_4_8rps_y_venus", 92, 2.1,
+                                  orbit_near, 1.5, 4.8, 'y', venus, 32},
+                      motion_case{"heldout93_12_approach114px_3_0m_1_9x", 114, 3.0, approach, 1.9,
+                                  0.0, 'z', procedural, 40},
+                      motion_case{"heldout93_13_approach170px_3_2m_0_7x", 170, 3.2, approach, 0.7,
+                                  0.0, 'z', procedural, 24},
+                      motion_case{"heldout93_14_recede132px_3_1m_0_7x_teddy", 132, 3.1, recede, 0.7,
+                                  0.0, 'z', photo4, 32},
+                      motion_case{"heldout93_15_approach56px_4_0m_4_6x_kodim23", 56, 4.0, approach,
+                                  4.6, 0.0, 'z', photo2, 40},
+                      motion_case{"heldout93_16_recede66px_2_6m_2_1x_4_1rps_y_kodim19", 66, 2.6,
+                                  recede, 2.1, 4.1, 'y', photo3, 24},
+                      motion_case{"heldout93_17_approach124px_2_1m_2_3x_3_7rps_y_aloe", 124, 2.1,
+                                  approach, 2.3, 3.7, 'y', aloe, 40},
+                      motion_case{"heldout93_18_recede172px_2_4m_1_8x_1_4rps_x_tsukuba", 172, 2.4,
+                                  recede, 1.8, 1.4, 'x', tsukuba, 40},
+                      motion_case{"heldout93_19_recede76px_2_6m_2_7x_kodim23", 76, 2.6, recede, 2.7,
+                                  0.0, 'y', photo2, 40}),
+    case_name);
+
 // Open on the depth alone at one pair until a pair's depth off the track's
 // line is reported at the line (dsp/depth_track.h; chosen on the per-pair
 // depths of every box case, these among them): round 78's 21 px ball
