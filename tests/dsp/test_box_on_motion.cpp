@@ -2106,7 +2106,10 @@ INSTANTIATE_TEST_SUITE_P(
 // kept and committed before they were run: 10 thrown at the wall (20-120
 // px, from 3.3-4.5 m at 1-4 m/s, sideways at up to 200 px over the run)
 // and 10 swung round (20-150 px, 2-3 m, 1-3 times the circle's speed), on
-// the eight backgrounds, 60 % spinning at 0.5-8 rev/s.
+// the eight backgrounds, 60 % spinning at 0.5-8 rev/s. 14 passed, 6 failed
+// (DISABLED_Open); on the line 7 passed, with nothing replaced 17. Used
+// since to try a rule (docs/firmware.md, "A depth that turns"), so no
+// longer held out.
 INSTANTIATE_TEST_SUITE_P(
     HeldOutTurns92, BoxOnMotion,
     ::testing::Values(motion_case{"heldout92_00_rebound54px_4_3m_3_9mps_4_6rps_z_venus", 54, 4.3,
@@ -2117,34 +2120,22 @@ INSTANTIATE_TEST_SUITE_P(
                                   rebound, 0.9, 1.7, 'z', photo2, 27, 0.0, 2.4},
                       motion_case{"heldout92_03_orbit_near37px_2_4m_1_8x_7_6rps_y_cones", 37, 2.4,
                                   orbit_near, 1.8, 7.6, 'y', photo, 29},
-                      motion_case{"heldout92_04_rebound96px_3_5m_1_7mps_5_7rps_x_teddy", 96, 3.5,
-                                  rebound, 0.8, 5.7, 'x', photo4, 46, 0.0, 1.7},
                       motion_case{"heldout92_05_orbit_far94px_2_3m_3_0x", 94, 2.3, orbit_far, 3.0,
                                   0.0, 'y', procedural, 24},
-                      motion_case{"heldout92_06_rebound87px_3_4m_2_1mps_7_2rps_z_cones", 87, 3.4,
-                                  rebound, 0.8, 7.2, 'z', photo, 43, 0.0, 2.1},
                       motion_case{"heldout92_07_orbit_far146px_2_5m_1_6x_1_2rps_z_tsukuba", 146,
                                   2.5, orbit_far, 1.6, 1.2, 'z', tsukuba, 31},
                       motion_case{"heldout92_08_rebound91px_4_0m_3_9mps_6_1rps_x_tsukuba", 91, 4.0,
                                   rebound, 1.1, 6.1, 'x', tsukuba, 24, 0.0, 3.9},
-                      motion_case{"heldout92_09_orbit_near55px_2_7m_2_2x_0_6rps_x_kodim23", 55, 2.7,
-                                  orbit_near, 2.2, 0.6, 'x', photo2, 27},
                       motion_case{"heldout92_10_rebound84px_3_7m_2_6mps_6_6rps_x_aloe", 84, 3.7,
                                   rebound, 0.4, 6.6, 'x', aloe, 33, 0.0, 2.6},
                       motion_case{"heldout92_11_orbit_near76px_2_4m_1_8x_4_6rps_z_venus", 76, 2.4,
                                   orbit_near, 1.8, 4.6, 'z', venus, 29},
                       motion_case{"heldout92_12_rebound102px_4_5m_2_2mps_teddy", 102, 4.5, rebound,
                                   1.1, 0.0, 'x', photo4, 19, 0.0, 2.2},
-                      motion_case{"heldout92_13_orbit_far106px_2_2m_2_2x_1_0rps_z_kodim23", 106,
-                                  2.2, orbit_far, 2.2, 1.0, 'z', photo2, 27},
-                      motion_case{"heldout92_14_rebound102px_3_7m_1_0mps_venus", 102, 3.7, rebound,
-                                  0.7, 0.0, 'x', venus, 59, 0.0, 1.0},
                       motion_case{"heldout92_15_orbit_near37px_2_9m_2_6x_kodim23", 37, 2.9,
                                   orbit_near, 2.6, 0.0, 'y', photo2, 25},
                       motion_case{"heldout92_16_rebound69px_3_8m_3_4mps_3_0rps_x_venus", 69, 3.8,
                                   rebound, 0.4, 3.0, 'x', venus, 28, 0.0, 3.4},
-                      motion_case{"heldout92_17_orbit_far113px_2_5m_2_8x_4_3rps_x_teddy", 113, 2.5,
-                                  orbit_far, 2.8, 4.3, 'x', photo4, 24},
                       motion_case{"heldout92_18_rebound61px_4_0m_3_1mps_tsukuba", 61, 4.0, rebound,
                                   0.6, 0.0, 'y', tsukuba, 27, 0.0, 3.1},
                       motion_case{"heldout92_19_orbit_far128px_2_9m_1_9x_kodim23", 128, 2.9,
@@ -2155,29 +2146,22 @@ INSTANTIATE_TEST_SUITE_P(
 // swung round, round 92's envelope) and 8 going away from or coming nearer
 // the rig (20-200 px from 2-4 m, 0.3-5 times the path's speed), drawn at
 // random (seed 93, a script outside the tree) and committed before they
-// were run, after round 92 had been used to change the rules.
+// were run, after round 92 had been used to try a rule. 15 passed, 5
+// failed (DISABLED_Open); on the line 14 passed, with nothing replaced 16.
 INSTANTIATE_TEST_SUITE_P(
     HeldOutTurns93, BoxOnMotion,
     ::testing::Values(motion_case{"heldout93_00_rebound31px_3_7m_1_5mps_5_9rps_x_aloe", 31, 3.7,
                                   rebound, 0.4, 5.9, 'x', aloe, 49, 0.0, 1.5},
                       motion_case{"heldout93_01_orbit_near114px_2_4m_1_2x_7_2rps_z", 114, 2.4,
                                   orbit_near, 1.2, 7.2, 'z', procedural, 36},
-                      motion_case{"heldout93_02_rebound103px_4_5m_1_5mps_5_4rps_x_cones", 103, 4.5,
-                                  rebound, 0.6, 5.4, 'x', photo, 21, 0.0, 1.5},
                       motion_case{"heldout93_03_orbit_far36px_2_1m_1_3x_tsukuba", 36, 2.1,
                                   orbit_far, 1.3, 0.0, 'y', tsukuba, 34},
-                      motion_case{"heldout93_04_rebound21px_3_5m_3_3mps_1_1rps_y_cones", 21, 3.5,
-                                  rebound, 0.8, 1.1, 'y', photo, 33, 0.0, 3.3},
                       motion_case{"heldout93_05_orbit_near42px_2_5m_2_9x_7_2rps_z_tsukuba", 42, 2.5,
                                   orbit_near, 2.9, 7.2, 'z', tsukuba, 24},
                       motion_case{"heldout93_06_rebound52px_4_1m_3_5mps_5_4rps_z_kodim23", 52, 4.1,
                                   rebound, 0.6, 5.4, 'z', photo2, 24, 0.0, 3.5},
                       motion_case{"heldout93_07_orbit_near127px_2_5m_1_0x", 127, 2.5, orbit_near,
                                   1.0, 0.0, 'x', procedural, 40},
-                      motion_case{"heldout93_08_rebound72px_4_4m_4_0mps_aloe", 72, 4.4, rebound,
-                                  1.1, 0.0, 'z', aloe, 20, 0.0, 4.0},
-                      motion_case{"heldout93_09_orbit_far30px_2_4m_1_3x_kodim23", 30, 2.4,
-                                  orbit_far, 1.3, 0.0, 'x', photo2, 34},
                       motion_case{"heldout93_10_rebound26px_3_9m_2_8mps_2_9rps_y_cones", 26, 3.9,
                                   rebound, 0.9, 2.9, 'y', photo, 31, 0.0, 2.8},
                       motion_case{"heldout93_11_orbit_near92px_2_1m_1_5x_4_8rps_y_venus", 92, 2.1,
@@ -2186,8 +2170,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.0, 'z', procedural, 40},
                       motion_case{"heldout93_13_approach170px_3_2m_0_7x", 170, 3.2, approach, 0.7,
                                   0.0, 'z', procedural, 24},
-                      motion_case{"heldout93_14_recede132px_3_1m_0_7x_teddy", 132, 3.1, recede, 0.7,
-                                  0.0, 'z', photo4, 32},
                       motion_case{"heldout93_15_approach56px_4_0m_4_6x_kodim23", 56, 4.0, approach,
                                   4.6, 0.0, 'z', photo2, 40},
                       motion_case{"heldout93_16_recede66px_2_6m_2_1x_4_1rps_y_kodim19", 66, 2.6,
@@ -2236,6 +2218,15 @@ INSTANTIATE_TEST_SUITE_P(
 // 4.3 m, its measured depth 1.05 % far at its last pair, 14 pairs after
 // its bounce, not gated (not traced; with nothing replaced the same 1.05 %,
 // on the line 0.94 %).
+// Held-out rounds 92 and 93's failures (HeldOutTurns92, HeldOutTurns93):
+// on the depth, a 30 px and three 55-113 px balls swung round (1.01-1.44 %,
+// depths the fit replaced: each passes with nothing replaced), a 103 px
+// ball thrown at the wall from 4.5 m (1.38 %, replaced; passes with nothing
+// replaced) and an 87 px one over cones (2.43 %, its box 7.94 px off too);
+// on the box, balls of 21-96 px thrown at the wall (6.58-21.18 px at one
+// pair; the 96 px one's depth 12.8 % with it), a 132 px ball going away
+// (31.95 px) and a 102 px ball thrown slowly over venus (mean 4.09 px over
+// 53 pairs, depth 2.00 %).
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
     ::testing::Values(motion_case{"heldout78_00_circle16px_3_8m_3_3rps_x_kodim23", 16, 3.8, circle,
@@ -2265,7 +2256,29 @@ INSTANTIATE_TEST_SUITE_P(
                       motion_case{"heldout91_11_circle74px_3_1m_2_9rps_z_teddy", 74, 3.1, circle,
                                   2.3, 2.9, 'z', photo4, 40},
                       motion_case{"rebound25px_1_5mps_4_3m_teddy", 25, 4.3, rebound, 0.5, 0.0, 'x',
-                                  photo4, 34, 0.0, 1.5}),
+                                  photo4, 34, 0.0, 1.5},
+                      motion_case{"heldout92_04_rebound96px_3_5m_1_7mps_5_7rps_x_teddy", 96, 3.5,
+                                  rebound, 0.8, 5.7, 'x', photo4, 46, 0.0, 1.7},
+                      motion_case{"heldout92_06_rebound87px_3_4m_2_1mps_7_2rps_z_cones", 87, 3.4,
+                                  rebound, 0.8, 7.2, 'z', photo, 43, 0.0, 2.1},
+                      motion_case{"heldout92_09_orbit_near55px_2_7m_2_2x_0_6rps_x_kodim23", 55, 2.7,
+                                  orbit_near, 2.2, 0.6, 'x', photo2, 27},
+                      motion_case{"heldout92_13_orbit_far106px_2_2m_2_2x_1_0rps_z_kodim23", 106,
+                                  2.2, orbit_far, 2.2, 1.0, 'z', photo2, 27},
+                      motion_case{"heldout92_14_rebound102px_3_7m_1_0mps_venus", 102, 3.7, rebound,
+                                  0.7, 0.0, 'x', venus, 59, 0.0, 1.0},
+                      motion_case{"heldout92_17_orbit_far113px_2_5m_2_8x_4_3rps_x_teddy", 113, 2.5,
+                                  orbit_far, 2.8, 4.3, 'x', photo4, 24},
+                      motion_case{"heldout93_02_rebound103px_4_5m_1_5mps_5_4rps_x_cones", 103, 4.5,
+                                  rebound, 0.6, 5.4, 'x', photo, 21, 0.0, 1.5},
+                      motion_case{"heldout93_04_rebound21px_3_5m_3_3mps_1_1rps_y_cones", 21, 3.5,
+                                  rebound, 0.8, 1.1, 'y', photo, 33, 0.0, 3.3},
+                      motion_case{"heldout93_08_rebound72px_4_4m_4_0mps_aloe", 72, 4.4, rebound,
+                                  1.1, 0.0, 'z', aloe, 20, 0.0, 4.0},
+                      motion_case{"heldout93_09_orbit_far30px_2_4m_1_3x_kodim23", 30, 2.4,
+                                  orbit_far, 1.3, 0.0, 'x', photo2, 34},
+                      motion_case{"heldout93_14_recede132px_3_1m_0_7x_teddy", 132, 3.1, recede, 0.7,
+                                  0.0, 'z', photo4, 32}),
     case_name);
 
 }  // namespace
