@@ -110,7 +110,6 @@ depth_gate_result depth_track::gate(int64_t disparity_q8, int64_t offset_q8,
     const uint32_t* history = m_depth + (m_count - n);
     const depth_fit fit = fit_depths(history, n, params.curvature_f);
     r.fitted = n;
-    r.curved = fit.curved;
     for (int x = 0; x < n; ++x)
         if (off_line(int64_t{history[x]} * fit.scale(), fit.at(x), params.gate_per_mille)) {
             push(depth);

@@ -68,7 +68,6 @@ struct depth_track_params {
 struct depth_gate_result {
     int64_t disparity_q8 = 0;  // the disparity to report (Q8, with the principal offset)
     int fitted = 0;            // pairs the fit was made on (0: too few, not fitted)
-    bool curved = false;       // fitted with the quadratic (its curvature stood out)
     bool replaced = false;     // the fit's value stands for the measured one
     bool turned = false;       // off the fit as a bounce puts it: measured, the fit restarts
 };
