@@ -190,7 +190,6 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
                 s.measured_disparity_q8 = s.sized_disparity_q8 = s.key_sized_q8 = 0;
                 s.size_from_key = false;
                 s.still_pairs = 0;
-                s.depth_line.clear();
             }
             break;
         case tracker_state::track:
@@ -219,14 +218,11 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
     out.box_right = s.tracker.position();
     s.stereo_sad(out.box_right, outlined, out);
     s.stereo_edge(out.box_right, out);
-    if (!s.choose_disparity(out)) {
-        s.depth_line.clear();  // the track's depths are a line over consecutive pairs only
-        return out;
-    }
+    if (!s.choose_disparity(out)) return out;
     // For the next pair's size (dsp/size_at_depth.h): the part of the
     // disparity inversely proportional to depth.
     s.measured_disparity_q8 = out.disparity_q8 - cfg.rig.principal_offset_q8();
-    s.xyz(out.box_right, out);  // the disparity gated against the track's depths first
+    s.xyz(out.box_right, out);
     // A key taken, and the window's extents read, before the track had a
     // disparity (at its detection) stand for the first one measured.
     if (s.key.valid() && s.key_sized_q8 <= 0) s.key_sized_q8 = s.measured_disparity_q8;

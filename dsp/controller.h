@@ -205,10 +205,6 @@ struct frame_output {
     bool sad_at_range_end = false;
     bool edge_at_range_end = false;
     int32_t disparity_q8 = 0;  // the disparity the point was triangulated from
-    // ... the track's fit's, where the pair's own match was off it
-    // (dsp/depth_track.h): this pair's depth was not measured. The
-    // reference firmware's own (the ABI's result does not carry it).
-    bool depth_from_track = false;
     bool has_point = false;
     point3_um point;         // right camera frame, micrometres
     uint16_t gain_q8 = 256;  // brightness compensation, both images (the right one's mean)

@@ -266,19 +266,11 @@ bool controller::impl::choose_disparity(frame_output& out) const {
     return true;
 }
 
-// Stage xyz: the chosen disparity gated against the track's depths
-// (dsp/depth_track.h), then the box centre (Q8, from the exact Q1 centre)
-// and that disparity.
+// Stage xyz: the box centre (Q8, from the exact Q1 centre) and the chosen
+// disparity, as measured: a depth gated against the track's fitted depths
+// passed fewer fresh box cases (docs/firmware.md, "The measured depth").
 void controller::impl::xyz(box object, frame_output& out) {
     stage_scope scope(*hardware, stage::xyz, out);
-    const depth_gate_result gated =
-        depth_line.gate(out.disparity_q8, config.rig.principal_offset_q8(), depth_track_params{});
-    scope.charge(cycles_of(cost::depth_track_profile(gated.fitted, gated.replaced)));
-    out.depth_from_track = gated.replaced;
-    if (gated.replaced) {
-        out.disparity_q8 = gated.disparity_q8;
-        place_left_box(config.method, out);
-    }
     out.has_point = triangulate(config.rig, object.center_x2() * 128, object.center_y2() * 128,
                                 out.disparity_q8, &out.point);
     scope.charge(cycles_of(cost::triangulate_profile()));

@@ -542,40 +542,6 @@ kernel_profile window_fit_profile(int extents) {
     return p;
 }
 
-kernel_profile depth_track_profile(int fitted, bool replaced) {
-    // dsp/depth_track.h: the depth 2^32 / (d - offset) (__divull, ~20
-    // quotient bits: a depth unit of 1e6 at 16 px) and its push (the
-    // history moved down a place: a load and a store a pair, capacity 16).
-    // Fitted on n pairs: the three sums (a load, P1 and P2 stepped by ADDs,
-    // two products by them and three 64-bit ADDs a pair); the F test's two
-    // residual sums (the quadratic at x: three MPYs and two ADDs; the depth
-    // scaled, the difference, two shifts, two 64-bit squares and sums) and
-    // its compare; each pair against the fit (the fit at x, the depth scaled,
-    // the difference, its absolute value and the gate's two MPYs and compare;
-    // 64-bit, so each ALU op an ADD and an ADDU); the next value's division
-    // (__divull, ~20 bits), its gate and the bounce's range (a step, a
-    // margin's MPY, four compares). Replaced: 2^32 / the fit back to a
-    // disparity (__divull, ~14 bits).
-    const uint32_t n = static_cast<uint32_t>(non_negative(fitted));
-    kernel_profile p("depth_track");
-    p.add_call(c64x::software_divide(20, true));
-    p.add(block("history push", op_mix{0, 0, 0, /*d*/ 2, 0, /*lsd*/ 1},
-                latency_load + latency_store, 16));
-    if (n > 0) {
-        p.add(block("fit sums", op_mix{/*l*/ 8, 0, /*m*/ 4, /*d*/ 1, 0, /*lsd*/ 6},
-                    latency_load + latency_mpy16 + latency_alu, n));
-        p.add(block("curvature test", op_mix{/*l*/ 8, /*s*/ 4, /*m*/ 12, 0, 0, /*lsd*/ 10},
-                    3 * latency_mpy16 + 3 * latency_alu, n));
-        p.add(block("against the fit", op_mix{/*l*/ 6, /*s*/ 2, /*m*/ 10, /*d*/ 1, 0, /*lsd*/ 6},
-                    latency_load + 2 * latency_mpy16 + 3 * latency_alu, n + 1));
-        p.add(block("bounce's range", op_mix{/*l*/ 6, 0, /*m*/ 4, 0, 0, /*lsd*/ 4},
-                    latency_mpy16 + 2 * latency_alu));
-        p.add_call(c64x::software_divide(20, true));
-    }
-    if (replaced) p.add_call(c64x::software_divide(14, true));
-    return p;
-}
-
 kernel_profile triangulate_profile() {
     // f_px = f / pitch (__divu, 18 quotient bits: 789.5 px in Q8), then
     // D = s f_px / (d - dcx), X = D x / f_px, Y = D y / f_px with 64-bit

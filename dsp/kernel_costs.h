@@ -120,7 +120,6 @@ c64x::kernel_profile window_step_profile(int extents);
 c64x::kernel_profile detection_steps_profile();
 c64x::kernel_profile size_at_depth_profile(int divides);
 c64x::kernel_profile round_box_profile();
-c64x::kernel_profile depth_track_profile(int fitted, bool replaced);
 c64x::kernel_profile triangulate_profile();
 
 }  // namespace dsp::cost

@@ -1944,7 +1944,7 @@ INSTANTIATE_TEST_SUITE_P(
 // envelope: every path, balls 12-240 px wide 2-4 m away, 0.3-5 times the
 // path's speed, half of them spinning 1-10 rev/s about any axis, every
 // backdrop, 24-40 frames) before they were run, on the firmware with the
-// depth gated against the track's line (DepthOnItsLine). Eleven moved
+// depth gated against the track's line (since removed). Eleven moved
 // faster than 30 px a frame (left out); of the other 29, 27 passed and 2
 // failed (DISABLED_Open). The firmware before the gate passed the same 27
 // and failed the same 2 (its depth maxima on three passing cases higher).
@@ -2035,13 +2035,15 @@ INSTANTIATE_TEST_SUITE_P(
 // ball going away 24.5 px off before it reaches the
 // background plane, its tracker's box held at 153 x 151 px while it shrank
 // (the 44 px and 46 px ones pass: ReachKeptRound; the 174 px one since
-// DepthOnItsLine).
+// the depth gate, open again since it was removed: DISABLED_Open).
 // Round 84's seven held-out failures (HeldOutSweep84): four balls going
 // away (85-158 px) 7.3-26.4 px off near the background plane, their boxes
 // grown on both axes at once (two pass: ReachEndConfirmed; the 157 px one
-// over tsukuba failed on the depth alone, 1.01 %, and passes: DepthOnItsLine;
+// over tsukuba failed on the depth alone, 1.01 %, passed with the depth
+// gate and is open again without it;
 // the 129 px one over teddy passes: ReachJudgedWithoutTheRefused); a 44 px
-// circle over aloe (9.36 px, depth 1.93 %; passes: DepthOnItsLine), a 34 px ball entering over
+// circle over aloe (9.36 px, depth 1.93 %; passed with the depth gate, open
+// again without it), a 34 px ball entering over
 // venus (depth 1.48 %), and a 235 px ball on the circle's other side that left TRACK for a pair.
 // Round 85's three held-out failures (HeldOutSweep85): a 17 px pass over
 // tsukuba (depth 1.01 %; passes: SmallCoreFifth) and a 38 px ball on the circle's other side over
@@ -2071,9 +2073,9 @@ INSTANTIATE_TEST_SUITE_P(
 // of these 14 passed and 9 failed, all on the depth (the bounce's pair
 // replaced by the line going on past the wall, 1.12-3.72 %; the smooth
 // turn extrapolated 0.76 % off, 1.32-1.47 %), and 13 passed with nothing
-// replaced. They pass since a bounce is taken as measured and a curvature
-// that stands out of the noise is fitted (dsp/depth_track.h). The 25 px
-// ball over teddy fails on its own measured depth (DISABLED_Open).
+// replaced. With the gate removed (the measured depth reported) the same 13
+// pass; the 25 px ball over teddy fails on its own measured depth, 1.05 %
+// (DISABLED_Open).
 INSTANTIATE_TEST_SUITE_P(
     DepthTurns, BoxOnMotion,
     ::testing::Values(
@@ -2109,7 +2111,8 @@ INSTANTIATE_TEST_SUITE_P(
 // the eight backgrounds, 60 % spinning at 0.5-8 rev/s. 14 passed, 6 failed
 // (DISABLED_Open); on the line 7 passed, with nothing replaced 17. Used
 // since to try a rule (docs/firmware.md, "A depth that turns"), so no
-// longer held out.
+// longer held out. With the gate removed 17 pass (three balls swung round
+// whose depths the fit replaced out of DISABLED_Open).
 INSTANTIATE_TEST_SUITE_P(
     HeldOutTurns92, BoxOnMotion,
     ::testing::Values(motion_case{"heldout92_00_rebound54px_4_3m_3_9mps_4_6rps_z_venus", 54, 4.3,
@@ -2126,16 +2129,22 @@ INSTANTIATE_TEST_SUITE_P(
                                   2.5, orbit_far, 1.6, 1.2, 'z', tsukuba, 31},
                       motion_case{"heldout92_08_rebound91px_4_0m_3_9mps_6_1rps_x_tsukuba", 91, 4.0,
                                   rebound, 1.1, 6.1, 'x', tsukuba, 24, 0.0, 3.9},
+                      motion_case{"heldout92_09_orbit_near55px_2_7m_2_2x_0_6rps_x_kodim23", 55, 2.7,
+                                  orbit_near, 2.2, 0.6, 'x', photo2, 27},
                       motion_case{"heldout92_10_rebound84px_3_7m_2_6mps_6_6rps_x_aloe", 84, 3.7,
                                   rebound, 0.4, 6.6, 'x', aloe, 33, 0.0, 2.6},
                       motion_case{"heldout92_11_orbit_near76px_2_4m_1_8x_4_6rps_z_venus", 76, 2.4,
                                   orbit_near, 1.8, 4.6, 'z', venus, 29},
                       motion_case{"heldout92_12_rebound102px_4_5m_2_2mps_teddy", 102, 4.5, rebound,
                                   1.1, 0.0, 'x', photo4, 19, 0.0, 2.2},
+                      motion_case{"heldout92_13_orbit_far106px_2_2m_2_2x_1_0rps_z_kodim23", 106,
+                                  2.2, orbit_far, 2.2, 1.0, 'z', photo2, 27},
                       motion_case{"heldout92_15_orbit_near37px_2_9m_2_6x_kodim23", 37, 2.9,
                                   orbit_near, 2.6, 0.0, 'y', photo2, 25},
                       motion_case{"heldout92_16_rebound69px_3_8m_3_4mps_3_0rps_x_venus", 69, 3.8,
                                   rebound, 0.4, 3.0, 'x', venus, 28, 0.0, 3.4},
+                      motion_case{"heldout92_17_orbit_far113px_2_5m_2_8x_4_3rps_x_teddy", 113, 2.5,
+                                  orbit_far, 2.8, 4.3, 'x', photo4, 24},
                       motion_case{"heldout92_18_rebound61px_4_0m_3_1mps_tsukuba", 61, 4.0, rebound,
                                   0.6, 0.0, 'y', tsukuba, 27, 0.0, 3.1},
                       motion_case{"heldout92_19_orbit_far128px_2_9m_1_9x_kodim23", 128, 2.9,
@@ -2147,13 +2156,17 @@ INSTANTIATE_TEST_SUITE_P(
 // the rig (20-200 px from 2-4 m, 0.3-5 times the path's speed), drawn at
 // random (seed 93, a script outside the tree) and committed before they
 // were run, after round 92 had been used to try a rule. 15 passed, 5
-// failed (DISABLED_Open); on the line 14 passed, with nothing replaced 16.
+// failed (DISABLED_Open); on the line 14 passed, with nothing replaced 16,
+// as with the gate removed (the 103 px ball thrown at the wall from 4.5 m,
+// 0.57 %, out of DISABLED_Open).
 INSTANTIATE_TEST_SUITE_P(
     HeldOutTurns93, BoxOnMotion,
     ::testing::Values(motion_case{"heldout93_00_rebound31px_3_7m_1_5mps_5_9rps_x_aloe", 31, 3.7,
                                   rebound, 0.4, 5.9, 'x', aloe, 49, 0.0, 1.5},
                       motion_case{"heldout93_01_orbit_near114px_2_4m_1_2x_7_2rps_z", 114, 2.4,
                                   orbit_near, 1.2, 7.2, 'z', procedural, 36},
+                      motion_case{"heldout93_02_rebound103px_4_5m_1_5mps_5_4rps_x_cones", 103, 4.5,
+                                  rebound, 0.6, 5.4, 'x', photo, 21, 0.0, 1.5},
                       motion_case{"heldout93_03_orbit_far36px_2_1m_1_3x_tsukuba", 36, 2.1,
                                   orbit_far, 1.3, 0.0, 'y', tsukuba, 34},
                       motion_case{"heldout93_05_orbit_near42px_2_5m_2_9x_7_2rps_z_tsukuba", 42, 2.5,
@@ -2188,14 +2201,18 @@ INSTANTIATE_TEST_SUITE_P(
 // px swung round), half of them spinning 1-10 rev/s, every backdrop,
 // 24-40 frames, and committed before they were run. Cases moving faster
 // than 30 px a frame are out of the envelope and left out. They decide
-// whether the firmware keeps the depth gate (dsp/depth_track.h): it stays
-// only if it passes more of them than the same firmware with nothing
-// replaced; on a tie or fewer, the measured depth is reported.
+// whether the firmware keeps the depth gate: it stays only if it passes
+// more of them than the same firmware with nothing replaced; on a tie or
+// fewer, the measured depth is reported. Five moved faster than 30 px a
+// frame (left out: four passed, a 48 px throw at 62 px a frame failed). Of
+// the other 55, the gate passed 41 and nothing replaced 44 (three balls
+// swung round, whose depths the fit replaced: 1.09-1.29 % against
+// 0.59-0.65 %), none the other way; so the gate was removed (docs/
+// firmware.md, "The measured depth"). These 44 pass; the 11 that fail are
+// in DISABLED_Open.
 INSTANTIATE_TEST_SUITE_P(
     HeldOutSweep94, BoxOnMotion,
-    ::testing::Values(motion_case{"heldout94_00_rebound27px_4_3m_3_5mps_teddy", 27, 4.3, rebound,
-                                  0.6, 0.0, 'y', photo4, 37, 0.0, 3.5},
-                      motion_case{"heldout94_01_orbit_near115px_3_0m_1_0x_4_9rps_y_tsukuba", 115,
+    ::testing::Values(motion_case{"heldout94_01_orbit_near115px_3_0m_1_0x_4_9rps_y_tsukuba", 115,
                                   3.0, orbit_near, 1.0, 4.9, 'y', tsukuba, 30},
                       motion_case{"heldout94_02_orbit_far96px_2_4m_2_7x_kodim23", 96, 2.4,
                                   orbit_far, 2.7, 0.0, 'y', photo2, 26},
@@ -2203,20 +2220,8 @@ INSTANTIATE_TEST_SUITE_P(
                                   orbit_far, 3.0, 0.0, 'y', venus, 35},
                       motion_case{"heldout94_04_pass62px_3_5m_0_7x_aloe", 62, 3.5, pass, 0.7, 0.0,
                                   'x', aloe, 34},
-                      motion_case{"heldout94_05_circle27px_2_1m_3_0x_aloe", 27, 2.1, circle, 3.0,
-                                  0.0, 'z', aloe, 30},
-                      motion_case{"heldout94_06_approach13px_3_9m_1_4x_teddy", 13, 3.9, approach,
-                                  1.4, 0.0, 'x', photo4, 25},
                       motion_case{"heldout94_07_thrown85px_3_3m_0_4x_venus", 85, 3.3, thrown, 0.4,
                                   0.0, 'x', venus, 29},
-                      motion_case{"heldout94_08_circle20px_2_5m_2_6x_venus", 20, 2.5, circle, 2.6,
-                                  0.0, 'z', venus, 30},
-                      motion_case{"heldout94_09_enter36px_2_8m_1_3x_tsukuba", 36, 2.8, enter, 1.3,
-                                  0.0, 'x', tsukuba, 37},
-                      motion_case{"heldout94_10_thrown48px_2_3m_2_8x", 48, 2.3, thrown, 2.8, 0.0,
-                                  'y', procedural, 34},
-                      motion_case{"heldout94_11_enter21px_3_3m_1_2x_kodim23", 21, 3.3, enter, 1.2,
-                                  0.0, 'x', photo2, 28},
                       motion_case{"heldout94_12_back53px_2_4m_0_3x_4_4rps_x_kodim23", 53, 2.4,
                                   circle_back, 0.3, 4.4, 'x', photo2, 28},
                       motion_case{"heldout94_13_enter25px_2_2m_3_5x_aloe", 25, 2.2, enter, 3.5, 0.0,
@@ -2225,8 +2230,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   orbit_near, 2.8, 0.0, 'z', tsukuba, 38},
                       motion_case{"heldout94_15_pass21px_3_2m_3_6x_teddy", 21, 3.2, pass, 3.6, 0.0,
                                   'y', photo4, 37},
-                      motion_case{"heldout94_16_enter13px_3_1m_4_3x_kodim19", 13, 3.1, enter, 4.3,
-                                  0.0, 'z', photo3, 40},
                       motion_case{"heldout94_17_circle29px_3_7m_1_2x_cones", 29, 3.7, circle, 1.2,
                                   0.0, 'y', photo, 38},
                       motion_case{"heldout94_18_left29px_2_0m_2_4x_cones", 29, 2.0, pass_left, 2.4,
@@ -2239,8 +2242,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   'x', procedural, 31},
                       motion_case{"heldout94_22_thrown43px_3_9m_1_9x_3_8rps_x_cones", 43, 3.9,
                                   thrown, 1.9, 3.8, 'x', photo, 30},
-                      motion_case{"heldout94_23_approach54px_2_4m_2_3x_10_0rps_z_venus", 54, 2.4,
-                                  approach, 2.3, 10.0, 'z', venus, 39},
                       motion_case{"heldout94_24_pass41px_3_6m_1_2x_9_1rps_y_venus", 41, 3.6, pass,
                                   1.2, 9.1, 'y', venus, 37},
                       motion_case{"heldout94_25_orbit_far108px_2_6m_1_8x_aloe", 108, 2.6, orbit_far,
@@ -2249,8 +2250,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.4, 0.0, 'x', venus, 28},
                       motion_case{"heldout94_27_back49px_3_0m_0_4x_3_3rps_z_kodim23", 49, 3.0,
                                   circle_back, 0.4, 3.3, 'z', photo2, 27},
-                      motion_case{"heldout94_28_circle86px_2_9m_4_0x_2_5rps_x_tsukuba", 86, 2.9,
-                                  circle, 4.0, 2.5, 'x', tsukuba, 36},
                       motion_case{"heldout94_29_orbit_far134px_2_5m_2_5x_aloe", 134, 2.5, orbit_far,
                                   2.5, 0.0, 'x', aloe, 30}),
     case_name);
@@ -2273,24 +2272,16 @@ INSTANTIATE_TEST_SUITE_P(
                                   rebound, 0.8, 6.8, 'y', photo2, 27, 0.0, 3.1},
                       motion_case{"heldout95_07_approach115px_3_8m_0_5x_4_5rps_z_kodim19", 115, 3.8,
                                   approach, 0.5, 4.5, 'z', photo3, 32},
-                      motion_case{"heldout95_08_thrown24px_2_2m_1_4x_9_0rps_x_aloe", 24, 2.2,
-                                  thrown, 1.4, 9.0, 'x', aloe, 24},
                       motion_case{"heldout95_09_enter120px_3_7m_0_5x_kodim19", 120, 3.7, enter, 0.5,
                                   0.0, 'y', photo3, 31},
                       motion_case{"heldout95_10_rebound21px_3_9m_1_5mps_venus", 21, 3.9, rebound,
                                   0.9, 0.0, 'y', venus, 35, 0.0, 1.5},
-                      motion_case{"heldout95_11_recede182px_3_0m_0_3x_aloe", 182, 3.0, recede, 0.3,
-                                  0.0, 'y', aloe, 38},
                       motion_case{"heldout95_12_left96px_2_7m_4_4x_3_0rps_x_tsukuba", 96, 2.7,
                                   pass_left, 4.4, 3.0, 'x', tsukuba, 26},
                       motion_case{"heldout95_13_thrown125px_3_2m_0_6x_7_4rps_z_aloe", 125, 3.2,
                                   thrown, 0.6, 7.4, 'z', aloe, 30},
                       motion_case{"heldout95_14_enter53px_2_8m_1_3x_3_7rps_y_kodim23", 53, 2.8,
                                   enter, 1.3, 3.7, 'y', photo2, 27},
-                      motion_case{"heldout95_15_rebound94px_4_3m_2_1mps_aloe", 94, 4.3, rebound,
-                                  0.5, 0.0, 'z', aloe, 32, 0.0, 2.1},
-                      motion_case{"heldout95_16_rebound70px_4_2m_2_8mps_4_0rps_x_cones", 70, 4.2,
-                                  rebound, 0.6, 4.0, 'x', photo, 39, 0.0, 2.8},
                       motion_case{"heldout95_17_rebound24px_4_1m_1_1mps_1_4rps_z_aloe", 24, 4.1,
                                   rebound, 0.6, 1.4, 'z', aloe, 36, 0.0, 1.1},
                       motion_case{"heldout95_18_orbit_far48px_2_8m_1_3x_6_6rps_z", 48, 2.8,
@@ -2309,61 +2300,35 @@ INSTANTIATE_TEST_SUITE_P(
                                   rebound, 0.4, 6.8, 'z', photo2, 27, 0.0, 1.3},
                       motion_case{"heldout95_25_pass122px_3_1m_1_6x_4_0rps_y_cones", 122, 3.1, pass,
                                   1.6, 4.0, 'y', photo, 37},
-                      motion_case{"heldout95_26_thrown15px_3_6m_2_6x_2_9rps_y_kodim23", 15, 3.6,
-                                  thrown, 2.6, 2.9, 'y', photo2, 30},
                       motion_case{"heldout95_27_approach117px_2_4m_0_4x_7_1rps_y_kodim23", 117, 2.4,
                                   approach, 0.4, 7.1, 'y', photo2, 29},
                       motion_case{"heldout95_28_pass181px_2_3m_2_9x_2_0rps_y_cones", 181, 2.3, pass,
-                                  2.9, 2.0, 'y', photo, 37},
-                      motion_case{"heldout95_29_recede59px_2_3m_0_4x_venus", 59, 2.3, recede, 0.4,
-                                  0.0, 'z', venus, 37}),
-    case_name);
-
-// Open on the depth alone at one pair until a pair's depth off the track's
-// line is reported at the line (dsp/depth_track.h; chosen on the per-pair
-// depths of every box case, these among them): round 78's 21 px ball
-// entering over venus (2.09 -> 0.55 %) and 29 px circle over kodim23
-// (1.37 -> 0.48 %), round 80's 55 px circle over kodim23 (1.07 -> 0.83 %)
-// and 174 px ball going away (2.78 -> 0.79 %), round 84's 44 px circle over
-// aloe (2.04 -> 0.59 %) and 157 px ball going away over tsukuba (1.01 ->
-// 0.64 %), and round 86's 222 px ball on the circle's other side over aloe
-// (1.11 -> 0.64 %). Their boxes did not move.
-INSTANTIATE_TEST_SUITE_P(
-    DepthOnItsLine, BoxOnMotion,
-    ::testing::Values(motion_case{"heldout78_14_enter21px_2_3m_7_4rps_y_venus", 21, 2.3, enter, 3.4,
-                                  7.4, 'y', venus, 24},
-                      motion_case{"heldout78_16_circle29px_2_5m_8_7rps_x_kodim23", 29, 2.5, circle,
-                                  1.7, 8.7, 'x', photo2, 32},
-                      motion_case{"heldout80_02_circle55px_3_9m_kodim23", 55, 3.9, circle, 2.9, 0.0,
-                                  'z', photo2, 24},
-                      motion_case{"heldout80_17_recede174px_2_8m_5_3rps_z", 174, 2.8, recede, 0.6,
-                                  5.3, 'z', procedural, 40},
-                      motion_case{"heldout84_02_circle44px_3_3m_1_4rps_x_aloe", 44, 3.3, circle,
-                                  2.5, 1.4, 'x', aloe, 40},
-                      motion_case{"heldout84_32_recede157px_2_7m_2_2rps_z_tsukuba", 157, 2.7,
-                                  recede, 2.2, 2.2, 'z', tsukuba, 40},
-                      motion_case{"heldout86_01_back222px_3_4m_5_5rps_y_aloe", 222, 3.4,
-                                  circle_back, 2.1, 5.5, 'y', aloe, 24}),
+                                  2.9, 2.0, 'y', photo, 37}),
     case_name);
 
 // Round 91's two held-out failures (HeldOutSweep91), on the depth alone: a
 // 14 px ball going away over cones (1.42 % at one pair) and a 74 px circle
-// over teddy spinning 2.9 rev/s about z (2.92 % at one pair: a depth 1.46 %
-// off the track's line replaced, and the next, 2.45 % off, taken as
-// measured, as two pairs in a row are not gated, dsp/depth_track.h).
+// over teddy spinning 2.9 rev/s about z (2.92 % at one pair).
 // DepthTurns' one failure: a 25 px ball thrown at the wall over teddy from
 // 4.3 m, its measured depth 1.05 % far at its last pair, 14 pairs after
-// its bounce, not gated (not traced; with nothing replaced the same 1.05 %,
-// on the line 0.94 %).
+// its bounce (not traced).
 // Held-out rounds 92 and 93's failures (HeldOutTurns92, HeldOutTurns93):
-// on the depth, a 30 px and three 55-113 px balls swung round (1.01-1.44 %,
-// depths the fit replaced: each passes with nothing replaced), a 103 px
-// ball thrown at the wall from 4.5 m (1.38 %, replaced; passes with nothing
-// replaced) and an 87 px one over cones (2.43 %, its box 7.94 px off too);
-// on the box, balls of 21-96 px thrown at the wall (6.58-21.18 px at one
-// pair; the 96 px one's depth 12.8 % with it), a 132 px ball going away
-// (31.95 px) and a 102 px ball thrown slowly over venus (mean 4.09 px over
-// 53 pairs, depth 2.00 %).
+// a 30 px ball swung round, a side 0.6 px over (its depth 1.20 % with the
+// gate, 0.72 % measured); an 87 px one thrown at the wall over cones
+// (2.43 %, its box 7.94 px off too); on the box, balls of 21-96 px thrown at the wall (6.58-21.18
+// px at one pair; the 96 px one's depth 12.8 % with it), a 132 px ball going away (31.95 px) and a
+// 102 px ball thrown slowly over venus (mean 4.09 px over 53 pairs, depth 1.95 %). Seven that
+// failed on the depth alone at one pair and passed while a pair's depth off the track's fitted
+// depths was reported at the fit (the depth gate, removed since: docs/firmware.md, "The measured
+// depth"): round 78's 21 px ball entering over venus (2.09 %) and 29 px circle over kodim23 (1.37
+// %), round 80's 55 px circle over kodim23 (1.07 %) and 174 px ball going away (2.78 %), round 84's
+// 44 px circle over aloe (2.04 %) and 157 px ball going away over tsukuba (1.01 %), and round 86's
+// 222 px ball on the circle's other side over aloe (1.11 %). Held-out rounds 94 and 95's failures
+// (HeldOutSweep94, HeldOutSweep95): on the depth alone, balls of 13-36 px entering (1.16-1.68 %) or
+// coming nearer (a 13 px one, 24.1 %) and a 27 px one thrown at the wall (1.04 %); on the box, 20
+// px and 27 px circles at 21-24 px a frame (7.91 and 10.52 px at one pair), balls of 59 px and 182
+// px going away slowly, their boxes grown (17.42 and 39.68 px, means 3.77 and 3.51 px), and balls
+// of 70 px and 94 px thrown at the wall (20.42 px at one pair; 7.90 px and depth 1.37 %).
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
     ::testing::Values(motion_case{"heldout78_00_circle16px_3_8m_3_3rps_x_kodim23", 16, 3.8, circle,
@@ -2374,16 +2339,28 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.0, 'y', photo2, 24},
                       motion_case{"heldout78_13_recede14px_2_3m_1_7rps_z_aloe", 14, 2.3, recede,
                                   3.2, 1.7, 'z', aloe, 40},
-                      motion_case{"circle35px_3pxpf_2rps_x_cones_32f", 35, 2.6, circle, 0.4, 2.0,
-                                  'x', photo, 32},
+                      motion_case{"heldout78_14_enter21px_2_3m_7_4rps_y_venus", 21, 2.3, enter, 3.4,
+                                  7.4, 'y', venus, 24},
+                      motion_case{"heldout78_16_circle29px_2_5m_8_7rps_x_kodim23", 29, 2.5, circle,
+                                  1.7, 8.7, 'x', photo2, 32},
+                      motion_case{"heldout80_02_circle55px_3_9m_kodim23", 55, 3.9, circle, 2.9, 0.0,
+                                  'z', photo2, 24},
+                      motion_case{"heldout80_17_recede174px_2_8m_5_3rps_z", 174, 2.8, recede, 0.6,
+                                  5.3, 'z', procedural, 40},
                       motion_case{"heldout80_38_approach29px_3_1m_kodim23", 29, 3.1, approach, 0.8,
                                   0.0, 'x', photo2, 40},
+                      motion_case{"heldout84_02_circle44px_3_3m_1_4rps_x_aloe", 44, 3.3, circle,
+                                  2.5, 1.4, 'x', aloe, 40},
                       motion_case{"heldout84_11_back235px_3_0m_8_4rps_x_kodim19", 235, 3.0,
                                   circle_back, 2.2, 8.4, 'x', photo3, 32},
                       motion_case{"heldout84_21_enter34px_3_8m_4_2rps_x_venus", 34, 3.8, enter, 1.5,
                                   4.2, 'x', venus, 40},
+                      motion_case{"heldout84_32_recede157px_2_7m_2_2rps_z_tsukuba", 157, 2.7,
+                                  recede, 2.2, 2.2, 'z', tsukuba, 40},
                       motion_case{"heldout85_23_recede111px_4_0m_teddy", 111, 4.0, recede, 1.9, 0.0,
                                   'x', photo4, 24},
+                      motion_case{"heldout86_01_back222px_3_4m_5_5rps_y_aloe", 222, 3.4,
+                                  circle_back, 2.1, 5.5, 'y', aloe, 24},
                       motion_case{"heldout86_23_recede227px_3_0m_teddy", 227, 3.0, recede, 1.0, 0.0,
                                   'x', photo4, 40},
                       motion_case{"heldout86_25_back229px_3_7m_2_4rps_y_tsukuba", 229, 3.7,
@@ -2392,22 +2369,12 @@ INSTANTIATE_TEST_SUITE_P(
                                   'x', photo, 32},
                       motion_case{"heldout91_11_circle74px_3_1m_2_9rps_z_teddy", 74, 3.1, circle,
                                   2.3, 2.9, 'z', photo4, 40},
-                      motion_case{"rebound25px_1_5mps_4_3m_teddy", 25, 4.3, rebound, 0.5, 0.0, 'x',
-                                  photo4, 34, 0.0, 1.5},
                       motion_case{"heldout92_04_rebound96px_3_5m_1_7mps_5_7rps_x_teddy", 96, 3.5,
                                   rebound, 0.8, 5.7, 'x', photo4, 46, 0.0, 1.7},
                       motion_case{"heldout92_06_rebound87px_3_4m_2_1mps_7_2rps_z_cones", 87, 3.4,
                                   rebound, 0.8, 7.2, 'z', photo, 43, 0.0, 2.1},
-                      motion_case{"heldout92_09_orbit_near55px_2_7m_2_2x_0_6rps_x_kodim23", 55, 2.7,
-                                  orbit_near, 2.2, 0.6, 'x', photo2, 27},
-                      motion_case{"heldout92_13_orbit_far106px_2_2m_2_2x_1_0rps_z_kodim23", 106,
-                                  2.2, orbit_far, 2.2, 1.0, 'z', photo2, 27},
                       motion_case{"heldout92_14_rebound102px_3_7m_1_0mps_venus", 102, 3.7, rebound,
                                   0.7, 0.0, 'x', venus, 59, 0.0, 1.0},
-                      motion_case{"heldout92_17_orbit_far113px_2_5m_2_8x_4_3rps_x_teddy", 113, 2.5,
-                                  orbit_far, 2.8, 4.3, 'x', photo4, 24},
-                      motion_case{"heldout93_02_rebound103px_4_5m_1_5mps_5_4rps_x_cones", 103, 4.5,
-                                  rebound, 0.6, 5.4, 'x', photo, 21, 0.0, 1.5},
                       motion_case{"heldout93_04_rebound21px_3_5m_3_3mps_1_1rps_y_cones", 21, 3.5,
                                   rebound, 0.8, 1.1, 'y', photo, 33, 0.0, 3.3},
                       motion_case{"heldout93_08_rebound72px_4_4m_4_0mps_aloe", 72, 4.4, rebound,
@@ -2415,7 +2382,33 @@ INSTANTIATE_TEST_SUITE_P(
                       motion_case{"heldout93_09_orbit_far30px_2_4m_1_3x_kodim23", 30, 2.4,
                                   orbit_far, 1.3, 0.0, 'x', photo2, 34},
                       motion_case{"heldout93_14_recede132px_3_1m_0_7x_teddy", 132, 3.1, recede, 0.7,
-                                  0.0, 'z', photo4, 32}),
+                                  0.0, 'z', photo4, 32},
+                      motion_case{"circle35px_3pxpf_2rps_x_cones_32f", 35, 2.6, circle, 0.4, 2.0,
+                                  'x', photo, 32},
+                      motion_case{"rebound25px_1_5mps_4_3m_teddy", 25, 4.3, rebound, 0.5, 0.0, 'x',
+                                  photo4, 34, 0.0, 1.5},
+                      motion_case{"heldout94_00_rebound27px_4_3m_3_5mps_teddy", 27, 4.3, rebound,
+                                  0.6, 0.0, 'y', photo4, 37, 0.0, 3.5},
+                      motion_case{"heldout94_05_circle27px_2_1m_3_0x_aloe", 27, 2.1, circle, 3.0,
+                                  0.0, 'z', aloe, 30},
+                      motion_case{"heldout94_06_approach13px_3_9m_1_4x_teddy", 13, 3.9, approach,
+                                  1.4, 0.0, 'x', photo4, 25},
+                      motion_case{"heldout94_08_circle20px_2_5m_2_6x_venus", 20, 2.5, circle, 2.6,
+                                  0.0, 'z', venus, 30},
+                      motion_case{"heldout94_09_enter36px_2_8m_1_3x_tsukuba", 36, 2.8, enter, 1.3,
+                                  0.0, 'x', tsukuba, 37},
+                      motion_case{"heldout94_11_enter21px_3_3m_1_2x_kodim23", 21, 3.3, enter, 1.2,
+                                  0.0, 'x', photo2, 28},
+                      motion_case{"heldout94_16_enter13px_3_1m_4_3x_kodim19", 13, 3.1, enter, 4.3,
+                                  0.0, 'z', photo3, 40},
+                      motion_case{"heldout95_11_recede182px_3_0m_0_3x_aloe", 182, 3.0, recede, 0.3,
+                                  0.0, 'y', aloe, 38},
+                      motion_case{"heldout95_15_rebound94px_4_3m_2_1mps_aloe", 94, 4.3, rebound,
+                                  0.5, 0.0, 'z', aloe, 32, 0.0, 2.1},
+                      motion_case{"heldout95_16_rebound70px_4_2m_2_8mps_4_0rps_x_cones", 70, 4.2,
+                                  rebound, 0.6, 4.0, 'x', photo, 39, 0.0, 2.8},
+                      motion_case{"heldout95_29_recede59px_2_3m_0_4x_venus", 59, 2.3, recede, 0.4,
+                                  0.0, 'z', venus, 37}),
     case_name);
 
 }  // namespace

@@ -163,7 +163,7 @@ int expect_same_as_fresh(const scene::scenario& scenario, int from, int compare_
         EXPECT_EQ(a.box_right.y, b.box_right.y) << "frame " << r.index;
         EXPECT_EQ(a.box_right.width, b.box_right.width) << "frame " << r.index;
         EXPECT_EQ(a.box_right.height, b.box_right.height) << "frame " << r.index;
-        // ... and the same depths: nothing of the last track's line (dsp/depth_track.h).
+        // ... and the same depths: nothing of the last track's carried over.
         EXPECT_EQ(a.has_point, b.has_point) << "frame " << r.index;
         if (a.has_point && b.has_point) {
             EXPECT_EQ(a.disparity_q8, b.disparity_q8) << "frame " << r.index;
@@ -261,8 +261,8 @@ TEST(ControllerStates, ANewObjectIsSeenAfterTheLastVanished) {
 
 // The still track on the vanished ball's patch of background reports the
 // background's depth (5 m) up to the pair it gives way; the second ball's
-// track, 2.4 m away, reports its own from its first pair with a point: no
-// depth gated against the last track's line (dsp/depth_track.h).
+// track, 2.4 m away, reports its own from its first pair with a point:
+// nothing of the still track's depth carried over.
 TEST(ControllerStates, ANewTrackAfterAStillOneReportsItsOwnDepth) {
     const scene::scenario scenario = host::vanish_then_new_object_scenario();
     host::stereo_runner runner(scenario, default_config(scenario));
@@ -284,39 +284,6 @@ TEST(ControllerStates, ANewTrackAfterAStillOneReportsItsOwnDepth) {
     }
     std::printf("points on the second ball: %d, |depth| max %.2f %%\n", points, worst_pct);
     EXPECT_GE(points, 20);
-}
-
-// The track's depths are a line over consecutive pairs: after pairs
-// without a disparity (their left images dark: no match) the line starts
-// again, and the next 8 pairs report their own depths. The ball goes away
-// at 1.5 m/s 4.3 m from the rig, 0.85 % a pair: a line carried over two
-// such pairs would stand two pairs behind it, past the gate (0.6 %).
-TEST(ControllerStates, PairsWithoutADepthStartTheLineAgain) {
-    const scene::scenario scenario = host::vanish_then_new_object_scenario();
-    host::stereo_runner runner(scenario, default_config(scenario));
-    constexpr int gap = 34, gap_pairs = 2;
-    int tracked_before = 0, own_after = 0;
-    for (int n = 0; n < gap + gap_pairs + 8; ++n) {
-        runner.render(n);
-        const bool dark = n >= gap && n < gap + gap_pairs;
-        if (dark) std::fill(runner.raw_left().pixels.begin(), runner.raw_left().pixels.end(), 0);
-        const host::host_record r = runner.process();
-        if (n < gap) {
-            tracked_before += r.firmware.has_point;
-        } else if (dark) {
-            EXPECT_EQ(r.firmware.state, tracker_state::track) << "frame " << n;
-            EXPECT_FALSE(r.firmware.has_point) << "frame " << n;
-        } else {
-            ASSERT_TRUE(r.firmware.has_point) << "frame " << n;
-            EXPECT_FALSE(r.firmware.depth_from_track) << "frame " << n;
-            const double err_pct =
-                100.0 * (r.firmware.point.z * 1e-6 / r.truth.visible_mean_depth_m - 1.0);
-            EXPECT_LE(std::fabs(err_pct), 1.0) << "frame " << n;
-            ++own_after;
-        }
-    }
-    EXPECT_GE(tracked_before, 12);  // a line of 8 pairs and more before the gap
-    EXPECT_EQ(own_after, 8);
 }
 
 // A dropped ball bounces and comes to rest; nothing else moves. Its track

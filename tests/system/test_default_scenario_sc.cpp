@@ -290,11 +290,10 @@ TEST(default_scenario, golden_stage_cycles_and_one_timeline) {
     // differences and their median, two more terms per extent and velocity
     // in window_fit_profile) moved track alone, by 554 cycles: the default
     // ball's boxes did not change (3,551,063 before).
-    // The track's depth gated against its line (dsp/depth_track.h, cost::
-    // depth_track_profile: the depth's division and the history's push on
-    // each of the 6 pairs with a point, 177 cycles; the run has fewer than
-    // the 8 pairs a line needs) moved xyz alone: no disparity replaced, the
-    // boxes and points the same (1,884 before).
+    // The track's depth gated against its line (177 cycles on each of the
+    // 6 pairs with a point) moved xyz alone to 2,946, no disparity
+    // replaced; the gate was then removed, the measured depth reported
+    // (docs/firmware.md, "The measured depth"): xyz back to 1,884.
     constexpr uint64_t golden[dsp::stage_count] = {
         6000,      // capture: 10 pairs x 600
         23511756,  // preprocess
@@ -302,7 +301,7 @@ TEST(default_scenario, golden_stage_cycles_and_one_timeline) {
         3551617,   // track
         397155,    // stereo_sad
         1867416,   // stereo_edge
-        2946,      // xyz
+        1884,      // xyz
     };
     for (int s = 0; s < dsp::stage_count; ++s) {
         EXPECT_EQ(r.budget.stage_cycles_total[s], golden[s])
