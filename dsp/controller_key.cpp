@@ -242,6 +242,19 @@ void controller::impl::follow_outline_key(track_motion seen, uint64_t* cycles,
                                           sdram_traffic* traffic) {
     const box s = tracker.position();  // track_object's: the silhouette's, else the SAD's
     const box k = key.object();
+    // The key's object holds its size where it was taken, which an object
+    // going away or coming nearer leaves a side at a time: a 59 px ball
+    // going away at 2 % a pair was held at 58 px, each pair's change of
+    // depth under max_step, while it shrank to 34 px. Dropped once the depth
+    // since the key moves a side by more than max_step.
+    const box at_depth = at_disparity(k, key_sized_q8, measured_disparity_q8);
+    if (key_sized_q8 > 0 && measured_disparity_q8 > 0)  // its two sizes, a divide each
+        *cycles += cycles_of(cost::size_at_depth_profile(2));
+    if (abs_int(at_depth.width - k.width) > key_frame::max_step ||
+        abs_int(at_depth.height - k.height) > key_frame::max_step) {
+        key.drop();
+        return;
+    }
     const block_group u = keyed_extent(cycles, traffic);
     if (!u.found) {
         key.drop();

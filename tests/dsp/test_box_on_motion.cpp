@@ -2306,12 +2306,36 @@ INSTANTIATE_TEST_SUITE_P(
                                   2.9, 2.0, 'y', photo, 37}),
     case_name);
 
+// Open cases whose box a key of the outline held at its size where the
+// key was taken while the depth moved it (docs/firmware.md, "An outline
+// key the depth outgrows"): round 95's 59 px ball going away slowly over
+// venus (traced; 3.77 / 17.42 px -> 1.04 / 1.96 px), and four that the
+// rule passed with it: round 80's 174 px ball going away (depth 2.78 ->
+// 0.55 %), round 92's 87 px and 102 px balls thrown at the wall (box max
+// 7.94 -> 4.56 px, mean 4.09 -> 1.12 px) and round 94's 27 px one (depth
+// 1.04 -> 0.92 %). Development cases.
+INSTANTIATE_TEST_SUITE_P(
+    OutlineKeyOutgrown, BoxOnMotion,
+    ::testing::Values(motion_case{"heldout80_17_recede174px_2_8m_5_3rps_z", 174, 2.8, recede, 0.6,
+                                  5.3, 'z', procedural, 40},
+                      motion_case{"heldout92_06_rebound87px_3_4m_2_1mps_7_2rps_z_cones", 87, 3.4,
+                                  rebound, 0.8, 7.2, 'z', photo, 43, 0.0, 2.1},
+                      motion_case{"heldout92_14_rebound102px_3_7m_1_0mps_venus", 102, 3.7, rebound,
+                                  0.7, 0.0, 'x', venus, 59, 0.0, 1.0},
+                      motion_case{"heldout94_00_rebound27px_4_3m_3_5mps_teddy", 27, 4.3, rebound,
+                                  0.6, 0.0, 'y', photo4, 37, 0.0, 3.5},
+                      motion_case{"heldout95_29_recede59px_2_3m_0_4x_venus", 59, 2.3, recede, 0.4,
+                                  0.0, 'z', venus, 37}),
+    case_name);
+
 // Held out, round 96: 30 cases drawn at random (seed 96, rounds 94 and
 // 95's envelope, a script outside the tree) and committed before they were
 // run, after an outline key was dropped once the depth since it moves a
 // side (docs/firmware.md, "An outline key the depth outgrows"), with the
 // firmware before and after that rule. Cases moving faster than 30 px a
-// frame are out of the envelope and left out.
+// frame are out of the envelope and left out: four. Of the other 26, 22
+// passed and 4 failed (DISABLED_Open) with the rule and without it, every
+// figure the same.
 INSTANTIATE_TEST_SUITE_P(
     HeldOutSweep96, BoxOnMotion,
     ::testing::Values(motion_case{"heldout96_00_enter31px_3_3m_4_0x_4_1rps_x", 31, 3.3, enter, 4.0,
@@ -2320,8 +2344,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   recede, 4.9, 2.2, 'x', aloe, 39},
                       motion_case{"heldout96_02_approach31px_3_4m_0_8x_tsukuba", 31, 3.4, approach,
                                   0.8, 0.0, 'z', tsukuba, 24},
-                      motion_case{"heldout96_03_thrown14px_2_9m_3_1x_9_8rps_z_cones", 14, 2.9,
-                                  thrown, 3.1, 9.8, 'z', photo, 33},
                       motion_case{"heldout96_04_orbit_near86px_2_3m_2_6x_4_9rps_z", 86, 2.3,
                                   orbit_near, 2.6, 4.9, 'z', procedural, 32},
                       motion_case{"heldout96_05_rebound37px_4_1m_3_9mps_7_7rps_z_kodim19", 37, 4.1,
@@ -2342,16 +2364,10 @@ INSTANTIATE_TEST_SUITE_P(
                                   1.4, 5.9, 'z', procedural, 26},
                       motion_case{"heldout96_13_orbit_far38px_2_2m_2_1x_3_6rps_y_kodim19", 38, 2.2,
                                   orbit_far, 2.1, 3.6, 'y', photo3, 30},
-                      motion_case{"heldout96_14_rebound74px_4_4m_2_3mps_5_6rps_y_aloe", 74, 4.4,
-                                  rebound, 0.7, 5.6, 'y', aloe, 26, 0.0, 2.3},
                       motion_case{"heldout96_15_thrown52px_3_8m_0_4x_3_1rps_x_tsukuba", 52, 3.8,
                                   thrown, 0.4, 3.1, 'x', tsukuba, 39},
                       motion_case{"heldout96_16_back92px_2_8m_0_5x_kodim23", 92, 2.8, circle_back,
                                   0.5, 0.0, 'y', photo2, 26},
-                      motion_case{"heldout96_17_thrown86px_2_6m_3_9x_kodim19", 86, 2.6, thrown, 3.9,
-                                  0.0, 'x', photo3, 28},
-                      motion_case{"heldout96_18_thrown24px_4_0m_4_2x_venus", 24, 4.0, thrown, 4.2,
-                                  0.0, 'z', venus, 38},
                       motion_case{"heldout96_19_rebound32px_3_9m_3_8mps_9_5rps_x_tsukuba", 32, 3.9,
                                   rebound, 0.9, 9.5, 'x', tsukuba, 36, 0.0, 3.8},
                       motion_case{"heldout96_20_pass148px_2_5m_3_0x_8_2rps_z_kodim19", 148, 2.5,
@@ -2362,18 +2378,10 @@ INSTANTIATE_TEST_SUITE_P(
                                   1.9, 4.8, 'y', aloe, 34},
                       motion_case{"heldout96_23_orbit_near114px_2_7m_3_0x_tsukuba", 114, 2.7,
                                   orbit_near, 3.0, 0.0, 'x', tsukuba, 39},
-                      motion_case{"heldout96_24_back85px_2_4m_4_2x_kodim19", 85, 2.4, circle_back,
-                                  4.2, 0.0, 'x', photo3, 28},
-                      motion_case{"heldout96_25_rebound35px_4_1m_2_3mps_9_5rps_x_tsukuba", 35, 4.1,
-                                  rebound, 1.0, 9.5, 'x', tsukuba, 32, 0.0, 2.3},
-                      motion_case{"heldout96_26_thrown20px_4_0m_1_2x_3_6rps_z_venus", 20, 4.0,
-                                  thrown, 1.2, 3.6, 'z', venus, 35},
                       motion_case{"heldout96_27_circle55px_3_1m_0_8x_kodim19", 55, 3.1, circle, 0.8,
                                   0.0, 'z', photo3, 31},
                       motion_case{"heldout96_28_left200px_3_2m_0_4x_1_3rps_x", 200, 3.2, pass_left,
-                                  0.4, 1.3, 'x', procedural, 35},
-                      motion_case{"heldout96_29_back13px_3_4m_1_5x_3_5rps_y_cones", 13, 3.4,
-                                  circle_back, 1.5, 3.5, 'y', photo, 25}),
+                                  0.4, 1.3, 'x', procedural, 35}),
     case_name);
 
 // Round 91's two held-out failures (HeldOutSweep91), on the depth alone: a
@@ -2383,22 +2391,28 @@ INSTANTIATE_TEST_SUITE_P(
 // 4.3 m, its measured depth 1.05 % far at its last pair, 14 pairs after
 // its bounce (not traced).
 // Held-out rounds 92 and 93's failures (HeldOutTurns92, HeldOutTurns93):
-// a 30 px ball swung round, a side 0.6 px over (its depth 1.20 % with the
-// gate, 0.72 % measured); an 87 px one thrown at the wall over cones
-// (2.43 %, its box 7.94 px off too); on the box, balls of 21-96 px thrown at the wall (6.58-21.18
-// px at one pair; the 96 px one's depth 12.8 % with it), a 132 px ball going away (31.95 px) and a
-// 102 px ball thrown slowly over venus (mean 4.09 px over 53 pairs, depth 1.95 %). Seven that
-// failed on the depth alone at one pair and passed while a pair's depth off the track's fitted
-// depths was reported at the fit (the depth gate, removed since: docs/firmware.md, "The measured
-// depth"): round 78's 21 px ball entering over venus (2.09 %) and 29 px circle over kodim23 (1.37
-// %), round 80's 55 px circle over kodim23 (1.07 %) and 174 px ball going away (2.78 %), round 84's
-// 44 px circle over aloe (2.04 %) and 157 px ball going away over tsukuba (1.01 %), and round 86's
-// 222 px ball on the circle's other side over aloe (1.11 %). Held-out rounds 94 and 95's failures
-// (HeldOutSweep94, HeldOutSweep95): on the depth alone, balls of 13-36 px entering (1.16-1.68 %) or
-// coming nearer (a 13 px one, 24.1 %) and a 27 px one thrown at the wall (1.04 %); on the box, 20
-// px and 27 px circles at 21-24 px a frame (7.91 and 10.52 px at one pair), balls of 59 px and 182
-// px going away slowly, their boxes grown (17.42 and 39.68 px, means 3.77 and 3.51 px), and balls
-// of 70 px and 94 px thrown at the wall (20.42 px at one pair; 7.90 px and depth 1.37 %).
+// a 30 px ball swung round, a side 0.6 px over; balls of 21-96 px thrown
+// at the wall (6.58-21.18 px at one pair; the 96 px one 18.03 px, its
+// depth 1.25 %) and a 132 px ball going away (31.95 px).
+// Six that failed on the depth alone at one pair and passed while a pair's
+// depth off the track's fitted depths was reported at the fit (the depth
+// gate, removed since: docs/firmware.md, "The measured depth"): round 78's
+// 21 px ball entering over venus (2.09 %) and 29 px circle over kodim23
+// (1.37 %), round 80's 55 px circle over kodim23 (1.07 %), round 84's 44
+// px circle over aloe (2.04 %) and 157 px ball going away over tsukuba
+// (1.01 %), and round 86's 222 px ball on the circle's other side over
+// aloe (1.11 %).
+// Held-out rounds 94 and 95's failures (HeldOutSweep94, HeldOutSweep95):
+// on the depth alone, balls of 13-36 px entering (1.16-1.68 %) or coming
+// nearer (a 13 px one, 24.1 %); on the box, 20 px and 27 px circles at
+// 21-24 px a frame (7.91 and 10.52 px at one pair), a 182 px ball going
+// away slowly, its box 61 px too wide near the background plane (39.68
+// px), and balls of 70 px and 94 px thrown at the wall (20.42 and 25.00
+// px at one pair, the 94 px one's depth 1.20 %).
+// Held-out round 96's failures (HeldOutSweep96): balls of 74 px and 35 px
+// thrown at the wall (21.21 px at one pair; depth 1.37 %), a 20 px throw
+// over venus (7.78 px) and a 13 px ball on the circle's other side (depth
+// 1.49 %).
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
     ::testing::Values(motion_case{"heldout78_00_circle16px_3_8m_3_3rps_x_kodim23", 16, 3.8, circle,
@@ -2415,8 +2429,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   1.7, 8.7, 'x', photo2, 32},
                       motion_case{"heldout80_02_circle55px_3_9m_kodim23", 55, 3.9, circle, 2.9, 0.0,
                                   'z', photo2, 24},
-                      motion_case{"heldout80_17_recede174px_2_8m_5_3rps_z", 174, 2.8, recede, 0.6,
-                                  5.3, 'z', procedural, 40},
                       motion_case{"heldout80_38_approach29px_3_1m_kodim23", 29, 3.1, approach, 0.8,
                                   0.0, 'x', photo2, 40},
                       motion_case{"heldout84_02_circle44px_3_3m_1_4rps_x_aloe", 44, 3.3, circle,
@@ -2441,10 +2453,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   2.3, 2.9, 'z', photo4, 40},
                       motion_case{"heldout92_04_rebound96px_3_5m_1_7mps_5_7rps_x_teddy", 96, 3.5,
                                   rebound, 0.8, 5.7, 'x', photo4, 46, 0.0, 1.7},
-                      motion_case{"heldout92_06_rebound87px_3_4m_2_1mps_7_2rps_z_cones", 87, 3.4,
-                                  rebound, 0.8, 7.2, 'z', photo, 43, 0.0, 2.1},
-                      motion_case{"heldout92_14_rebound102px_3_7m_1_0mps_venus", 102, 3.7, rebound,
-                                  0.7, 0.0, 'x', venus, 59, 0.0, 1.0},
                       motion_case{"heldout93_04_rebound21px_3_5m_3_3mps_1_1rps_y_cones", 21, 3.5,
                                   rebound, 0.8, 1.1, 'y', photo, 33, 0.0, 3.3},
                       motion_case{"heldout93_08_rebound72px_4_4m_4_0mps_aloe", 72, 4.4, rebound,
@@ -2457,8 +2465,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   'x', photo, 32},
                       motion_case{"rebound25px_1_5mps_4_3m_teddy", 25, 4.3, rebound, 0.5, 0.0, 'x',
                                   photo4, 34, 0.0, 1.5},
-                      motion_case{"heldout94_00_rebound27px_4_3m_3_5mps_teddy", 27, 4.3, rebound,
-                                  0.6, 0.0, 'y', photo4, 37, 0.0, 3.5},
                       motion_case{"heldout94_05_circle27px_2_1m_3_0x_aloe", 27, 2.1, circle, 3.0,
                                   0.0, 'z', aloe, 30},
                       motion_case{"heldout94_06_approach13px_3_9m_1_4x_teddy", 13, 3.9, approach,
@@ -2477,8 +2483,14 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.5, 0.0, 'z', aloe, 32, 0.0, 2.1},
                       motion_case{"heldout95_16_rebound70px_4_2m_2_8mps_4_0rps_x_cones", 70, 4.2,
                                   rebound, 0.6, 4.0, 'x', photo, 39, 0.0, 2.8},
-                      motion_case{"heldout95_29_recede59px_2_3m_0_4x_venus", 59, 2.3, recede, 0.4,
-                                  0.0, 'z', venus, 37}),
+                      motion_case{"heldout96_14_rebound74px_4_4m_2_3mps_5_6rps_y_aloe", 74, 4.4,
+                                  rebound, 0.7, 5.6, 'y', aloe, 26, 0.0, 2.3},
+                      motion_case{"heldout96_25_rebound35px_4_1m_2_3mps_9_5rps_x_tsukuba", 35, 4.1,
+                                  rebound, 1.0, 9.5, 'x', tsukuba, 32, 0.0, 2.3},
+                      motion_case{"heldout96_26_thrown20px_4_0m_1_2x_3_6rps_z_venus", 20, 4.0,
+                                  thrown, 1.2, 3.6, 'z', venus, 35},
+                      motion_case{"heldout96_29_back13px_3_4m_1_5x_3_5rps_y_cones", 13, 3.4,
+                                  circle_back, 1.5, 3.5, 'y', photo, 25}),
     case_name);
 
 }  // namespace
