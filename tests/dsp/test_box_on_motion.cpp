@@ -2387,15 +2387,15 @@ INSTANTIATE_TEST_SUITE_P(
 // Held out, round 97: 30 cases drawn at random (seed 97, rounds 94 and
 // 95's envelope, a script outside the tree) and committed before they were
 // run, with a reach refused where the background beside the object matches
-// at its depth (docs/firmware.md), and without it. Decision declared here:
-// the rule is kept only if, over this round and HeldOutWall97 together, it
-// passes more of the cases in the envelope (30 px a frame at most) than the
-// firmware without it.
+// at its depth (docs/firmware.md, "Open") and without it. Decision declared
+// then: the rule is kept only if, over this round and HeldOutWall97
+// together, it passes more of the cases in the envelope (30 px a frame at
+// most) than the firmware without it. Two moved faster (left out); of the
+// other 28, 22 passed and 6 failed (DISABLED_Open), with the rule and
+// without it: a tie, so the rule was not kept.
 INSTANTIATE_TEST_SUITE_P(
     HeldOutSweep97, BoxOnMotion,
-    ::testing::Values(motion_case{"heldout97_00_circle43px_4_0m_4_0x", 43, 4.0, circle, 4.0, 0.0,
-                                  'x', procedural, 25},
-                      motion_case{"heldout97_01_pass172px_3_6m_0_8x_4_9rps_z_cones", 172, 3.6, pass,
+    ::testing::Values(motion_case{"heldout97_01_pass172px_3_6m_0_8x_4_9rps_z_cones", 172, 3.6, pass,
                                   0.8, 4.9, 'z', photo, 34},
                       motion_case{"heldout97_02_circle178px_2_4m_2_6x_cones", 178, 2.4, circle, 2.6,
                                   0.0, 'x', photo, 31},
@@ -2407,16 +2407,10 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.3, 0.0, 'x', photo2, 39},
                       motion_case{"heldout97_06_pass70px_3_0m_0_3x_aloe", 70, 3.0, pass, 0.3, 0.0,
                                   'z', aloe, 37},
-                      motion_case{"heldout97_07_left14px_3_1m_3_2x_7_1rps_z_kodim19", 14, 3.1,
-                                  pass_left, 3.2, 7.1, 'z', photo3, 37},
                       motion_case{"heldout97_08_recede35px_2_4m_0_4x_teddy", 35, 2.4, recede, 0.4,
                                   0.0, 'y', photo4, 34},
                       motion_case{"heldout97_09_pass228px_2_5m_0_5x_5_5rps_z_cones", 228, 2.5, pass,
                                   0.5, 5.5, 'z', photo, 30},
-                      motion_case{"heldout97_10_approach15px_2_0m_1_0x_5_7rps_x_teddy", 15, 2.0,
-                                  approach, 1.0, 5.7, 'x', photo4, 40},
-                      motion_case{"heldout97_11_pass16px_3_1m_0_9x_8_6rps_x_kodim23", 16, 3.1, pass,
-                                  0.9, 8.6, 'x', photo2, 36},
                       motion_case{"heldout97_12_rebound20px_3_7m_3_0mps_2_2rps_x_aloe", 20, 3.7,
                                   rebound, 0.5, 2.2, 'x', aloe, 29, 0.0, 3.0},
                       motion_case{"heldout97_13_left147px_2_8m_0_7x", 147, 2.8, pass_left, 0.7, 0.0,
@@ -2427,16 +2421,8 @@ INSTANTIATE_TEST_SUITE_P(
                                   1.8, 7.9, 'x', venus, 28},
                       motion_case{"heldout97_16_orbit_far110px_2_3m_2_2x_cones", 110, 2.3,
                                   orbit_far, 2.2, 0.0, 'x', photo, 29},
-                      motion_case{"heldout97_17_circle19px_3_8m_1_2x_2_4rps_y_venus", 19, 3.8,
-                                  circle, 1.2, 2.4, 'y', venus, 38},
-                      motion_case{"heldout97_18_back42px_2_8m_4_2x_3_0rps_y_kodim19", 42, 2.8,
-                                  circle_back, 4.2, 3.0, 'y', photo3, 38},
                       motion_case{"heldout97_19_approach153px_2_3m_0_5x_kodim19", 153, 2.3,
                                   approach, 0.5, 0.0, 'y', photo3, 38},
-                      motion_case{"heldout97_20_circle23px_3_4m_1_3x_6_1rps_x_cones", 23, 3.4,
-                                  circle, 1.3, 6.1, 'x', photo, 29},
-                      motion_case{"heldout97_21_recede16px_2_2m_3_9x_aloe", 16, 2.2, recede, 3.9,
-                                  0.0, 'y', aloe, 40},
                       motion_case{"heldout97_22_orbit_far66px_2_7m_2_5x", 66, 2.7, orbit_far, 2.5,
                                   0.0, 'z', procedural, 32},
                       motion_case{"heldout97_23_pass69px_3_0m_0_5x_1_7rps_y_aloe", 69, 3.0, pass,
@@ -2457,23 +2443,18 @@ INSTANTIATE_TEST_SUITE_P(
 
 // Held out, round 97 at the wall: 16 balls thrown at the background's wall
 // or going away towards it (seed 197, rounds 94 and 95's envelope for those
-// two paths), committed with HeldOutSweep97 before they were run.
+// two paths), committed with HeldOutSweep97 before they were run. 12
+// passed and 4 failed (DISABLED_Open), with the rule and without it.
 INSTANTIATE_TEST_SUITE_P(
     HeldOutWall97, BoxOnMotion,
-    ::testing::Values(motion_case{"heldout97w_00_rebound25px_3_5m_1_4mps_cones", 25, 3.5, rebound,
-                                  0.5, 0.0, 'y', photo, 30, 0.0, 1.4},
-                      motion_case{"heldout97w_01_recede134px_3_3m_0_5x_venus", 134, 3.3, recede,
+    ::testing::Values(motion_case{"heldout97w_01_recede134px_3_3m_0_5x_venus", 134, 3.3, recede,
                                   0.5, 0.0, 'y', venus, 39},
                       motion_case{"heldout97w_02_recede71px_3_0m_2_3x_3_2rps_y_tsukuba", 71, 3.0,
                                   recede, 2.3, 3.2, 'y', tsukuba, 30},
                       motion_case{"heldout97w_03_recede134px_3_1m_3_5x_8_1rps_y_cones", 134, 3.1,
                                   recede, 3.5, 8.1, 'y', photo, 35},
-                      motion_case{"heldout97w_04_recede28px_3_4m_0_9x_4_8rps_z_teddy", 28, 3.4,
-                                  recede, 0.9, 4.8, 'z', photo4, 26},
                       motion_case{"heldout97w_05_rebound61px_4_3m_1_5mps_kodim19", 61, 4.3, rebound,
                                   0.9, 0.0, 'y', photo3, 34, 0.0, 1.5},
-                      motion_case{"heldout97w_06_recede19px_3_1m_2_5x", 19, 3.1, recede, 2.5, 0.0,
-                                  'y', procedural, 36},
                       motion_case{"heldout97w_07_rebound34px_3_6m_3_9mps_9_3rps_z_aloe", 34, 3.6,
                                   rebound, 1.0, 9.3, 'z', aloe, 36, 0.0, 3.9},
                       motion_case{"heldout97w_08_rebound20px_4_4m_3_9mps_8_9rps_x_tsukuba", 20, 4.4,
@@ -2488,8 +2469,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   3.2, 0.0, 'x', photo2, 29},
                       motion_case{"heldout97w_13_rebound55px_3_9m_3_2mps_teddy", 55, 3.9, rebound,
                                   0.5, 0.0, 'x', photo4, 25, 0.0, 3.2},
-                      motion_case{"heldout97w_14_recede16px_2_6m_1_5x_6_5rps_x_kodim23", 16, 2.6,
-                                  recede, 1.5, 6.5, 'x', photo2, 34},
                       motion_case{"heldout97w_15_rebound74px_3_6m_1_3mps_8_5rps_y_kodim19", 74, 3.6,
                                   rebound, 0.6, 8.5, 'y', photo3, 32, 0.0, 1.3}),
     case_name);
@@ -2519,6 +2498,10 @@ INSTANTIATE_TEST_SUITE_P(
 // away slowly, its box 61 px too wide near the background plane (39.68
 // px), and balls of 70 px and 94 px thrown at the wall (20.42 and 25.00
 // px at one pair, the 94 px one's depth 1.20 %).
+// Held-out round 97's failures (HeldOutSweep97, HeldOutWall97), all ten
+// balls of 14-28 px: five on the depth alone (1.02-1.88 %), three on a
+// side 0.8-2.8 px past its bound, a 16 px pass on both (8.08 px, 1.04 %)
+// and a 16 px ball going away on both (a side 1 px over, 2.58 %).
 // Held-out round 96's failures (HeldOutSweep96): balls of 74 px and 35 px
 // thrown at the wall (21.21 px at one pair; depth 1.37 %), a 20 px throw
 // over venus (7.78 px) and a 13 px ball on the circle's other side (depth
@@ -2600,7 +2583,27 @@ INSTANTIATE_TEST_SUITE_P(
                       motion_case{"heldout96_26_thrown20px_4_0m_1_2x_3_6rps_z_venus", 20, 4.0,
                                   thrown, 1.2, 3.6, 'z', venus, 35},
                       motion_case{"heldout96_29_back13px_3_4m_1_5x_3_5rps_y_cones", 13, 3.4,
-                                  circle_back, 1.5, 3.5, 'y', photo, 25}),
+                                  circle_back, 1.5, 3.5, 'y', photo, 25},
+                      motion_case{"heldout97_07_left14px_3_1m_3_2x_7_1rps_z_kodim19", 14, 3.1,
+                                  pass_left, 3.2, 7.1, 'z', photo3, 37},
+                      motion_case{"heldout97_10_approach15px_2_0m_1_0x_5_7rps_x_teddy", 15, 2.0,
+                                  approach, 1.0, 5.7, 'x', photo4, 40},
+                      motion_case{"heldout97_11_pass16px_3_1m_0_9x_8_6rps_x_kodim23", 16, 3.1, pass,
+                                  0.9, 8.6, 'x', photo2, 36},
+                      motion_case{"heldout97_17_circle19px_3_8m_1_2x_2_4rps_y_venus", 19, 3.8,
+                                  circle, 1.2, 2.4, 'y', venus, 38},
+                      motion_case{"heldout97_20_circle23px_3_4m_1_3x_6_1rps_x_cones", 23, 3.4,
+                                  circle, 1.3, 6.1, 'x', photo, 29},
+                      motion_case{"heldout97_21_recede16px_2_2m_3_9x_aloe", 16, 2.2, recede, 3.9,
+                                  0.0, 'y', aloe, 40},
+                      motion_case{"heldout97w_00_rebound25px_3_5m_1_4mps_cones", 25, 3.5, rebound,
+                                  0.5, 0.0, 'y', photo, 30, 0.0, 1.4},
+                      motion_case{"heldout97w_04_recede28px_3_4m_0_9x_4_8rps_z_teddy", 28, 3.4,
+                                  recede, 0.9, 4.8, 'z', photo4, 26},
+                      motion_case{"heldout97w_06_recede19px_3_1m_2_5x", 19, 3.1, recede, 2.5, 0.0,
+                                  'y', procedural, 36},
+                      motion_case{"heldout97w_14_recede16px_2_6m_1_5x_6_5rps_x_kodim23", 16, 2.6,
+                                  recede, 1.5, 6.5, 'x', photo2, 34}),
     case_name);
 
 }  // namespace
