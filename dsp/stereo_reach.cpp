@@ -224,6 +224,19 @@ object_end find_start(const side_probe& p, const object_match& match, int max_di
     return object_end{};
 }
 
+// Whether the tile `distance` px out, past the object's bound, is the
+// object's: the background beside it lies within its disparity span.
+bool beside_at_object_depth(const side_probe& p, int distance, const object_match& match,
+                            uint32_t gate_q8, const stereo_params& search,
+                            const stereo_reach_params& params, stereo_reach* r) {
+    if (!p.in_ref(distance, distance + params.tile_width)) return false;
+    const tile_reading t =
+        read_tile(p, distance, match, gates_of(gate_q8, params).tile, search, params);
+    ++r->tiles;
+    r->positions += t.positions;
+    return t.object;
+}
+
 // A band of band_height px on a round object's centre rows (columns) lies
 // within 1.4 px of its sides when the object is 3 bands across; on a
 // smaller one its rows past the object are background at every side.
@@ -255,6 +268,9 @@ stereo_reach reach_past_sides(gray_cplane right, gray_cplane left, box object,
     const side_probe left_side{right, left, +1, object.x + inset, -1, band_y, params.band_height};
     const object_end l = find_end(left_side, match, max_distance, gate_q8, search, params, &r);
     if (l.distance >= 0) r.left = max_int(0, min_int(max_reach, l.distance - inset));
+    if (r.left > 0 &&
+        beside_at_object_depth(left_side, max_distance, match, gate_q8, search, params, &r))
+        r.left = 0;
     // Right of it: the left camera (x - d in the right); its end there,
     // less the rim's disparity, is the end in the right image.
     const int start = object.right() + match.disparity - inset;
@@ -262,6 +278,9 @@ stereo_reach reach_past_sides(gray_cplane right, gray_cplane left, box object,
     const object_end e = find_end(right_side, match, max_distance, gate_q8, search, params, &r);
     if (e.distance >= 0)
         r.right = max_int(0, min_int(max_reach, start + e.distance - e.disparity - object.right()));
+    if (r.right > 0 &&
+        beside_at_object_depth(right_side, max_distance, match, gate_q8, search, params, &r))
+        r.right = 0;
     return r;
 }
 
@@ -281,11 +300,16 @@ stereo_reach reach_past_ends(gray_cplane right, gray_cplane left, box object,
     const side_probe top{right, left, +1, object.y + inset, -1, band_x, params.band_height, true};
     const object_end t = find_end(top, match, max_distance, gate_q8, search, params, &r);
     if (t.distance >= 0) r.up = max_int(0, min_int(max_reach, t.distance - inset));
+    if (r.up > 0 && beside_at_object_depth(top, max_distance, match, gate_q8, search, params, &r))
+        r.up = 0;
     const int start = object.bottom() - inset;
     const side_probe bottom{right, left, +1, start, +1, band_x, params.band_height, true};
     const object_end b = find_end(bottom, match, max_distance, gate_q8, search, params, &r);
     if (b.distance >= 0)
         r.down = max_int(0, min_int(max_reach, start + b.distance - object.bottom()));
+    if (r.down > 0 &&
+        beside_at_object_depth(bottom, max_distance, match, gate_q8, search, params, &r))
+        r.down = 0;
     return r;
 }
 

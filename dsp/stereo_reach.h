@@ -47,17 +47,26 @@
 // 0 (asked at a wrong disparity, the background's, the background's tiles
 // match there, and the side went out by its whole bound, half the box);
 // the image's edge met: the object ends there.
+// The object nearer than its background by more than `spread` is checked
+// where a side reaches out: the first tile past the probe's bound (beyond
+// where the object can reach) must not be the object's, else the
+// background beside it lies within the object's disparity span, matches
+// as the object does, and the side's reach is 0. A ball at the wall it
+// was thrown at (at the wall's disparity) read the wall's tiles as its
+// own up to a flat patch two tiles wide, which ended the run: widened
+// 25-43 px on both axes at its bounce (70-74 px balls).
 // d_object is the object's integer disparity (its core's), spread its
 // disparity span (object_depth.h).
-// Assumes: a rectified pair (the tile's rows only); the object nearer
-//   than its background by more than `spread` (a background within it
-//   matches as the object: a ball 0.5 m before a wall was widened 17-50
-//   px to a flat patch of it; the patch's next tile, the object's again,
-//   carries the reach on to its bound, where it moves nothing. A patch
-//   two tiles wide still ends it there).
-// Costs: per tile a SAD search (dsp::cost::sad_search_cycles); per split
-//   its columns read at two disparities (charged as a SAD search of
-//   split_columns x band_height at 2 positions).
+// Assumes: a rectified pair (the tile's rows only); a background as near
+//   beside the object as on the far tile (one within the span nearer the
+//   object only still matches as the object: a ball 0.5 m before a wall
+//   was widened 17-50 px to a flat patch of it; the patch's next tile, the
+//   object's again, carries the reach on to its bound, where it moves
+//   nothing).
+// Costs: per tile a SAD search (dsp::cost::sad_search_cycles), the far
+//   tile's among them; per split its columns read at two disparities
+//   (charged as a SAD search of split_columns x band_height at 2
+//   positions).
 #pragma once
 
 #include "dsp/image.h"

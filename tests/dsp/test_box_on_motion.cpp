@@ -2473,6 +2473,31 @@ INSTANTIATE_TEST_SUITE_P(
                                   rebound, 0.6, 8.5, 'y', photo3, 32, 0.0, 1.3}),
     case_name);
 
+// Seven open cases that pass since a reach is refused beside a background
+// at the object's depth (docs/firmware.md, "A reach beside a background
+// at the object's depth"), development cases of that rule: four balls
+// thrown at the wall (round 93's 21 px and 72 px, round 95's 70 px, round
+// 96's 74 px; traced on the 72 px one, their boxes widened 25-43 px at the
+// bounce) and three large balls going away near it (round 86's 227 px,
+// round 93's 132 px and round 95's 182 px; not traced).
+INSTANTIATE_TEST_SUITE_P(
+    ReachBesideTheWall, BoxOnMotion,
+    ::testing::Values(motion_case{"heldout86_23_recede227px_3_0m_teddy", 227, 3.0, recede, 1.0, 0.0,
+                                  'x', photo4, 40},
+                      motion_case{"heldout93_04_rebound21px_3_5m_3_3mps_1_1rps_y_cones", 21, 3.5,
+                                  rebound, 0.8, 1.1, 'y', photo, 33, 0.0, 3.3},
+                      motion_case{"heldout93_08_rebound72px_4_4m_4_0mps_aloe", 72, 4.4, rebound,
+                                  1.1, 0.0, 'z', aloe, 20, 0.0, 4.0},
+                      motion_case{"heldout93_14_recede132px_3_1m_0_7x_teddy", 132, 3.1, recede, 0.7,
+                                  0.0, 'z', photo4, 32},
+                      motion_case{"heldout95_11_recede182px_3_0m_0_3x_aloe", 182, 3.0, recede, 0.3,
+                                  0.0, 'y', aloe, 38},
+                      motion_case{"heldout95_16_rebound70px_4_2m_2_8mps_4_0rps_x_cones", 70, 4.2,
+                                  rebound, 0.6, 4.0, 'x', photo, 39, 0.0, 2.8},
+                      motion_case{"heldout96_14_rebound74px_4_4m_2_3mps_5_6rps_y_aloe", 74, 4.4,
+                                  rebound, 0.7, 5.6, 'y', aloe, 26, 0.0, 2.3}),
+    case_name);
+
 // Held out, round 98 at the wall: 40 balls thrown at the background's wall
 // or going away towards it (seed 198, HeldOutWall97's envelope), committed
 // before they were run, with and without the reach refused beside a
@@ -2480,15 +2505,15 @@ INSTANTIATE_TEST_SUITE_P(
 // after round 97, where none of the balls met the fault. Decision declared
 // here: the rule is kept only if, over rounds 97 and 98 together (cases
 // within 30 px a frame), it passes more than the firmware without it; as
-// round 97 tied, this round decides.
+// round 97 tied, this round decides. All 40 moved within 30 px a frame:
+// 31 passed with the rule and 26 without it, none the other way (65 to
+// 60 over both rounds): kept. The nine failures are in DISABLED_Open.
 INSTANTIATE_TEST_SUITE_P(
     HeldOutWall98, BoxOnMotion,
     ::testing::Values(motion_case{"heldout98w_00_rebound53px_4_0m_4_0mps_5_8rps_x_venus", 53, 4.0,
                                   rebound, 0.9, 5.8, 'x', venus, 29, 0.0, 4.0},
                       motion_case{"heldout98w_01_recede142px_2_1m_1_2x_tsukuba", 142, 2.1, recede,
                                   1.2, 0.0, 'z', tsukuba, 32},
-                      motion_case{"heldout98w_02_recede24px_3_2m_4_1x_6_4rps_x_venus", 24, 3.2,
-                                  recede, 4.1, 6.4, 'x', venus, 30},
                       motion_case{"heldout98w_03_recede42px_2_2m_0_7x_tsukuba", 42, 2.2, recede,
                                   0.7, 0.0, 'y', tsukuba, 25},
                       motion_case{"heldout98w_04_rebound100px_3_8m_2_2mps_tsukuba", 100, 3.8,
@@ -2501,16 +2526,12 @@ INSTANTIATE_TEST_SUITE_P(
                                   rebound, 0.9, 8.1, 'z', venus, 27, 0.0, 3.2},
                       motion_case{"heldout98w_08_recede79px_3_2m_3_8x_2_1rps_y_kodim23", 79, 3.2,
                                   recede, 3.8, 2.1, 'y', photo2, 34},
-                      motion_case{"heldout98w_09_recede13px_3_2m_1_4x_2_2rps_y_kodim19", 13, 3.2,
-                                  recede, 1.4, 2.2, 'y', photo3, 39},
                       motion_case{"heldout98w_10_recede230px_2_5m_3_3x_5_7rps_x_tsukuba", 230, 2.5,
                                   recede, 3.3, 5.7, 'x', tsukuba, 30},
                       motion_case{"heldout98w_11_rebound102px_3_8m_2_9mps_aloe", 102, 3.8, rebound,
                                   1.0, 0.0, 'y', aloe, 28, 0.0, 2.9},
                       motion_case{"heldout98w_12_recede230px_3_3m_1_5x_kodim19", 230, 3.3, recede,
                                   1.5, 0.0, 'y', photo3, 39},
-                      motion_case{"heldout98w_13_recede77px_2_4m_1_5x_teddy", 77, 2.4, recede, 1.5,
-                                  0.0, 'z', photo4, 40},
                       motion_case{"heldout98w_14_recede45px_2_2m_0_5x_kodim23", 45, 2.2, recede,
                                   0.5, 0.0, 'x', photo2, 34},
                       motion_case{"heldout98w_15_recede50px_3_9m_0_5x_1_5rps_x_kodim19", 50, 3.9,
@@ -2519,12 +2540,8 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.8, 0.0, 'z', photo2, 39, 0.0, 1.8},
                       motion_case{"heldout98w_17_rebound33px_3_8m_1_1mps_1_6rps_y_cones", 33, 3.8,
                                   rebound, 0.6, 1.6, 'y', photo, 33, 0.0, 1.1},
-                      motion_case{"heldout98w_18_recede12px_2_5m_1_3x_5_0rps_x_venus", 12, 2.5,
-                                  recede, 1.3, 5.0, 'x', venus, 34},
                       motion_case{"heldout98w_19_recede81px_2_3m_0_4x_tsukuba", 81, 2.3, recede,
                                   0.4, 0.0, 'x', tsukuba, 30},
-                      motion_case{"heldout98w_20_rebound26px_4_4m_2_4mps_6_5rps_z_teddy", 26, 4.4,
-                                  rebound, 0.7, 6.5, 'z', photo4, 26, 0.0, 2.4},
                       motion_case{"heldout98w_21_recede23px_3_9m_0_4x_2_5rps_x_cones", 23, 3.9,
                                   recede, 0.4, 2.5, 'x', photo, 36},
                       motion_case{"heldout98w_22_recede162px_2_2m_2_6x_kodim19", 162, 2.2, recede,
@@ -2535,12 +2552,8 @@ INSTANTIATE_TEST_SUITE_P(
                                   recede, 0.5, 5.5, 'z', photo, 38},
                       motion_case{"heldout98w_25_rebound39px_4_4m_3_6mps_2_7rps_y_aloe", 39, 4.4,
                                   rebound, 1.0, 2.7, 'y', aloe, 27, 0.0, 3.6},
-                      motion_case{"heldout98w_26_recede13px_3_3m_1_4x_1_3rps_x_aloe", 13, 3.3,
-                                  recede, 1.4, 1.3, 'x', aloe, 35},
                       motion_case{"heldout98w_27_recede33px_4_0m_0_5x_7_0rps_y_teddy", 33, 4.0,
                                   recede, 0.5, 7.0, 'y', photo4, 24},
-                      motion_case{"heldout98w_28_rebound104px_4_2m_3_4mps_1_2rps_z_tsukuba", 104,
-                                  4.2, rebound, 0.4, 1.2, 'z', tsukuba, 39, 0.0, 3.4},
                       motion_case{"heldout98w_29_rebound30px_3_7m_1_7mps_kodim19", 30, 3.7, rebound,
                                   0.6, 0.0, 'x', photo3, 33, 0.0, 1.7},
                       motion_case{"heldout98w_30_rebound27px_3_8m_3_0mps_9_4rps_y", 27, 3.8,
@@ -2553,16 +2566,12 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.8, 0.0, 'z', photo4, 28, 0.0, 2.4},
                       motion_case{"heldout98w_34_rebound27px_4_0m_3_8mps_1_4rps_z_venus", 27, 4.0,
                                   rebound, 1.0, 1.4, 'z', venus, 29, 0.0, 3.8},
-                      motion_case{"heldout98w_35_recede14px_2_5m_1_9x_cones", 14, 2.5, recede, 1.9,
-                                  0.0, 'y', photo, 38},
                       motion_case{"heldout98w_36_rebound67px_4_3m_3_1mps_teddy", 67, 4.3, rebound,
                                   0.9, 0.0, 'y', photo4, 26, 0.0, 3.1},
                       motion_case{"heldout98w_37_recede127px_3_0m_2_1x_kodim19", 127, 3.0, recede,
                                   2.1, 0.0, 'y', photo3, 28},
                       motion_case{"heldout98w_38_recede20px_4_0m_1_7x_kodim19", 20, 4.0, recede,
-                                  1.7, 0.0, 'z', photo3, 27},
-                      motion_case{"heldout98w_39_recede21px_3_1m_4_8x_venus", 21, 3.1, recede, 4.8,
-                                  0.0, 'z', venus, 36}),
+                                  1.7, 0.0, 'z', photo3, 27}),
     case_name);
 
 // Round 91's two held-out failures (HeldOutSweep91), on the depth alone: a
@@ -2572,9 +2581,8 @@ INSTANTIATE_TEST_SUITE_P(
 // 4.3 m, its measured depth 1.05 % far at its last pair, 14 pairs after
 // its bounce (not traced).
 // Held-out rounds 92 and 93's failures (HeldOutTurns92, HeldOutTurns93):
-// a 30 px ball swung round, a side 0.6 px over; balls of 21-96 px thrown
-// at the wall (6.58-21.18 px at one pair; the 96 px one 18.03 px, its
-// depth 1.25 %) and a 132 px ball going away (31.95 px).
+// a 30 px ball swung round, a side 0.6 px over, and a 96 px ball thrown at
+// the wall (18.03 px at one pair, its depth 1.25 %).
 // Six that failed on the depth alone at one pair and passed while a pair's
 // depth off the track's fitted depths was reported at the fit (the depth
 // gate, removed since: docs/firmware.md, "The measured depth"): round 78's
@@ -2586,18 +2594,19 @@ INSTANTIATE_TEST_SUITE_P(
 // Held-out rounds 94 and 95's failures (HeldOutSweep94, HeldOutSweep95):
 // on the depth alone, balls of 13-36 px entering (1.16-1.68 %) or coming
 // nearer (a 13 px one, 24.1 %); on the box, 20 px and 27 px circles at
-// 21-24 px a frame (7.91 and 10.52 px at one pair), a 182 px ball going
-// away slowly, its box 61 px too wide near the background plane (39.68
-// px), and balls of 70 px and 94 px thrown at the wall (20.42 and 25.00
-// px at one pair, the 94 px one's depth 1.20 %).
+// 21-24 px a frame (7.91 and 10.52 px at one pair); a 94 px ball thrown
+// at the wall on its depth (1.20 %).
 // Held-out round 97's failures (HeldOutSweep97, HeldOutWall97), all ten
 // balls of 14-28 px: five on the depth alone (1.02-1.88 %), three on a
 // side 0.8-2.8 px past its bound, a 16 px pass on both (8.08 px, 1.04 %)
 // and a 16 px ball going away on both (a side 1 px over, 2.58 %).
-// Held-out round 96's failures (HeldOutSweep96): balls of 74 px and 35 px
-// thrown at the wall (21.21 px at one pair; depth 1.37 %), a 20 px throw
-// over venus (7.78 px) and a 13 px ball on the circle's other side (depth
-// 1.49 %).
+// Held-out round 96's failures (HeldOutSweep96): a 35 px ball thrown at
+// the wall (depth 1.37 %), a 20 px throw over venus (7.78 px) and a 13 px
+// ball on the circle's other side (depth 1.49 %).
+// Held-out round 98's failures (HeldOutWall98): seven balls of 12-26 px
+// on the depth (1.17-3.32 %; a 24 px one a side 0.2 px over too), a 104 px
+// ball thrown at the wall (6.41 px, 1.05 %) and a 77 px ball going away
+// (9.58 px, a side 3.6 px over, 1.66 %).
 INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
     ::testing::Values(motion_case{"heldout78_00_circle16px_3_8m_3_3rps_x_kodim23", 16, 3.8, circle,
@@ -2628,8 +2637,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   'x', photo4, 24},
                       motion_case{"heldout86_01_back222px_3_4m_5_5rps_y_aloe", 222, 3.4,
                                   circle_back, 2.1, 5.5, 'y', aloe, 24},
-                      motion_case{"heldout86_23_recede227px_3_0m_teddy", 227, 3.0, recede, 1.0, 0.0,
-                                  'x', photo4, 40},
                       motion_case{"heldout86_25_back229px_3_7m_2_4rps_y_tsukuba", 229, 3.7,
                                   circle_back, 1.0, 2.4, 'y', tsukuba, 40},
                       motion_case{"heldout91_10_recede14px_3_8m_cones", 14, 3.8, recede, 2.7, 0.0,
@@ -2638,14 +2645,8 @@ INSTANTIATE_TEST_SUITE_P(
                                   2.3, 2.9, 'z', photo4, 40},
                       motion_case{"heldout92_04_rebound96px_3_5m_1_7mps_5_7rps_x_teddy", 96, 3.5,
                                   rebound, 0.8, 5.7, 'x', photo4, 46, 0.0, 1.7},
-                      motion_case{"heldout93_04_rebound21px_3_5m_3_3mps_1_1rps_y_cones", 21, 3.5,
-                                  rebound, 0.8, 1.1, 'y', photo, 33, 0.0, 3.3},
-                      motion_case{"heldout93_08_rebound72px_4_4m_4_0mps_aloe", 72, 4.4, rebound,
-                                  1.1, 0.0, 'z', aloe, 20, 0.0, 4.0},
                       motion_case{"heldout93_09_orbit_far30px_2_4m_1_3x_kodim23", 30, 2.4,
                                   orbit_far, 1.3, 0.0, 'x', photo2, 34},
-                      motion_case{"heldout93_14_recede132px_3_1m_0_7x_teddy", 132, 3.1, recede, 0.7,
-                                  0.0, 'z', photo4, 32},
                       motion_case{"circle35px_3pxpf_2rps_x_cones_32f", 35, 2.6, circle, 0.4, 2.0,
                                   'x', photo, 32},
                       motion_case{"rebound25px_1_5mps_4_3m_teddy", 25, 4.3, rebound, 0.5, 0.0, 'x',
@@ -2662,14 +2663,8 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.0, 'x', photo2, 28},
                       motion_case{"heldout94_16_enter13px_3_1m_4_3x_kodim19", 13, 3.1, enter, 4.3,
                                   0.0, 'z', photo3, 40},
-                      motion_case{"heldout95_11_recede182px_3_0m_0_3x_aloe", 182, 3.0, recede, 0.3,
-                                  0.0, 'y', aloe, 38},
                       motion_case{"heldout95_15_rebound94px_4_3m_2_1mps_aloe", 94, 4.3, rebound,
                                   0.5, 0.0, 'z', aloe, 32, 0.0, 2.1},
-                      motion_case{"heldout95_16_rebound70px_4_2m_2_8mps_4_0rps_x_cones", 70, 4.2,
-                                  rebound, 0.6, 4.0, 'x', photo, 39, 0.0, 2.8},
-                      motion_case{"heldout96_14_rebound74px_4_4m_2_3mps_5_6rps_y_aloe", 74, 4.4,
-                                  rebound, 0.7, 5.6, 'y', aloe, 26, 0.0, 2.3},
                       motion_case{"heldout96_25_rebound35px_4_1m_2_3mps_9_5rps_x_tsukuba", 35, 4.1,
                                   rebound, 1.0, 9.5, 'x', tsukuba, 32, 0.0, 2.3},
                       motion_case{"heldout96_26_thrown20px_4_0m_1_2x_3_6rps_z_venus", 20, 4.0,
@@ -2695,7 +2690,25 @@ INSTANTIATE_TEST_SUITE_P(
                       motion_case{"heldout97w_06_recede19px_3_1m_2_5x", 19, 3.1, recede, 2.5, 0.0,
                                   'y', procedural, 36},
                       motion_case{"heldout97w_14_recede16px_2_6m_1_5x_6_5rps_x_kodim23", 16, 2.6,
-                                  recede, 1.5, 6.5, 'x', photo2, 34}),
+                                  recede, 1.5, 6.5, 'x', photo2, 34},
+                      motion_case{"heldout98w_02_recede24px_3_2m_4_1x_6_4rps_x_venus", 24, 3.2,
+                                  recede, 4.1, 6.4, 'x', venus, 30},
+                      motion_case{"heldout98w_09_recede13px_3_2m_1_4x_2_2rps_y_kodim19", 13, 3.2,
+                                  recede, 1.4, 2.2, 'y', photo3, 39},
+                      motion_case{"heldout98w_13_recede77px_2_4m_1_5x_teddy", 77, 2.4, recede, 1.5,
+                                  0.0, 'z', photo4, 40},
+                      motion_case{"heldout98w_18_recede12px_2_5m_1_3x_5_0rps_x_venus", 12, 2.5,
+                                  recede, 1.3, 5.0, 'x', venus, 34},
+                      motion_case{"heldout98w_20_rebound26px_4_4m_2_4mps_6_5rps_z_teddy", 26, 4.4,
+                                  rebound, 0.7, 6.5, 'z', photo4, 26, 0.0, 2.4},
+                      motion_case{"heldout98w_26_recede13px_3_3m_1_4x_1_3rps_x_aloe", 13, 3.3,
+                                  recede, 1.4, 1.3, 'x', aloe, 35},
+                      motion_case{"heldout98w_28_rebound104px_4_2m_3_4mps_1_2rps_z_tsukuba", 104,
+                                  4.2, rebound, 0.4, 1.2, 'z', tsukuba, 39, 0.0, 3.4},
+                      motion_case{"heldout98w_35_recede14px_2_5m_1_9x_cones", 14, 2.5, recede, 1.9,
+                                  0.0, 'y', photo, 38},
+                      motion_case{"heldout98w_39_recede21px_3_1m_4_8x_venus", 21, 3.1, recede, 4.8,
+                                  0.0, 'z', venus, 36}),
     case_name);
 
 }  // namespace

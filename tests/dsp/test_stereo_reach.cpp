@@ -31,12 +31,14 @@ bool on_object(int x, int y) {
     return x >= object_x0 && x < object_x1 && y >= object_y0 && y < object_y1;
 }
 
-enum class backdrop { textured, flat, faint, periodic, noisy, flat_patch };
+enum class backdrop { textured, flat, faint, periodic, noisy, flat_patch, wide_flat_patch };
 
 // The flat_patch backdrop's flat columns (in the right image): 12 px, so
 // that exactly one tile of the reach's past the left side lies wholly on
 // them (tiles of 8 px every 4 px).
 constexpr int patch_x0 = 68, patch_x1 = 80;
+// The wide_flat_patch backdrop's: 20 px, two tiles wholly on them in a row.
+constexpr int wide_patch_x0 = 60, wide_patch_x1 = 80;
 
 // The period of the periodic backdrop: the object's disparity less the
 // background's, so that right of the object, where the left camera sees
@@ -50,14 +52,17 @@ constexpr int period = object_disparity - background_disparity;
 // wall as a sensor sees it: it matches about equally badly everywhere).
 // The object's first `noisy_rim` columns are such a wall too (a shaded rim
 // with no texture left); its columns [flat_from, flat_to) one grey level (a
-// plain band on its surface).
-pair_images make_pair(backdrop kind, int noisy_rim = 0, int flat_from = 0, int flat_to = 0) {
+// plain band on its surface). The background stands at `back_disparity`.
+pair_images make_pair(backdrop kind, int noisy_rim = 0, int flat_from = 0, int flat_to = 0,
+                      int back_disparity = background_disparity) {
     pair_images p{std::vector<uint8_t>(width * height), std::vector<uint8_t>(width * height)};
     auto back = [&](int x, int y) {
         if (kind == backdrop::periodic)
             return layer_texture(0, ((x % period) + period) % period, y);
         if (kind == backdrop::flat_patch)
             return x >= patch_x0 && x < patch_x1 ? uint8_t{90} : layer_texture(0, x, y);
+        if (kind == backdrop::wide_flat_patch)
+            return x >= wide_patch_x0 && x < wide_patch_x1 ? uint8_t{90} : layer_texture(0, x, y);
         return kind == backdrop::flat    ? uint8_t{90}
                : kind == backdrop::faint ? static_cast<uint8_t>(88 + layer_texture(0, x, y) % 6)
                                          : layer_texture(0, x, y);
@@ -80,7 +85,7 @@ pair_images make_pair(backdrop kind, int noisy_rim = 0, int flat_from = 0, int f
             const int x_object = x - object_disparity;
             p.left[y * width + x] = on_object(x_object, y) ? object(1, x_object, x, y)
                                     : noisy                ? noise(1, x, y)
-                                                           : back(x - background_disparity, y);
+                                                           : back(x - back_disparity, y);
         }
     }
     return p;
@@ -115,11 +120,12 @@ TEST(StereoReach, ABoxShortAtBothSidesReachesTheObjectsSides) {
     EXPECT_NEAR(r.left, 24, 2);
     EXPECT_NEAR(r.right, 13, 2);
     // The tiles wholly on the object (5 left, 2 right), a part-object one
-    // either way, and the first two not the object's a side (an end is
-    // taken where the next tile is not the object's either), each over the
-    // depth range (81 disparities); both ends split.
-    EXPECT_GE(r.tiles, 11);
-    EXPECT_LE(r.tiles, 13);
+    // either way, the first two not the object's a side (an end is taken
+    // where the next tile is not the object's either) and the tile past
+    // the bound a side, each over the depth range (81 disparities); both
+    // ends split.
+    EXPECT_GE(r.tiles, 13);
+    EXPECT_LE(r.tiles, 15);
     EXPECT_EQ(r.positions, 81 * r.tiles);
     EXPECT_EQ(r.split_columns, 2 * 12);
 }
@@ -201,6 +207,28 @@ TEST(StereoReach, AnObjectWhoseSidesAreNotMetIsNotWidened) {
     EXPECT_EQ(r.right, 0);
 }
 
+// The object's sides 26 px past the box's, the bound 10: every tile read
+// (to 27 px out from the probe's start, 3 px inside the side) is the
+// object's, its end is not met, and the box is not widened. The tile past
+// the bound (24-31 px out) is 5 of its 8 columns background and does not
+// refuse the reach: the guard of an end not met stands alone here (as 40
+// px past, the tile past the bound is the object's and refuses it too).
+TEST(StereoReach, AnObjectWhoseSidesAreNotMetIsNotWidenedToTheBound) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::stereo_reach r = reach(p, dsp::box{object_x0 + 26, object_y0, 68, 80}, 10);
+    EXPECT_EQ(r.left, 0);
+    EXPECT_EQ(r.right, 0);
+}
+
+// A bound that puts the tile past it beyond the image's left edge (120 px
+// from a box at x = 124): the background beside the object is not read
+// there, and the side is reached.
+TEST(StereoReach, AFarTileBeyondTheImageRefusesNothing) {
+    const pair_images p = make_pair(backdrop::textured);
+    const dsp::box narrow{object_x0 + 24, object_y0, 120 - 24 - 13, 80};
+    EXPECT_NEAR(reach(p, narrow, 120).left, 24, 2);
+}
+
 // A box 8 px wider than the object each side, asked at the background's
 // disparity (a core that matched what is behind): the background's tiles
 // match there all the way to the bound. Unguarded the box was widened by
@@ -237,6 +265,21 @@ TEST(StereoReach, AFlatPatchInABackgroundWithinTheSpanIsNotTheObjectsEnd) {
         reach(p, dsp::box{object_x0 - 8, object_y0, 136, 80}, 30, background_disparity + 3);
     EXPECT_EQ(r.left, 0);
     EXPECT_EQ(r.right, 0);
+}
+
+// A ball at the wall it was thrown at: the background 1 px behind the
+// object's 40, within the spread (3 px), matches as the object does, and
+// a flat patch two tiles wide, 44-64 px left of the box, ends the run of
+// its tiles: read as the object's end, the box went about 44 px out to
+// it (the object's side is 24 px out). The tile past the bound is the
+// object's, the background beside it at the object's depth: no reach.
+TEST(StereoReach, ABackgroundAtTheObjectsDepthBesideItIsNoReach) {
+    const dsp::box narrow{object_x0 + 24, object_y0, 60, 80};
+    const pair_images wall = make_pair(backdrop::wide_flat_patch, 0, 0, 0, object_disparity - 1);
+    EXPECT_EQ(reach(wall, narrow).left, 0);
+    // The same patch 30 px behind the object: its side is reached.
+    const pair_images behind = make_pair(backdrop::wide_flat_patch);
+    EXPECT_NEAR(reach(behind, narrow).left, 24, 2);
 }
 
 TEST(StereoReach, AnObjectAtTheBackgroundsDisparityIsNotWidened) {
