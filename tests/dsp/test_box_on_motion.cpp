@@ -2576,10 +2576,13 @@ INSTANTIATE_TEST_SUITE_P(
 
 // Held out, round 99: 30 cases drawn at random (seed 99, rounds 94 and
 // 95's envelope) and committed before they were run, with and without the
-// core's sub-pixel step read at half-pixel shifts (docs/firmware.md).
-// Decision declared here: that step is kept only if, over this round and
+// sub-pixel step read at half-pixel shifts (docs/firmware.md, "Open").
+// Decision declared then: that step is kept only if, over this round and
 // HeldOutSmall99 together, it passes more of the cases in the envelope (30
-// px a frame at most) than the firmware without it.
+// px a frame at most) than the firmware without it. One moved faster (left
+// out); of the other 29, 26 passed and 3 failed (DISABLED_Open) without it.
+// Over both rounds, 40 of 48 passed with the step and 40 without it: a tie
+// (two passed with it only, two without it only), so it was not kept.
 INSTANTIATE_TEST_SUITE_P(
     HeldOutSweep99, BoxOnMotion,
     ::testing::Values(motion_case{"heldout99_00_recede38px_3_2m_0_6x_1_8rps_z_venus", 38, 3.2,
@@ -2600,8 +2603,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   approach, 2.6, 7.3, 'x', photo2, 28},
                       motion_case{"heldout99_08_orbit_near136px_2_1m_1_2x_9_9rps_y_kodim23", 136,
                                   2.1, orbit_near, 1.2, 9.9, 'y', photo2, 30},
-                      motion_case{"heldout99_09_rebound34px_4_0m_1_8mps_kodim23", 34, 4.0, rebound,
-                                  0.6, 0.0, 'y', photo2, 26, 0.0, 1.8},
                       motion_case{"heldout99_10_rebound33px_4_1m_1_6mps_8_4rps_y_venus", 33, 4.1,
                                   rebound, 0.4, 8.4, 'y', venus, 37, 0.0, 1.6},
                       motion_case{"heldout99_11_enter59px_2_4m_0_3x_8_7rps_y_kodim19", 59, 2.4,
@@ -2620,24 +2621,18 @@ INSTANTIATE_TEST_SUITE_P(
                                   orbit_far, 2.4, 8.8, 'z', venus, 24},
                       motion_case{"heldout99_18_left54px_2_4m_1_3x_kodim23", 54, 2.4, pass_left,
                                   1.3, 0.0, 'z', photo2, 40},
-                      motion_case{"heldout99_19_approach196px_2_5m_3_3x_6_0rps_z_teddy", 196, 2.5,
-                                  approach, 3.3, 6.0, 'z', photo4, 30},
                       motion_case{"heldout99_20_pass240px_3_6m_0_4x_1_5rps_y_tsukuba", 240, 3.6,
                                   pass, 0.4, 1.5, 'y', tsukuba, 33},
                       motion_case{"heldout99_21_circle116px_4_0m_2_8x_2_6rps_y_tsukuba", 116, 4.0,
                                   circle, 2.8, 2.6, 'y', tsukuba, 28},
                       motion_case{"heldout99_22_thrown179px_3_7m_2_1x_6_1rps_z_kodim23", 179, 3.7,
                                   thrown, 2.1, 6.1, 'z', photo2, 35},
-                      motion_case{"heldout99_23_back22px_2_9m_3_2x_aloe", 22, 2.9, circle_back, 3.2,
-                                  0.0, 'x', aloe, 39},
                       motion_case{"heldout99_24_orbit_far39px_2_1m_1_5x_1_1rps_y_aloe", 39, 2.1,
                                   orbit_far, 1.5, 1.1, 'y', aloe, 26},
                       motion_case{"heldout99_25_enter85px_2_0m_2_0x_1_1rps_y_venus", 85, 2.0, enter,
                                   2.0, 1.1, 'y', venus, 32},
                       motion_case{"heldout99_26_thrown18px_3_8m_0_9x_5_6rps_z_teddy", 18, 3.8,
                                   thrown, 0.9, 5.6, 'z', photo4, 29},
-                      motion_case{"heldout99_27_approach14px_3_6m_0_6x_5_4rps_y_teddy", 14, 3.6,
-                                  approach, 0.6, 5.4, 'y', photo4, 35},
                       motion_case{"heldout99_28_left64px_2_4m_1_4x_cones", 64, 2.4, pass_left, 1.4,
                                   0.0, 'z', photo, 27},
                       motion_case{"heldout99_29_thrown142px_2_3m_0_4x_venus", 142, 2.3, thrown, 0.4,
@@ -2646,7 +2641,8 @@ INSTANTIATE_TEST_SUITE_P(
 
 // Held out, round 99's small balls: 20 balls of 12-40 px on every path
 // (seed 199, rounds 94 and 95's envelope otherwise), committed with
-// HeldOutSweep99 before they were run.
+// HeldOutSweep99 before they were run. One moved faster (left out); of the
+// other 19, 14 passed and 5 failed (DISABLED_Open).
 INSTANTIATE_TEST_SUITE_P(
     HeldOutSmall99, BoxOnMotion,
     ::testing::Values(motion_case{"heldout99s_00_enter29px_3_7m_2_0x_5_3rps_z_tsukuba", 29, 3.7,
@@ -2655,22 +2651,16 @@ INSTANTIATE_TEST_SUITE_P(
                                   circle, 1.3, 6.2, 'z', venus, 39},
                       motion_case{"heldout99s_02_rebound16px_4_0m_3_6mps_4_4rps_z_tsukuba", 16, 4.0,
                                   rebound, 0.8, 4.4, 'z', tsukuba, 37, 0.0, 3.6},
-                      motion_case{"heldout99s_03_enter31px_2_8m_0_5x_cones", 31, 2.8, enter, 0.5,
-                                  0.0, 'y', photo, 25},
                       motion_case{"heldout99s_04_pass26px_3_1m_2_5x_kodim23", 26, 3.1, pass, 2.5,
                                   0.0, 'x', photo2, 37},
                       motion_case{"heldout99s_05_pass24px_2_2m_1_3x", 24, 2.2, pass, 1.3, 0.0, 'x',
                                   procedural, 34},
-                      motion_case{"heldout99s_06_thrown14px_3_6m_4_9x_venus", 14, 3.6, thrown, 4.9,
-                                  0.0, 'x', venus, 27},
                       motion_case{"heldout99s_07_thrown14px_3_7m_1_7x_kodim23", 14, 3.7, thrown,
                                   1.7, 0.0, 'y', photo2, 40},
                       motion_case{"heldout99s_08_recede19px_3_0m_1_0x_teddy", 19, 3.0, recede, 1.0,
                                   0.0, 'y', photo4, 33},
                       motion_case{"heldout99s_09_back16px_2_7m_0_3x_teddy", 16, 2.7, circle_back,
                                   0.3, 0.0, 'z', photo4, 30},
-                      motion_case{"heldout99s_10_recede16px_2_5m_1_0x_4_6rps_x_tsukuba", 16, 2.5,
-                                  recede, 1.0, 4.6, 'x', tsukuba, 33},
                       motion_case{"heldout99s_11_back28px_3_3m_2_1x", 28, 3.3, circle_back, 2.1,
                                   0.0, 'z', procedural, 37},
                       motion_case{"heldout99s_12_pass33px_2_3m_0_5x_kodim19", 33, 2.3, pass, 0.5,
@@ -2681,14 +2671,8 @@ INSTANTIATE_TEST_SUITE_P(
                                   'x', procedural, 24},
                       motion_case{"heldout99s_15_circle40px_2_9m_1_2x_3_9rps_y_tsukuba", 40, 2.9,
                                   circle, 1.2, 3.9, 'y', tsukuba, 36},
-                      motion_case{"heldout99s_16_pass14px_2_2m_3_4x_teddy", 14, 2.2, pass, 3.4, 0.0,
-                                  'y', photo4, 32},
                       motion_case{"heldout99s_17_approach39px_3_9m_0_5x_2_0rps_x_venus", 39, 3.9,
-                                  approach, 0.5, 2.0, 'x', venus, 35},
-                      motion_case{"heldout99s_18_rebound13px_3_9m_2_5mps_1_1rps_x_kodim19", 13, 3.9,
-                                  rebound, 0.8, 1.1, 'x', photo3, 32, 0.0, 2.5},
-                      motion_case{"heldout99s_19_rebound33px_4_0m_1_5mps_tsukuba", 33, 4.0, rebound,
-                                  0.7, 0.0, 'y', tsukuba, 35, 0.0, 1.5}),
+                                  approach, 0.5, 2.0, 'x', venus, 35}),
     case_name);
 
 // Round 91's two held-out failures (HeldOutSweep91), on the depth alone: a
@@ -2720,6 +2704,13 @@ INSTANTIATE_TEST_SUITE_P(
 // Held-out round 96's failures (HeldOutSweep96): a 35 px ball thrown at
 // the wall (depth 1.37 %), a 20 px throw over venus (7.78 px) and a 13 px
 // ball on the circle's other side (depth 1.49 %).
+// Held-out round 99's failures (HeldOutSweep99, HeldOutSmall99): on the
+// depth alone, 14 px balls passing and coming nearer (1.29 and 1.07 %); a
+// 13 px ball thrown at the wall, a side 2 px over and 1.92 %; balls of 33
+// and 34 px thrown at the wall, a side 0.2 and 1.4 px over; a 22 px ball
+// on the circle's other side at 25 px a frame (8.90 px, 1.23 %); a 16 px
+// ball going away (9.53 px, 68.8 %); a 31 px ball entering at 2.5 px a
+// frame over cones, never detected.
 // Held-out round 98's failures (HeldOutWall98): seven balls of 12-26 px
 // on the depth (1.17-3.32 %; a 24 px one a side 0.2 px over too), a 104 px
 // ball thrown at the wall (6.41 px, 1.05 %) and a 77 px ball going away
@@ -2825,7 +2816,23 @@ INSTANTIATE_TEST_SUITE_P(
                       motion_case{"heldout98w_35_recede14px_2_5m_1_9x_cones", 14, 2.5, recede, 1.9,
                                   0.0, 'y', photo, 38},
                       motion_case{"heldout98w_39_recede21px_3_1m_4_8x_venus", 21, 3.1, recede, 4.8,
-                                  0.0, 'z', venus, 36}),
+                                  0.0, 'z', venus, 36},
+                      motion_case{"heldout99_09_rebound34px_4_0m_1_8mps_kodim23", 34, 4.0, rebound,
+                                  0.6, 0.0, 'y', photo2, 26, 0.0, 1.8},
+                      motion_case{"heldout99_23_back22px_2_9m_3_2x_aloe", 22, 2.9, circle_back, 3.2,
+                                  0.0, 'x', aloe, 39},
+                      motion_case{"heldout99_27_approach14px_3_6m_0_6x_5_4rps_y_teddy", 14, 3.6,
+                                  approach, 0.6, 5.4, 'y', photo4, 35},
+                      motion_case{"heldout99s_03_enter31px_2_8m_0_5x_cones", 31, 2.8, enter, 0.5,
+                                  0.0, 'y', photo, 25},
+                      motion_case{"heldout99s_10_recede16px_2_5m_1_0x_4_6rps_x_tsukuba", 16, 2.5,
+                                  recede, 1.0, 4.6, 'x', tsukuba, 33},
+                      motion_case{"heldout99s_16_pass14px_2_2m_3_4x_teddy", 14, 2.2, pass, 3.4, 0.0,
+                                  'y', photo4, 32},
+                      motion_case{"heldout99s_18_rebound13px_3_9m_2_5mps_1_1rps_x_kodim19", 13, 3.9,
+                                  rebound, 0.8, 1.1, 'x', photo3, 32, 0.0, 2.5},
+                      motion_case{"heldout99s_19_rebound33px_4_0m_1_5mps_tsukuba", 33, 4.0, rebound,
+                                  0.7, 0.0, 'y', tsukuba, 35, 0.0, 1.5}),
     case_name);
 
 }  // namespace
