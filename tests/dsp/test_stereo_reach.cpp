@@ -210,9 +210,10 @@ TEST(StereoReach, AnObjectWhoseSidesAreNotMetIsNotWidened) {
 // The object's sides 26 px past the box's, the bound 10: every tile read
 // (to 27 px out from the probe's start, 3 px inside the side) is the
 // object's, its end is not met, and the box is not widened. The tile past
-// the bound (24-31 px out) is 5 of its 8 columns background and does not
-// refuse the reach: the guard of an end not met stands alone here (as 40
-// px past, the tile past the bound is the object's and refuses it too).
+// the bound (24-31 px out) holds 3 columns of background and 5 of the
+// object, is not read as the object's and refuses nothing: the guard of an
+// end not met stands alone here (40 px past, the tile past the bound is
+// the object's and refuses the reach too).
 TEST(StereoReach, AnObjectWhoseSidesAreNotMetIsNotWidenedToTheBound) {
     const pair_images p = make_pair(backdrop::textured);
     const dsp::stereo_reach r = reach(p, dsp::box{object_x0 + 26, object_y0, 68, 80}, 10);
