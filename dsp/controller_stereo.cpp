@@ -32,8 +32,11 @@ void controller::impl::stereo_sad(box object, bool outlined, frame_output& out) 
         cycles_of(cost::sad_search_profile(core.width, core.height, out.sad_match.positions)));
     // The round core's rows: an ellipse's half width a row, as the tiles' outline.
     if (pattern.round) scope.charge(cycles_of(cost::surface_outline_profile(core.height, 1, 0)));
-    if (config.stereo.subpixel && out.sad_match.valid)
+    if (config.stereo.subpixel && out.sad_match.valid) {
         scope.charge(cycles_of(cost::subpixel_profile()));
+        if (config.stereo.fit == subpixel_fit::half_pel)
+            scope.charge(cycles_of(cost::half_pel_profile(core.width, core.height)));
+    }
     if (!out.sad_match.valid || out.sad_at_range_end) return;
     // Where the object stops short of the box, read at the core's
     // disparity, the tiled depth is read on the box moved in: the

@@ -345,6 +345,21 @@ kernel_profile subpixel_profile() {
     return p;
 }
 
+kernel_profile half_pel_profile(int pattern_w, int pattern_h) {
+    // Two positions, a half pixel either side of the minimum; per word of 4
+    // pixels, in halfwords: LDNW of the pattern and of the two left columns
+    // (d 3), UNPKLU4/UNPKHU4 of each (ls 6), ADD2 x2 of the left pair and
+    // x2 of the pattern to itself, SUB2 x2 (lsd 6), ABS2 x2 (l 2), DOTP2 x2
+    // with 1s into the sum (m 2). ASSUMED, no TI kernel of this shape; an
+    // estimate. A masked pattern is charged as its whole box.
+    const uint64_t w = non_negative(pattern_w), h = non_negative(pattern_h);
+    kernel_profile p("half_pel");
+    p.add(loop("pattern word", op_mix{/*l*/ 2, 0, /*m*/ 2, /*d*/ 3, /*ls*/ 6, /*lsd*/ 6},
+               2 * ceil_div(w, 4) * h,
+               latency_load + 4 * latency_alu + latency_dotpu4 + latency_alu));
+    return p;
+}
+
 kernel_profile surface_outline_profile(int rows, int columns, int inside) {
     // Per object row: the ellipse's half width, an integer square root by
     // bits (31 steps of ADD, MPY, CMPGTU, conditional add: l 2, m 1, lsd 2,

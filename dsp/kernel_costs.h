@@ -110,6 +110,8 @@ c64x::kernel_profile connected_components_profile(int width, int height, int for
 c64x::kernel_profile sad_search_profile(int pattern_w, int pattern_h, int positions);
 c64x::kernel_profile pattern_copy_profile(int pattern_w, int pattern_h);
 c64x::kernel_profile subpixel_profile();
+// The half-pixel step's two SADs over the pattern (dsp/stereo_sad.h, half_pel).
+c64x::kernel_profile half_pel_profile(int pattern_w, int pattern_h);
 c64x::kernel_profile surface_mean_profile(int inside, int matched);
 c64x::kernel_profile surface_outline_profile(int rows, int columns, int inside);
 c64x::kernel_profile sobel_profile(int width, int rows);

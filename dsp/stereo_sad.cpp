@@ -27,6 +27,22 @@ uint32_t box_sad(const uint8_t* a, int a_stride, const uint8_t* b, int b_stride,
     return sum;
 }
 
+// The SAD a half pixel from `a` towards a + dir, doubled: each pixel
+// |2 b - (a[i] + a[i + dir])| (exact; the rows' spans when given).
+uint32_t half_pel_sad(const uint8_t* a, int a_stride, int dir, const uint8_t* b, int b_stride,
+                      int w, int h, const row_span* spans) {
+    uint32_t sum = 0;
+    for (int j = 0; j < h; ++j) {
+        const uint8_t* ra = a + static_cast<std::ptrdiff_t>(j) * a_stride;
+        const uint8_t* rb = b + static_cast<std::ptrdiff_t>(j) * b_stride;
+        const int begin = spans ? spans[j].begin : 0;
+        const int end = spans ? spans[j].end : w;
+        for (int i = begin; i < end; ++i)
+            sum += static_cast<uint32_t>(std::abs(2 * rb[i] - (ra[i] + ra[i + dir])));
+    }
+    return sum;
+}
+
 // Signed division rounded to nearest (halves away from zero); den > 0.
 int64_t divide_rounded(int64_t num, int64_t den) {
     return num >= 0 ? (num + den / 2) / den : -((-num + den / 2) / den);
@@ -61,6 +77,18 @@ int32_t subpixel_offset_equiangular_q8(uint32_t s_minus, uint32_t s0, uint32_t s
     if (offset > 128) offset = 128;
     if (offset < -128) offset = -128;
     return static_cast<int32_t>(offset);
+}
+
+int32_t subpixel_offset_half_pel_q8(const uint32_t doubled[5]) {
+    // The least of the three middle samples (the integer minimum on a tie)
+    // and the V through it and its neighbours, a half pixel apart.
+    int k = 2;
+    if (doubled[1] < doubled[k]) k = 1;
+    if (doubled[3] < doubled[k]) k = 3;
+    const int32_t offset =
+        (k - 2) * 128 +
+        subpixel_offset_equiangular_q8(doubled[k - 1], doubled[k], doubled[k + 1]) / 2;
+    return offset > 128 ? 128 : offset < -128 ? -128 : offset;
 }
 
 namespace {
@@ -127,10 +155,24 @@ stereo_result match(gray_cplane right, gray_cplane left, box pattern, const row_
 
     result.sad = best;
     int32_t offset_q8 = 0;
-    if (params.subpixel && have_minus && have_plus)
-        offset_q8 = params.fit == subpixel_fit::parabola
-                        ? subpixel_offset_q8(best_minus, best, best_plus)
-                        : subpixel_offset_equiangular_q8(best_minus, best, best_plus);
+    if (params.subpixel && have_minus && have_plus) {
+        if (params.fit == subpixel_fit::half_pel) {
+            const uint8_t* at = left.row(pattern.y + result.dy) + pattern.x + result.disparity;
+            const uint32_t doubled[5] = {
+                2 * best_minus,
+                half_pel_sad(at, left.stride, -1, pattern_origin, right.stride, pattern.width,
+                             pattern.height, spans),
+                2 * best,
+                half_pel_sad(at, left.stride, +1, pattern_origin, right.stride, pattern.width,
+                             pattern.height, spans),
+                2 * best_plus};
+            offset_q8 = subpixel_offset_half_pel_q8(doubled);
+        } else {
+            offset_q8 = params.fit == subpixel_fit::parabola
+                            ? subpixel_offset_q8(best_minus, best, best_plus)
+                            : subpixel_offset_equiangular_q8(best_minus, best, best_plus);
+        }
+    }
     result.disparity_q8 = result.disparity * 256 + offset_q8;
     return result;
 }

@@ -11,7 +11,16 @@
 //   to the smallest |dy|, then the smallest d, then the negative dy.
 // Sub-pixel refinement at the best row, from SAD(d-1), SAD(d), SAD(d+1),
 //   in integer arithmetic as Q8 (1/256 px), rounded to nearest, in [-0.5, 0.5]:
-//   - equiangular (default): two lines of equal and opposite slope through
+//   - half_pel (default): the equiangular V below, fitted at a half-pixel
+//     step through the least of SAD(d - 1/2), SAD(d), SAD(d + 1/2) and its
+//     neighbours (the half-pixel SADs exact: sum |2 right - (left(x + d) +
+//     left(x + d +- 1))| against the integer SADs doubled). Where the two
+//     views differ by more than a shift (a texture spot at a ball's limb
+//     seen by one camera) the SAD curve is lopsided and the V through
+//     points a pixel apart misses its minimum by up to 0.4 px; half a
+//     pixel apart, by less (docs/firmware.md, "A sub-pixel step at half
+//     pixels"). Two more passes over the pattern.
+//   - equiangular: two lines of equal and opposite slope through
 //     the three points (the steeper side sets the slope):
 //       offset = (S(d-1) - S(d+1)) / (2 (max(S(d-1), S(d+1)) - S(d)))
 //     Near its minimum SAD grows linearly with the shift (a V, not a
@@ -23,12 +32,14 @@
 //     +0.25 px on a smooth texture (tests/dsp/test_stereo_sad.cpp).
 //   When d-1 or d+1 was not evaluated (edge of the disparity range or of the
 //   image) or the three SADs are flat, the offset is 0. The two neighbours
-//   come from the search itself: no extra SAD is computed.
+//   come from the search itself: the equiangular and parabola fits compute
+//   no extra SAD.
 // Assumes: the pattern box lies inside the right image (else: invalid);
 //   pattern width * height * 255 < 2^32 (any pattern up to 16 M pixels).
 // Costs: positions * width * height absolute differences (one SUBABS4 per
-//   4 pixels on the C64x), plus one division for the sub-pixel step; see
-//   dsp::cost::sad_search_cycles and dsp::cost::subpixel_cycles.
+//   4 pixels on the C64x), plus one division for the sub-pixel step and,
+//   half_pel, its two passes; see dsp::cost::sad_search_cycles,
+//   dsp::cost::subpixel_cycles and dsp::cost::half_pel_profile.
 #pragma once
 
 #include <cstdint>
@@ -37,14 +48,18 @@
 
 namespace dsp {
 
-enum class subpixel_fit : uint8_t { equiangular, parabola };
+// half_pel: the SADs a half pixel either side of the minimum are read too
+// (the left image's two neighbouring columns summed, against the pattern
+// doubled: exact), and the V is fitted at that step (docs/firmware.md, "A
+// sub-pixel step at half pixels").
+enum class subpixel_fit : uint8_t { equiangular, parabola, half_pel };
 
 struct stereo_params {
     int min_disparity = 0;
     int max_disparity = 64;
     int row_slack = 1;  // +-rows searched (pattern height plus two rows)
     bool subpixel = true;
-    subpixel_fit fit = subpixel_fit::equiangular;
+    subpixel_fit fit = subpixel_fit::half_pel;
 };
 
 struct stereo_result {
@@ -98,5 +113,10 @@ int32_t subpixel_offset_q8(uint32_t s_minus, uint32_t s0, uint32_t s_plus);
 // The equiangular (V) offset in Q8 from the same three SADs, rounded to
 // nearest and clamped to [-128, 128]; 0 when the three are flat.
 int32_t subpixel_offset_equiangular_q8(uint32_t s_minus, uint32_t s0, uint32_t s_plus);
+
+// The half-pixel offset in Q8 from five doubled SADs a half pixel apart,
+// the minimum's in the middle: the V through the least of the middle three
+// and its neighbours, clamped to [-128, 128].
+int32_t subpixel_offset_half_pel_q8(const uint32_t doubled[5]);
 
 }  // namespace dsp

@@ -1577,8 +1577,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   circle_back, 3.7, 9.5, 'z', aloe, 24},
                       motion_case{"heldout80_21_back70px_3_0m_7_9rps_x_kodim23", 70, 3.0,
                                   circle_back, 2.2, 7.9, 'x', photo2, 32},
-                      motion_case{"heldout80_22_back82px_3_6m_teddy", 82, 3.6, circle_back, 2.6,
-                                  0.0, 'y', photo4, 24},
                       motion_case{"heldout80_23_left42px_3_7m_kodim19", 42, 3.7, pass_left, 0.4,
                                   0.0, 'x', photo3, 32},
                       motion_case{"heldout80_24_recede94px_2_6m_cones", 94, 2.6, recede, 1.0, 0.0,
@@ -1609,9 +1607,7 @@ INSTANTIATE_TEST_SUITE_P(
 // away slowly over teddy (one side 1.4 px past its bound), a 20 px ball
 // coming nearer over kodim19 (0.6 px past).
 INSTANTIATE_TEST_SUITE_P(ShortSideGrown, BoxOnMotion,
-                         ::testing::Values(motion_case{"recede140px_12pxpf_1rps_y_teddy_30f", 140,
-                                                       2.6, recede, 2.0, 1.0, 'y', photo4, 30},
-                                           motion_case{"approach30px_5pxpf_2rps_y_cones_3m_40f", 30,
+                         ::testing::Values(motion_case{"approach30px_5pxpf_2rps_y_cones_3m_40f", 30,
                                                        3.0, approach, 0.4, 2.0, 'y', photo, 40},
                                            motion_case{"recede100px_3pxpf_teddy_2m_40f", 100, 2.0,
                                                        recede, 0.2, 0.0, 'x', photo4, 40},
@@ -2479,7 +2475,9 @@ INSTANTIATE_TEST_SUITE_P(
 // thrown at the wall (round 93's 21 px and 72 px, round 95's 70 px, round
 // 96's 74 px; traced on the 72 px one, their boxes widened 25-43 px at the
 // bounce) and three large balls going away near it (round 86's 227 px,
-// round 93's 132 px and round 95's 182 px; not traced).
+// round 93's 132 px and round 95's 182 px; not traced). Round 95's 70 px
+// ball fails on its depth since the core's sub-pixel step at half pixels
+// (DISABLED_Open).
 INSTANTIATE_TEST_SUITE_P(
     ReachBesideTheWall, BoxOnMotion,
     ::testing::Values(motion_case{"heldout86_23_recede227px_3_0m_teddy", 227, 3.0, recede, 1.0, 0.0,
@@ -2492,8 +2490,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.0, 'z', photo4, 32},
                       motion_case{"heldout95_11_recede182px_3_0m_0_3x_aloe", 182, 3.0, recede, 0.3,
                                   0.0, 'y', aloe, 38},
-                      motion_case{"heldout95_16_rebound70px_4_2m_2_8mps_4_0rps_x_cones", 70, 4.2,
-                                  rebound, 0.6, 4.0, 'x', photo, 39, 0.0, 2.8},
                       motion_case{"heldout96_14_rebound74px_4_4m_2_3mps_5_6rps_y_aloe", 74, 4.4,
                                   rebound, 0.7, 5.6, 'y', aloe, 26, 0.0, 2.3}),
     case_name);
@@ -2607,8 +2603,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   rebound, 0.4, 8.4, 'y', venus, 37, 0.0, 1.6},
                       motion_case{"heldout99_11_enter59px_2_4m_0_3x_8_7rps_y_kodim19", 59, 2.4,
                                   enter, 0.3, 8.7, 'y', photo3, 33},
-                      motion_case{"heldout99_12_orbit_far43px_2_7m_1_2x_kodim19", 43, 2.7,
-                                  orbit_far, 1.2, 0.0, 'y', photo3, 31},
                       motion_case{"heldout99_13_recede29px_3_5m_0_4x_9_7rps_y_cones", 29, 3.5,
                                   recede, 0.4, 9.7, 'y', photo, 40},
                       motion_case{"heldout99_14_back182px_3_7m_2_8x_venus", 182, 3.7, circle_back,
@@ -2675,21 +2669,58 @@ INSTANTIATE_TEST_SUITE_P(
                                   approach, 0.5, 2.0, 'x', venus, 35}),
     case_name);
 
+// Thirteen open cases that pass since the core's sub-pixel step reads the
+// SADs a half pixel either side of its minimum (docs/firmware.md, "A
+// sub-pixel step at half pixels"), development cases of that step: balls
+// of 13-55 px, twelve that failed on the depth at one or two pairs
+// (1.02-1.49 %) and one on a side 0.8 px over; round 80's 55 px circle is
+// the one traced (a texture spot at its limb seen by one camera only).
+INSTANTIATE_TEST_SUITE_P(
+    HalfPelCore, BoxOnMotion,
+    ::testing::Values(motion_case{"heldout80_02_circle55px_3_9m_kodim23", 55, 3.9, circle, 2.9, 0.0,
+                                  'z', photo2, 24},
+                      motion_case{"heldout84_21_enter34px_3_8m_4_2rps_x_venus", 34, 3.8, enter, 1.5,
+                                  4.2, 'x', venus, 40},
+                      motion_case{"rebound25px_1_5mps_4_3m_teddy", 25, 4.3, rebound, 0.5, 0.0, 'x',
+                                  photo4, 34, 0.0, 1.5},
+                      motion_case{"heldout94_09_enter36px_2_8m_1_3x_tsukuba", 36, 2.8, enter, 1.3,
+                                  0.0, 'x', tsukuba, 37},
+                      motion_case{"heldout94_11_enter21px_3_3m_1_2x_kodim23", 21, 3.3, enter, 1.2,
+                                  0.0, 'x', photo2, 28},
+                      motion_case{"heldout96_25_rebound35px_4_1m_2_3mps_9_5rps_x_tsukuba", 35, 4.1,
+                                  rebound, 1.0, 9.5, 'x', tsukuba, 32, 0.0, 2.3},
+                      motion_case{"heldout96_29_back13px_3_4m_1_5x_3_5rps_y_cones", 13, 3.4,
+                                  circle_back, 1.5, 3.5, 'y', photo, 25},
+                      motion_case{"heldout97_10_approach15px_2_0m_1_0x_5_7rps_x_teddy", 15, 2.0,
+                                  approach, 1.0, 5.7, 'x', photo4, 40},
+                      motion_case{"heldout97_20_circle23px_3_4m_1_3x_6_1rps_x_cones", 23, 3.4,
+                                  circle, 1.3, 6.1, 'x', photo, 29},
+                      motion_case{"heldout97w_04_recede28px_3_4m_0_9x_4_8rps_z_teddy", 28, 3.4,
+                                  recede, 0.9, 4.8, 'z', photo4, 26},
+                      motion_case{"heldout98w_20_rebound26px_4_4m_2_4mps_6_5rps_z_teddy", 26, 4.4,
+                                  rebound, 0.7, 6.5, 'z', photo4, 26, 0.0, 2.4},
+                      motion_case{"heldout99_27_approach14px_3_6m_0_6x_5_4rps_y_teddy", 14, 3.6,
+                                  approach, 0.6, 5.4, 'y', photo4, 35},
+                      motion_case{"heldout99s_16_pass14px_2_2m_3_4x_teddy", 14, 2.2, pass, 3.4, 0.0,
+                                  'y', photo4, 32}),
+    case_name);
+
 // Held out, round 100: 30 cases drawn at random (seed 100, rounds 94 and
 // 95's envelope) and committed before they were run, with and without the
 // sub-pixel step at half pixels on the core's match only (the tiles' as
 // before; docs/firmware.md, "Open"). Decision declared here: that step is
 // kept only if, over this round and HeldOutSmall100 together, it passes
 // more of the cases in the envelope (30 px a frame at most) than the
-// firmware without it.
+// firmware without it. One moved faster (left out); of the other 49, 40
+// passed with the step and 39 without it (two the one way, one the
+// other): kept. Of this round's 29, 24 passed and 5 failed
+// (DISABLED_Open).
 INSTANTIATE_TEST_SUITE_P(
     HeldOutSweep100, BoxOnMotion,
     ::testing::Values(motion_case{"heldout100_00_thrown48px_3_9m_0_5x_4_1rps_z_cones", 48, 3.9,
                                   thrown, 0.5, 4.1, 'z', photo, 27},
                       motion_case{"heldout100_01_left109px_2_5m_1_9x_tsukuba", 109, 2.5, pass_left,
                                   1.9, 0.0, 'x', tsukuba, 31},
-                      motion_case{"heldout100_02_back148px_4_0m_4_5x_9_0rps_y_venus", 148, 4.0,
-                                  circle_back, 4.5, 9.0, 'y', venus, 30},
                       motion_case{"heldout100_03_recede210px_3_1m_3_8x_cones", 210, 3.1, recede,
                                   3.8, 0.0, 'x', photo, 29},
                       motion_case{"heldout100_04_pass73px_2_3m_3_3x_2_5rps_x_kodim19", 73, 2.3,
@@ -2702,8 +2733,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   pass, 1.9, 8.6, 'z', venus, 40},
                       motion_case{"heldout100_08_approach179px_2_5m_0_4x_kodim23", 179, 2.5,
                                   approach, 0.4, 0.0, 'y', photo2, 25},
-                      motion_case{"heldout100_09_back100px_2_2m_0_3x_teddy", 100, 2.2, circle_back,
-                                  0.3, 0.0, 'x', photo4, 40},
                       motion_case{"heldout100_10_orbit_near43px_2_8m_2_5x_5_1rps_z_cones", 43, 2.8,
                                   orbit_near, 2.5, 5.1, 'z', photo, 39},
                       motion_case{"heldout100_11_circle141px_2_2m_1_6x_7_5rps_x_venus", 141, 2.2,
@@ -2718,8 +2747,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.4, 0.0, 'y', venus, 32},
                       motion_case{"heldout100_16_left21px_4_0m_0_9x_3_4rps_y", 21, 4.0, pass_left,
                                   0.9, 3.4, 'y', procedural, 24},
-                      motion_case{"heldout100_17_rebound33px_3_9m_1_7mps", 33, 3.9, rebound, 0.9,
-                                  0.0, 'z', procedural, 26, 0.0, 1.7},
                       motion_case{"heldout100_18_orbit_near53px_2_7m_1_9x_cones", 53, 2.7,
                                   orbit_near, 1.9, 0.0, 'x', photo, 24},
                       motion_case{"heldout100_19_orbit_near118px_2_8m_2_1x_7_3rps_z", 118, 2.8,
@@ -2730,24 +2757,19 @@ INSTANTIATE_TEST_SUITE_P(
                                   1.9, 0.0, 'z', photo, 33},
                       motion_case{"heldout100_22_thrown159px_3_2m_0_6x_5_1rps_z_tsukuba", 159, 3.2,
                                   thrown, 0.6, 5.1, 'z', tsukuba, 26},
-                      motion_case{"heldout100_23_left14px_2_9m_0_3x_2_0rps_x_teddy", 14, 2.9,
-                                  pass_left, 0.3, 2.0, 'x', photo4, 27},
                       motion_case{"heldout100_24_rebound53px_4_5m_3_3mps_tsukuba", 53, 4.5, rebound,
                                   0.5, 0.0, 'x', tsukuba, 36, 0.0, 3.3},
                       motion_case{"heldout100_25_left83px_3_0m_0_7x_teddy", 83, 3.0, pass_left, 0.7,
                                   0.0, 'y', photo4, 31},
                       motion_case{"heldout100_26_enter24px_3_8m_0_6x_1_8rps_y", 24, 3.8, enter, 0.6,
                                   1.8, 'y', procedural, 39},
-                      motion_case{"heldout100_27_enter55px_2_4m_0_3x_teddy", 55, 2.4, enter, 0.3,
-                                  0.0, 'z', photo4, 24},
                       motion_case{"heldout100_28_orbit_near70px_3_0m_2_5x_kodim19", 70, 3.0,
-                                  orbit_near, 2.5, 0.0, 'x', photo3, 38},
-                      motion_case{"heldout100_29_pass17px_2_7m_0_7x_teddy", 17, 2.7, pass, 0.7, 0.0,
-                                  'x', photo4, 33}),
+                                  orbit_near, 2.5, 0.0, 'x', photo3, 38}),
     case_name);
 
 // Held out, round 100's small balls: 20 balls of 12-40 px on every path
-// (seed 200), committed with HeldOutSweep100 before they were run.
+// (seed 200), committed with HeldOutSweep100 before they were run. 16
+// passed and 4 failed (DISABLED_Open).
 INSTANTIATE_TEST_SUITE_P(
     HeldOutSmall100, BoxOnMotion,
     ::testing::Values(motion_case{"heldout100s_00_pass36px_3_5m_0_3x", 36, 3.5, pass, 0.3, 0.0, 'y',
@@ -2762,16 +2784,12 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.6, 0.0, 'z', tsukuba, 29},
                       motion_case{"heldout100s_05_approach21px_4_0m_0_7x_kodim19", 21, 4.0,
                                   approach, 0.7, 0.0, 'x', photo3, 34},
-                      motion_case{"heldout100s_06_back23px_2_7m_3_1x_tsukuba", 23, 2.7, circle_back,
-                                  3.1, 0.0, 'z', tsukuba, 40},
                       motion_case{"heldout100s_07_pass14px_2_4m_2_2x_9_6rps_y_cones", 14, 2.4, pass,
                                   2.2, 9.6, 'y', photo, 33},
                       motion_case{"heldout100s_08_enter35px_2_0m_0_6x_cones", 35, 2.0, enter, 0.6,
                                   0.0, 'y', photo, 31},
                       motion_case{"heldout100s_09_pass23px_3_8m_2_0x_5_3rps_y_kodim19", 23, 3.8,
                                   pass, 2.0, 5.3, 'y', photo3, 25},
-                      motion_case{"heldout100s_10_circle22px_2_9m_0_4x_venus", 22, 2.9, circle, 0.4,
-                                  0.0, 'y', venus, 25},
                       motion_case{"heldout100s_11_pass12px_3_9m_4_5x_teddy", 12, 3.9, pass, 4.5,
                                   0.0, 'x', photo4, 28},
                       motion_case{"heldout100s_12_thrown21px_3_8m_2_2x_4_7rps_x_aloe", 21, 3.8,
@@ -2785,11 +2803,7 @@ INSTANTIATE_TEST_SUITE_P(
                       motion_case{"heldout100s_16_recede15px_3_3m_1_3x_9_5rps_z_aloe", 15, 3.3,
                                   recede, 1.3, 9.5, 'z', aloe, 25},
                       motion_case{"heldout100s_17_pass16px_2_3m_2_2x_8_2rps_y_venus", 16, 2.3, pass,
-                                  2.2, 8.2, 'y', venus, 24},
-                      motion_case{"heldout100s_18_thrown25px_2_7m_0_4x_4_9rps_x_venus", 25, 2.7,
-                                  thrown, 0.4, 4.9, 'x', venus, 28},
-                      motion_case{"heldout100s_19_orbit_near28px_2_4m_2_7x_7_5rps_z_aloe", 28, 2.4,
-                                  orbit_near, 2.7, 7.5, 'z', aloe, 28}),
+                                  2.2, 8.2, 'y', venus, 24}),
     case_name);
 
 // Round 91's two held-out failures (HeldOutSweep91), on the depth alone: a
@@ -2821,6 +2835,18 @@ INSTANTIATE_TEST_SUITE_P(
 // Held-out round 96's failures (HeldOutSweep96): a 35 px ball thrown at
 // the wall (depth 1.37 %), a 20 px throw over venus (7.78 px) and a 13 px
 // ball on the circle's other side (depth 1.49 %).
+// Held-out round 100's failures (HeldOutSweep100, HeldOutSmall100): on
+// the box, balls of 22-25 px (8.91 px; 3.30 / 6.28 px; a side 0.6 px
+// over) and a 100 px ball on the circle's other side at 0.3 times the
+// path's speed (34.43 px, a side 41.8 px over, 2.88 %); on the depth,
+// balls of 14-33 px (1.04-16.4 %); a 55 px ball entering slowly, scored
+// on 3 pairs of the 5 a case needs.
+// Four that passed until the core's sub-pixel step at half pixels and
+// fail on the depth since: round 80's 82 px ball on the circle's other
+// side (0.92 -> 1.05 %), round 95's 70 px ball thrown at the wall
+// (ReachBesideTheWall: 0.62 -> 1.44 %, box 3.43 -> 7.67 px), round 99's
+// 43 px ball swung round (0.91 -> 1.00 %) and a 140 px ball going away at
+// 12 px a frame (ShortSideGrown: 0.92 -> 1.25 %).
 // Held-out round 99's failures (HeldOutSweep99, HeldOutSmall99): on the
 // depth alone, 14 px balls passing and coming nearer (1.29 and 1.07 %); a
 // 13 px ball thrown at the wall, a side 2 px over and 1.92 %; balls of 33
@@ -2846,16 +2872,12 @@ INSTANTIATE_TEST_SUITE_P(
                                   7.4, 'y', venus, 24},
                       motion_case{"heldout78_16_circle29px_2_5m_8_7rps_x_kodim23", 29, 2.5, circle,
                                   1.7, 8.7, 'x', photo2, 32},
-                      motion_case{"heldout80_02_circle55px_3_9m_kodim23", 55, 3.9, circle, 2.9, 0.0,
-                                  'z', photo2, 24},
                       motion_case{"heldout80_38_approach29px_3_1m_kodim23", 29, 3.1, approach, 0.8,
                                   0.0, 'x', photo2, 40},
                       motion_case{"heldout84_02_circle44px_3_3m_1_4rps_x_aloe", 44, 3.3, circle,
                                   2.5, 1.4, 'x', aloe, 40},
                       motion_case{"heldout84_11_back235px_3_0m_8_4rps_x_kodim19", 235, 3.0,
                                   circle_back, 2.2, 8.4, 'x', photo3, 32},
-                      motion_case{"heldout84_21_enter34px_3_8m_4_2rps_x_venus", 34, 3.8, enter, 1.5,
-                                  4.2, 'x', venus, 40},
                       motion_case{"heldout84_32_recede157px_2_7m_2_2rps_z_tsukuba", 157, 2.7,
                                   recede, 2.2, 2.2, 'z', tsukuba, 40},
                       motion_case{"heldout85_23_recede111px_4_0m_teddy", 111, 4.0, recede, 1.9, 0.0,
@@ -2874,44 +2896,28 @@ INSTANTIATE_TEST_SUITE_P(
                                   orbit_far, 1.3, 0.0, 'x', photo2, 34},
                       motion_case{"circle35px_3pxpf_2rps_x_cones_32f", 35, 2.6, circle, 0.4, 2.0,
                                   'x', photo, 32},
-                      motion_case{"rebound25px_1_5mps_4_3m_teddy", 25, 4.3, rebound, 0.5, 0.0, 'x',
-                                  photo4, 34, 0.0, 1.5},
                       motion_case{"heldout94_05_circle27px_2_1m_3_0x_aloe", 27, 2.1, circle, 3.0,
                                   0.0, 'z', aloe, 30},
                       motion_case{"heldout94_06_approach13px_3_9m_1_4x_teddy", 13, 3.9, approach,
                                   1.4, 0.0, 'x', photo4, 25},
                       motion_case{"heldout94_08_circle20px_2_5m_2_6x_venus", 20, 2.5, circle, 2.6,
                                   0.0, 'z', venus, 30},
-                      motion_case{"heldout94_09_enter36px_2_8m_1_3x_tsukuba", 36, 2.8, enter, 1.3,
-                                  0.0, 'x', tsukuba, 37},
-                      motion_case{"heldout94_11_enter21px_3_3m_1_2x_kodim23", 21, 3.3, enter, 1.2,
-                                  0.0, 'x', photo2, 28},
                       motion_case{"heldout94_16_enter13px_3_1m_4_3x_kodim19", 13, 3.1, enter, 4.3,
                                   0.0, 'z', photo3, 40},
                       motion_case{"heldout95_15_rebound94px_4_3m_2_1mps_aloe", 94, 4.3, rebound,
                                   0.5, 0.0, 'z', aloe, 32, 0.0, 2.1},
-                      motion_case{"heldout96_25_rebound35px_4_1m_2_3mps_9_5rps_x_tsukuba", 35, 4.1,
-                                  rebound, 1.0, 9.5, 'x', tsukuba, 32, 0.0, 2.3},
                       motion_case{"heldout96_26_thrown20px_4_0m_1_2x_3_6rps_z_venus", 20, 4.0,
                                   thrown, 1.2, 3.6, 'z', venus, 35},
-                      motion_case{"heldout96_29_back13px_3_4m_1_5x_3_5rps_y_cones", 13, 3.4,
-                                  circle_back, 1.5, 3.5, 'y', photo, 25},
                       motion_case{"heldout97_07_left14px_3_1m_3_2x_7_1rps_z_kodim19", 14, 3.1,
                                   pass_left, 3.2, 7.1, 'z', photo3, 37},
-                      motion_case{"heldout97_10_approach15px_2_0m_1_0x_5_7rps_x_teddy", 15, 2.0,
-                                  approach, 1.0, 5.7, 'x', photo4, 40},
                       motion_case{"heldout97_11_pass16px_3_1m_0_9x_8_6rps_x_kodim23", 16, 3.1, pass,
                                   0.9, 8.6, 'x', photo2, 36},
                       motion_case{"heldout97_17_circle19px_3_8m_1_2x_2_4rps_y_venus", 19, 3.8,
                                   circle, 1.2, 2.4, 'y', venus, 38},
-                      motion_case{"heldout97_20_circle23px_3_4m_1_3x_6_1rps_x_cones", 23, 3.4,
-                                  circle, 1.3, 6.1, 'x', photo, 29},
                       motion_case{"heldout97_21_recede16px_2_2m_3_9x_aloe", 16, 2.2, recede, 3.9,
                                   0.0, 'y', aloe, 40},
                       motion_case{"heldout97w_00_rebound25px_3_5m_1_4mps_cones", 25, 3.5, rebound,
                                   0.5, 0.0, 'y', photo, 30, 0.0, 1.4},
-                      motion_case{"heldout97w_04_recede28px_3_4m_0_9x_4_8rps_z_teddy", 28, 3.4,
-                                  recede, 0.9, 4.8, 'z', photo4, 26},
                       motion_case{"heldout97w_06_recede19px_3_1m_2_5x", 19, 3.1, recede, 2.5, 0.0,
                                   'y', procedural, 36},
                       motion_case{"heldout97w_14_recede16px_2_6m_1_5x_6_5rps_x_kodim23", 16, 2.6,
@@ -2924,8 +2930,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.0, 'z', photo4, 40},
                       motion_case{"heldout98w_18_recede12px_2_5m_1_3x_5_0rps_x_venus", 12, 2.5,
                                   recede, 1.3, 5.0, 'x', venus, 34},
-                      motion_case{"heldout98w_20_rebound26px_4_4m_2_4mps_6_5rps_z_teddy", 26, 4.4,
-                                  rebound, 0.7, 6.5, 'z', photo4, 26, 0.0, 2.4},
                       motion_case{"heldout98w_26_recede13px_3_3m_1_4x_1_3rps_x_aloe", 13, 3.3,
                                   recede, 1.4, 1.3, 'x', aloe, 35},
                       motion_case{"heldout98w_28_rebound104px_4_2m_3_4mps_1_2rps_z_tsukuba", 104,
@@ -2938,18 +2942,40 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.6, 0.0, 'y', photo2, 26, 0.0, 1.8},
                       motion_case{"heldout99_23_back22px_2_9m_3_2x_aloe", 22, 2.9, circle_back, 3.2,
                                   0.0, 'x', aloe, 39},
-                      motion_case{"heldout99_27_approach14px_3_6m_0_6x_5_4rps_y_teddy", 14, 3.6,
-                                  approach, 0.6, 5.4, 'y', photo4, 35},
                       motion_case{"heldout99s_03_enter31px_2_8m_0_5x_cones", 31, 2.8, enter, 0.5,
                                   0.0, 'y', photo, 25},
                       motion_case{"heldout99s_10_recede16px_2_5m_1_0x_4_6rps_x_tsukuba", 16, 2.5,
                                   recede, 1.0, 4.6, 'x', tsukuba, 33},
-                      motion_case{"heldout99s_16_pass14px_2_2m_3_4x_teddy", 14, 2.2, pass, 3.4, 0.0,
-                                  'y', photo4, 32},
                       motion_case{"heldout99s_18_rebound13px_3_9m_2_5mps_1_1rps_x_kodim19", 13, 3.9,
                                   rebound, 0.8, 1.1, 'x', photo3, 32, 0.0, 2.5},
                       motion_case{"heldout99s_19_rebound33px_4_0m_1_5mps_tsukuba", 33, 4.0, rebound,
-                                  0.7, 0.0, 'y', tsukuba, 35, 0.0, 1.5}),
+                                  0.7, 0.0, 'y', tsukuba, 35, 0.0, 1.5},
+                      motion_case{"heldout80_22_back82px_3_6m_teddy", 82, 3.6, circle_back, 2.6,
+                                  0.0, 'y', photo4, 24},
+                      motion_case{"heldout95_16_rebound70px_4_2m_2_8mps_4_0rps_x_cones", 70, 4.2,
+                                  rebound, 0.6, 4.0, 'x', photo, 39, 0.0, 2.8},
+                      motion_case{"heldout99_12_orbit_far43px_2_7m_1_2x_kodim19", 43, 2.7,
+                                  orbit_far, 1.2, 0.0, 'y', photo3, 31},
+                      motion_case{"recede140px_12pxpf_1rps_y_teddy_30f", 140, 2.6, recede, 2.0, 1.0,
+                                  'y', photo4, 30},
+                      motion_case{"heldout100s_06_back23px_2_7m_3_1x_tsukuba", 23, 2.7, circle_back,
+                                  3.1, 0.0, 'z', tsukuba, 40},
+                      motion_case{"heldout100s_10_circle22px_2_9m_0_4x_venus", 22, 2.9, circle, 0.4,
+                                  0.0, 'y', venus, 25},
+                      motion_case{"heldout100s_18_thrown25px_2_7m_0_4x_4_9rps_x_venus", 25, 2.7,
+                                  thrown, 0.4, 4.9, 'x', venus, 28},
+                      motion_case{"heldout100_09_back100px_2_2m_0_3x_teddy", 100, 2.2, circle_back,
+                                  0.3, 0.0, 'x', photo4, 40},
+                      motion_case{"heldout100_17_rebound33px_3_9m_1_7mps", 33, 3.9, rebound, 0.9,
+                                  0.0, 'z', procedural, 26, 0.0, 1.7},
+                      motion_case{"heldout100_23_left14px_2_9m_0_3x_2_0rps_x_teddy", 14, 2.9,
+                                  pass_left, 0.3, 2.0, 'x', photo4, 27},
+                      motion_case{"heldout100_27_enter55px_2_4m_0_3x_teddy", 55, 2.4, enter, 0.3,
+                                  0.0, 'z', photo4, 24},
+                      motion_case{"heldout100_29_pass17px_2_7m_0_7x_teddy", 17, 2.7, pass, 0.7, 0.0,
+                                  'x', photo4, 33},
+                      motion_case{"heldout100s_19_orbit_near28px_2_4m_2_7x_7_5rps_z_aloe", 28, 2.4,
+                                  orbit_near, 2.7, 7.5, 'z', aloe, 28}),
     case_name);
 
 }  // namespace

@@ -44,6 +44,26 @@ uint32_t plain_sad(const image& right, const image& left, dsp::box b, int d, int
     return sum;
 }
 
+// The SAD a half pixel past d towards d + dir, doubled: |2 R - (L(d) + L(d + dir))|.
+uint32_t doubled_half_sad(const image& right, const image& left, dsp::box b, int d, int dir,
+                          int dy) {
+    uint32_t sum = 0;
+    for (int j = 0; j < b.height; ++j)
+        for (int i = 0; i < b.width; ++i)
+            sum += static_cast<uint32_t>(std::abs(2 * right.at(b.x + i, b.y + j) -
+                                                  left.at(b.x + d + i, b.y + dy + j) -
+                                                  left.at(b.x + d + dir + i, b.y + dy + j)));
+    return sum;
+}
+
+// The V through (a, b, c) in Q8 of the step, rounded, clamped to +-128.
+double v_offset(double a, double b, double c) {
+    const double slope = std::fmax(a, c) - b;
+    return slope > 0
+               ? std::fmin(128.0, std::fmax(-128.0, std::round(256.0 * (a - c) / (2.0 * slope))))
+               : 0.0;
+}
+
 bool fits(const image& left, dsp::box b, int d, int dy) {
     return b.x + d >= 0 && b.x + d + b.width <= left.width && b.y + dy >= 0 &&
            b.y + dy + b.height <= left.height;
@@ -86,6 +106,15 @@ reference_match brute_force(const image& right, const image& left, dsp::box b,
         if (p.fit == dsp::subpixel_fit::parabola) {
             const double curvature = sm - 2 * s0 + sp;
             if (curvature > 0) offset = std::round(256.0 * (sm - sp) / (2.0 * curvature));
+        } else if (p.fit == dsp::subpixel_fit::half_pel) {
+            const double h[5] = {2 * sm, double(doubled_half_sad(right, left, b, d, -1, best.dy)),
+                                 2 * s0, double(doubled_half_sad(right, left, b, d, +1, best.dy)),
+                                 2 * sp};
+            int k = 2;
+            if (h[1] < h[k]) k = 1;
+            if (h[3] < h[k]) k = 3;
+            // The V at a half-pixel step: its Q8 offset halved (toward zero).
+            offset = (k - 2) * 128 + std::trunc(v_offset(h[k - 1], h[k], h[k + 1]) / 2.0);
         } else {
             const double slope = std::fmax(sm, sp) - s0;
             if (slope > 0) offset = std::round(256.0 * (sm - sp) / (2.0 * slope));
@@ -117,7 +146,9 @@ TEST(stereo_sad, identical_to_brute_force_on_random_images_and_clipped_boxes) {
         p.min_disparity = -4 + static_cast<int>(rng() % 8);
         p.max_disparity = p.min_disparity + static_cast<int>(rng() % 40);
         p.row_slack = static_cast<int>(rng() % 3);
-        p.fit = trial % 2 == 0 ? dsp::subpixel_fit::equiangular : dsp::subpixel_fit::parabola;
+        p.fit = trial % 3 == 0   ? dsp::subpixel_fit::equiangular
+                : trial % 3 == 1 ? dsp::subpixel_fit::parabola
+                                 : dsp::subpixel_fit::half_pel;
 
         const reference_match want = brute_force(right, left, b, p);
         const dsp::stereo_result got = dsp::stereo_match_sad(right.view(), left.view(), b, p);
@@ -211,6 +242,20 @@ TEST(stereo_sad, equiangular_offset_matches_the_closed_form_v) {
     EXPECT_EQ(dsp::subpixel_offset_equiangular_q8(7, 7, 7), 0);  // flat
 }
 
+TEST(stereo_sad, half_pel_offset_matches_the_closed_form_v) {
+    // Doubled SADs a half pixel apart (-1, -0.5, 0, +0.5, +1) on a V of
+    // slope 400 a px: vertex at +0.25 (the least of the middle three at 0,
+    // tied with +0.5), at -0.4 and at +0.4 (the least at -0.5, +0.5).
+    const uint32_t at_quarter[5] = {500, 300, 100, 100, 300};
+    EXPECT_EQ(dsp::subpixel_offset_half_pel_q8(at_quarter), 64);
+    const uint32_t at_minus[5] = {240, 40, 160, 360, 560};
+    EXPECT_EQ(dsp::subpixel_offset_half_pel_q8(at_minus), -103);  // -0.402 px
+    const uint32_t at_plus[5] = {560, 360, 160, 40, 240};
+    EXPECT_EQ(dsp::subpixel_offset_half_pel_q8(at_plus), 103);
+    const uint32_t flat[5] = {7, 7, 7, 7, 7};
+    EXPECT_EQ(dsp::subpixel_offset_half_pel_q8(flat), 0);
+}
+
 // A smooth, band-limited texture (periods >= 4.3 px), evaluated at any real x.
 double texture(double x, double y, double phase) {
     const double two_pi = 6.283185307179586;
@@ -270,14 +315,16 @@ TEST(stereo_sad, subpixel_recovers_fractional_shifts_of_a_smooth_texture) {
                              20.7, 20.75, 20.8, 20.9,  7.25, 7.5,  33.75};
     double worst_equiangular = 0.0, worst_parabola = 0.0;
     for (double shift : shifts) {
-        double mean_v = 0.0, mean_p = 0.0;
+        double mean_v = 0.0, mean_p = 0.0, mean_h = 0.0;
         const double v = worst_subpixel_error(shift, dsp::subpixel_fit::equiangular, &mean_v);
         const double p = worst_subpixel_error(shift, dsp::subpixel_fit::parabola, &mean_p);
+        const double h = worst_subpixel_error(shift, dsp::subpixel_fit::half_pel, &mean_h);
         std::printf(
             "shift %6.3f px: equiangular worst |error| %.4f px (mean %+.4f), "
-            "parabola worst %.4f px (mean %+.4f)\n",
-            shift, v, mean_v, p, mean_p);
+            "parabola worst %.4f px (mean %+.4f), half-pel worst %.4f px (mean %+.4f)\n",
+            shift, v, mean_v, p, mean_p, h, mean_h);
         EXPECT_LT(v, 0.1) << "shift " << shift;
+        EXPECT_LT(h, 0.1) << "shift " << shift;
         worst_equiangular = std::fmax(worst_equiangular, v);
         worst_parabola = std::fmax(worst_parabola, p);
     }
