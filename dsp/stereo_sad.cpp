@@ -9,38 +9,40 @@ namespace dsp {
 
 namespace {
 
-// SAD of two w x h boxes, or of each row's span of them when `spans` is
-// given. The byte loop is the C form of the C64x SUBABS4 + DOTPU4 kernel
-// (four pixels per instruction there).
-uint32_t box_sad(const uint8_t* a, int a_stride, const uint8_t* b, int b_stride, int w, int h,
-                 const row_span* spans) {
+// The sum over two w x h boxes (or each row's span of them when `spans`
+// is given) of pixel_cost(row of a, row of b, column).
+template <typename PixelCost>
+uint32_t sum_over_box(const uint8_t* a, int a_stride, const uint8_t* b, int b_stride, int w, int h,
+                      const row_span* spans, PixelCost pixel_cost) {
     uint32_t sum = 0;
     for (int j = 0; j < h; ++j) {
         const uint8_t* ra = a + static_cast<std::ptrdiff_t>(j) * a_stride;
         const uint8_t* rb = b + static_cast<std::ptrdiff_t>(j) * b_stride;
         const int begin = spans ? spans[j].begin : 0;
         const int end = spans ? spans[j].end : w;
-        uint32_t row = 0;
-        for (int i = begin; i < end; ++i) row += static_cast<uint32_t>(std::abs(ra[i] - rb[i]));
-        sum += row;
+        for (int i = begin; i < end; ++i) sum += pixel_cost(ra, rb, i);
     }
     return sum;
 }
 
+// SAD of two boxes. The byte loop is the C form of the C64x SUBABS4 +
+// DOTPU4 kernel (four pixels per instruction there).
+uint32_t box_sad(const uint8_t* a, int a_stride, const uint8_t* b, int b_stride, int w, int h,
+                 const row_span* spans) {
+    return sum_over_box(a, a_stride, b, b_stride, w, h, spans,
+                        [](const uint8_t* ra, const uint8_t* rb, int i) {
+                            return static_cast<uint32_t>(std::abs(ra[i] - rb[i]));
+                        });
+}
+
 // The SAD a half pixel from `a` towards a + dir, doubled: each pixel
-// |2 b - (a[i] + a[i + dir])| (exact; the rows' spans when given).
+// |2 b - (a[i] + a[i + dir])| (exact).
 uint32_t half_pel_sad(const uint8_t* a, int a_stride, int dir, const uint8_t* b, int b_stride,
                       int w, int h, const row_span* spans) {
-    uint32_t sum = 0;
-    for (int j = 0; j < h; ++j) {
-        const uint8_t* ra = a + static_cast<std::ptrdiff_t>(j) * a_stride;
-        const uint8_t* rb = b + static_cast<std::ptrdiff_t>(j) * b_stride;
-        const int begin = spans ? spans[j].begin : 0;
-        const int end = spans ? spans[j].end : w;
-        for (int i = begin; i < end; ++i)
-            sum += static_cast<uint32_t>(std::abs(2 * rb[i] - (ra[i] + ra[i + dir])));
-    }
-    return sum;
+    return sum_over_box(
+        a, a_stride, b, b_stride, w, h, spans, [dir](const uint8_t* ra, const uint8_t* rb, int i) {
+            return static_cast<uint32_t>(std::abs(2 * rb[i] - (ra[i] + ra[i + dir])));
+        });
 }
 
 // Signed division rounded to nearest (halves away from zero); den > 0.
