@@ -75,9 +75,7 @@ object_depth_result match_object_surface(gray_cplane right, gray_cplane left, bo
     stereo_params narrow = search;
     narrow.min_disparity = std::max(search.min_disparity, (core_q8 >> 8) - spread);
     narrow.max_disparity = std::min(search.max_disparity, ((core_q8 + 255) >> 8) + spread);
-    // The tiles' mean averages their fits' errors: the half-pixel step is
-    // the core's (docs/firmware.md, "A sub-pixel step at half pixels").
-    if (narrow.fit == subpixel_fit::half_pel) narrow.fit = subpixel_fit::equiangular;
+    narrow.fit = params.tile_fit;
 
     const int columns = tiles_along(object.width, params);
     const int rows = tiles_along(object.height, params);

@@ -79,6 +79,10 @@ struct object_depth_params {
     int gate_floor_per_pixel = 4;  // ... plus this a pixel
     int min_tiles = 4;             // fewer tiles kept: the core's disparity stands
     int outline_inset = 2;         // px: the outline's ellipse is the box's less this a side
+    // The tiles' sub-pixel fit: the V through the integer SADs. Their mean
+    // averages the fits' errors; the half-pixel step is the core's
+    // (docs/firmware.md, "A sub-pixel step at half pixels").
+    subpixel_fit tile_fit = subpixel_fit::equiangular;
 };
 
 struct object_depth_result {
