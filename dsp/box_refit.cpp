@@ -30,6 +30,16 @@ bool returned_axis(span earlier, span before, span after, span last, span* previ
     return true;
 }
 
+span held_at_extent_end(span placed, span found, span both) {
+    constexpr int most_past = 2, read_within = 2;
+    if (found.size != placed.size) return placed;
+    if (placed.end() - both.end() > most_past && abs_int(found.end() - both.end()) <= read_within)
+        return span{both.end() - placed.size, placed.size};
+    if (both.start - placed.start > most_past && abs_int(found.start - both.start) <= read_within)
+        return span{both.start, placed.size};
+    return placed;
+}
+
 span follow_axis(span previous, span both, span last, int size) {
     if (both.size < size)
         return span{max_int(min_int(last.start, both.start), both.end() - size), size};

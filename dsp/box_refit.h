@@ -65,6 +65,18 @@ bool returned_axis(span earlier, span before, span after, span last, span* previ
 // the box stood 8 px low).
 span follow_axis(span previous, span both, span last, int size);
 
+// object(t) on one axis, `placed` (the silhouette's), held at Dif(t-1,t)'s
+// extent `both` where it stands past that extent's end by more than 2 px
+// and the SAD box `found` of the same size has its side within 2 px of
+// that end: the rim was read there, by the differences and by the texture
+// alike. A leading rim the differences missed leaves the extent short,
+// which is why a fast object's box may stand past it (dsp/extent_window.h);
+// the SAD box then stands past it too, on the ball. Fitted to the last
+// pairs' extents, a small ball whose motion turns or slows was placed 6-9
+// px past an extent whose end the SAD box shared (a 22 px ball circling at
+// 25 px a pair, its step down 20 -> 17 -> 11 px: 7.2 and 8.9 px off).
+span held_at_extent_end(span placed, span found, span both);
+
 // The axis across the motion: Dif(t-1,t) reached past object(t-1) by
 // `moved` px on it and by `moved_other` on the other axis, at least min_shift
 // and four times as far. There the rim runs along the motion and the

@@ -154,6 +154,12 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
             cost::pattern_copy_profile(tracker.pattern_box().width, tracker.pattern_box().height));
 
     const box found = tracker.position();
+    if (follows) {  // the silhouette's box held where the SAD box read its extent's end
+        followed =
+            from_spans(held_at_extent_end(x_span(followed), x_span(found), x_span(motion.both)),
+                       held_at_extent_end(y_span(followed), y_span(found), y_span(motion.both)));
+        *cycles += cycles_of(cost::extent_end_profile());
+    }
     seen->no_difference = !motion.found;
     const int step = key_frame::max_step;
     seen->sad_slow = status == track_status::tracking && moved_at_most(last, found, step);

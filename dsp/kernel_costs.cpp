@@ -521,6 +521,16 @@ kernel_profile round_box_profile() {
     return p;
 }
 
+kernel_profile extent_end_profile() {
+    // dsp/box_refit.h, held_at_extent_end, each followed pair: per axis the
+    // sizes compared, both ends' overshoot and the SAD box's offset (SUBs,
+    // an ABS each), their compares and the conditional start (l 4, s 2).
+    kernel_profile p("extent_end");
+    p.add(block("axis", op_mix{/*l*/ 4, /*s*/ 2, 0, /*d*/ 2, 0, /*lsd*/ 2},
+                latency_load + 2 * latency_alu, 2));
+    return p;
+}
+
 kernel_profile window_fit_profile(int extents) {
     // dsp/extent_window.h: the median of the 2 (n - 1) edge steps (an
     // insertion sort, as surface_mean's); over a full window the 2 (n - 2)

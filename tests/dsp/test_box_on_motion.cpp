@@ -2636,13 +2636,12 @@ INSTANTIATE_TEST_SUITE_P(
 // Held out, round 99's small balls: 20 balls of 12-40 px on every path
 // (seed 199, rounds 94 and 95's envelope otherwise), committed with
 // HeldOutSweep99 before they were run. One moved faster (left out); of the
-// other 19, 14 passed and 5 failed (DISABLED_Open).
+// other 19, 14 passed and 5 failed (DISABLED_Open) Its 30 px circle over venus
+// fails since the box is held at the extent's end (DISABLED_Open).
 INSTANTIATE_TEST_SUITE_P(
     HeldOutSmall99, BoxOnMotion,
     ::testing::Values(motion_case{"heldout99s_00_enter29px_3_7m_2_0x_5_3rps_z_tsukuba", 29, 3.7,
                                   enter, 2.0, 5.3, 'z', tsukuba, 32},
-                      motion_case{"heldout99s_01_circle30px_2_7m_1_3x_6_2rps_z_venus", 30, 2.7,
-                                  circle, 1.3, 6.2, 'z', venus, 39},
                       motion_case{"heldout99s_02_rebound16px_4_0m_3_6mps_4_4rps_z_tsukuba", 16, 4.0,
                                   rebound, 0.8, 4.4, 'z', tsukuba, 37, 0.0, 3.6},
                       motion_case{"heldout99s_04_pass26px_3_1m_2_5x_kodim23", 26, 3.1, pass, 2.5,
@@ -2823,6 +2822,13 @@ INSTANTIATE_TEST_SUITE_P(
 // px circle over aloe (2.04 %) and 157 px ball going away over tsukuba
 // (1.01 %), and round 86's 222 px ball on the circle's other side over
 // aloe (1.11 %).
+// Held-out round 101's failures (HeldOutSweep101, HeldOutCurve101): on
+// the depth alone, balls of 17-40 px on circles and an orbit (1.04-1.40 %)
+// and a 36 px ball thrown at the wall (1.71 %); a 44 px circle at 25 px a
+// frame on the box (9.04 px at one pair, mean 2.88 px).
+// Round 99's 30 px circle over venus, which passed until the silhouette's
+// box was held at the extent's end (HeldOutSmall99: 5.34 -> 9.22 px at one
+// pair, not traced).
 // Held-out rounds 94 and 95's failures (HeldOutSweep94, HeldOutSweep95):
 // on the depth alone, balls of 13-36 px entering (1.16-1.68 %) or coming
 // nearer (a 13 px one, 24.1 %); on the box, 20 px and 27 px circles at
@@ -2864,18 +2870,12 @@ INSTANTIATE_TEST_SUITE_P(
                                   2.6, 3.3, 'x', photo2, 40},
                       motion_case{"heldout78_04_recede185px_3_9m_aloe", 185, 3.9, recede, 0.6, 0.0,
                                   'x', aloe, 40},
-                      motion_case{"heldout78_06_back17px_3_1m_kodim23", 17, 3.1, circle_back, 2.9,
-                                  0.0, 'y', photo2, 24},
                       motion_case{"heldout78_13_recede14px_2_3m_1_7rps_z_aloe", 14, 2.3, recede,
                                   3.2, 1.7, 'z', aloe, 40},
                       motion_case{"heldout78_14_enter21px_2_3m_7_4rps_y_venus", 21, 2.3, enter, 3.4,
                                   7.4, 'y', venus, 24},
-                      motion_case{"heldout78_16_circle29px_2_5m_8_7rps_x_kodim23", 29, 2.5, circle,
-                                  1.7, 8.7, 'x', photo2, 32},
                       motion_case{"heldout80_38_approach29px_3_1m_kodim23", 29, 3.1, approach, 0.8,
                                   0.0, 'x', photo2, 40},
-                      motion_case{"heldout84_02_circle44px_3_3m_1_4rps_x_aloe", 44, 3.3, circle,
-                                  2.5, 1.4, 'x', aloe, 40},
                       motion_case{"heldout84_11_back235px_3_0m_8_4rps_x_kodim19", 235, 3.0,
                                   circle_back, 2.2, 8.4, 'x', photo3, 32},
                       motion_case{"heldout84_32_recede157px_2_7m_2_2rps_z_tsukuba", 157, 2.7,
@@ -2922,8 +2922,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   'y', procedural, 36},
                       motion_case{"heldout97w_14_recede16px_2_6m_1_5x_6_5rps_x_kodim23", 16, 2.6,
                                   recede, 1.5, 6.5, 'x', photo2, 34},
-                      motion_case{"heldout98w_02_recede24px_3_2m_4_1x_6_4rps_x_venus", 24, 3.2,
-                                  recede, 4.1, 6.4, 'x', venus, 30},
                       motion_case{"heldout98w_09_recede13px_3_2m_1_4x_2_2rps_y_kodim19", 13, 3.2,
                                   recede, 1.4, 2.2, 'y', photo3, 39},
                       motion_case{"heldout98w_13_recede77px_2_4m_1_5x_teddy", 77, 2.4, recede, 1.5,
@@ -2940,8 +2938,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.0, 'z', venus, 36},
                       motion_case{"heldout99_09_rebound34px_4_0m_1_8mps_kodim23", 34, 4.0, rebound,
                                   0.6, 0.0, 'y', photo2, 26, 0.0, 1.8},
-                      motion_case{"heldout99_23_back22px_2_9m_3_2x_aloe", 22, 2.9, circle_back, 3.2,
-                                  0.0, 'x', aloe, 39},
                       motion_case{"heldout99s_03_enter31px_2_8m_0_5x_cones", 31, 2.8, enter, 0.5,
                                   0.0, 'y', photo, 25},
                       motion_case{"heldout99s_10_recede16px_2_5m_1_0x_4_6rps_x_tsukuba", 16, 2.5,
@@ -2958,8 +2954,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   orbit_far, 1.2, 0.0, 'y', photo3, 31},
                       motion_case{"recede140px_12pxpf_1rps_y_teddy_30f", 140, 2.6, recede, 2.0, 1.0,
                                   'y', photo4, 30},
-                      motion_case{"heldout100s_06_back23px_2_7m_3_1x_tsukuba", 23, 2.7, circle_back,
-                                  3.1, 0.0, 'z', tsukuba, 40},
                       motion_case{"heldout100s_10_circle22px_2_9m_0_4x_venus", 22, 2.9, circle, 0.4,
                                   0.0, 'y', venus, 25},
                       motion_case{"heldout100s_18_thrown25px_2_7m_0_4x_4_9rps_x_venus", 25, 2.7,
@@ -2974,6 +2968,43 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.0, 'z', photo4, 24},
                       motion_case{"heldout100_29_pass17px_2_7m_0_7x_teddy", 17, 2.7, pass, 0.7, 0.0,
                                   'x', photo4, 33},
+                      motion_case{"heldout99s_01_circle30px_2_7m_1_3x_6_2rps_z_venus", 30, 2.7,
+                                  circle, 1.3, 6.2, 'z', venus, 39},
+                      motion_case{"heldout101_03_circle17px_3_6m_2_0x_venus", 17, 3.6, circle, 2.0,
+                                  0.0, 'y', venus, 36},
+                      motion_case{"heldout101_09_orbit_far40px_2_8m_2_5x_kodim23", 40, 2.8,
+                                  orbit_far, 2.5, 0.0, 'y', photo2, 26},
+                      motion_case{"heldout101_29_circle30px_3_8m_1_1x_2_4rps_x_aloe", 30, 3.8,
+                                  circle, 1.1, 2.4, 'x', aloe, 38},
+                      motion_case{"heldout101c_10_circle44px_2_3m_3_1x_4_0rps_y_venus", 44, 2.3,
+                                  circle, 3.1, 4.0, 'y', venus, 24},
+                      motion_case{"heldout101c_17_rebound36px_3_7m_1_8mps_8_3rps_x_teddy", 36, 3.7,
+                                  rebound, 1.0, 8.3, 'x', photo4, 32, 0.0, 1.8}),
+    case_name);
+
+// Seven open cases that pass since the silhouette's box is held at
+// Dif(t-1,t)'s extent end where the SAD box of its size read that end
+// (dsp/box_refit.h, held_at_extent_end; docs/firmware.md, "A box held at
+// the extent's end"), development cases of that rule: balls of 17-44 px
+// on circles, an orbit and going away at 13-25 px a frame. Three failed
+// on a box the window's velocity placed 6-9 px past the ball at one pair
+// where its motion turned or slowed (round 99's 22 px ball circling,
+// traced: 8.90 -> 2.41 px); four on the depth at a pair (1.01-1.75 %, not
+// traced).
+INSTANTIATE_TEST_SUITE_P(
+    HeldAtExtentEnd, BoxOnMotion,
+    ::testing::Values(motion_case{"heldout78_06_back17px_3_1m_kodim23", 17, 3.1, circle_back, 2.9,
+                                  0.0, 'y', photo2, 24},
+                      motion_case{"heldout78_16_circle29px_2_5m_8_7rps_x_kodim23", 29, 2.5, circle,
+                                  1.7, 8.7, 'x', photo2, 32},
+                      motion_case{"heldout84_02_circle44px_3_3m_1_4rps_x_aloe", 44, 3.3, circle,
+                                  2.5, 1.4, 'x', aloe, 40},
+                      motion_case{"heldout98w_02_recede24px_3_2m_4_1x_6_4rps_x_venus", 24, 3.2,
+                                  recede, 4.1, 6.4, 'x', venus, 30},
+                      motion_case{"heldout99_23_back22px_2_9m_3_2x_aloe", 22, 2.9, circle_back, 3.2,
+                                  0.0, 'x', aloe, 39},
+                      motion_case{"heldout100s_06_back23px_2_7m_3_1x_tsukuba", 23, 2.7, circle_back,
+                                  3.1, 0.0, 'z', tsukuba, 40},
                       motion_case{"heldout100s_19_orbit_near28px_2_4m_2_7x_7_5rps_z_aloe", 28, 2.4,
                                   orbit_near, 2.7, 7.5, 'z', aloe, 28}),
     case_name);
@@ -2985,7 +3016,11 @@ INSTANTIATE_TEST_SUITE_P(
 // declared here: that rule is kept only if, over this round and
 // HeldOutCurve101 together, it passes more of the cases in the envelope
 // (30 px a frame at most) than the firmware without it; on a tie or fewer
-// it is not kept.
+// it is not kept. Eight of the 50 moved faster (left out); of the other
+// 42, 37 passed with the rule and 35 without it (a 15 px ball on the
+// circle's other side, 9.18 px and 57.5 % -> 3.09 px and 0.36 %, and a
+// 42 px circle, 8.15 -> 3.98 px; none the other way): kept. Of this
+// round's 26, 23 passed and 3 failed (DISABLED_Open).
 INSTANTIATE_TEST_SUITE_P(
     HeldOutSweep101, BoxOnMotion,
     ::testing::Values(motion_case{"heldout101_00_orbit_near117px_2_9m_2_1x_1_4rps_z_kodim19", 117,
@@ -2994,20 +3029,14 @@ INSTANTIATE_TEST_SUITE_P(
                                   circle_back, 0.8, 3.3, 'x', photo, 38},
                       motion_case{"heldout101_02_rebound37px_4_0m_2_9mps_2_9rps_y_aloe", 37, 4.0,
                                   rebound, 0.6, 2.9, 'y', aloe, 33, 0.0, 2.9},
-                      motion_case{"heldout101_03_circle17px_3_6m_2_0x_venus", 17, 3.6, circle, 2.0,
-                                  0.0, 'y', venus, 36},
                       motion_case{"heldout101_04_circle43px_2_8m_2_0x_5_2rps_z_cones", 43, 2.8,
                                   circle, 2.0, 5.2, 'z', photo, 35},
                       motion_case{"heldout101_05_pass36px_2_7m_0_6x_venus", 36, 2.7, pass, 0.6, 0.0,
                                   'x', venus, 29},
                       motion_case{"heldout101_06_back15px_2_3m_2_1x_aloe", 15, 2.3, circle_back,
                                   2.1, 0.0, 'y', aloe, 29},
-                      motion_case{"heldout101_07_approach150px_3_0m_3_5x_5_8rps_x_cones", 150, 3.0,
-                                  approach, 3.5, 5.8, 'x', photo, 26},
                       motion_case{"heldout101_08_pass67px_3_1m_2_2x_8_4rps_z_aloe", 67, 3.1, pass,
                                   2.2, 8.4, 'z', aloe, 28},
-                      motion_case{"heldout101_09_orbit_far40px_2_8m_2_5x_kodim23", 40, 2.8,
-                                  orbit_far, 2.5, 0.0, 'y', photo2, 26},
                       motion_case{"heldout101_10_thrown170px_2_7m_0_4x_tsukuba", 170, 2.7, thrown,
                                   0.4, 0.0, 'z', tsukuba, 38},
                       motion_case{"heldout101_11_pass21px_3_4m_0_8x_2_4rps_y_kodim19", 21, 3.4,
@@ -3028,16 +3057,10 @@ INSTANTIATE_TEST_SUITE_P(
                                   procedural, 32},
                       motion_case{"heldout101_19_rebound67px_4_5m_2_4mps", 67, 4.5, rebound, 0.9,
                                   0.0, 'x', procedural, 37, 0.0, 2.4},
-                      motion_case{"heldout101_20_approach89px_3_5m_4_4x_8_2rps_z", 89, 3.5,
-                                  approach, 4.4, 8.2, 'z', procedural, 25},
                       motion_case{"heldout101_21_back73px_2_2m_0_4x_tsukuba", 73, 2.2, circle_back,
                                   0.4, 0.0, 'y', tsukuba, 40},
                       motion_case{"heldout101_22_left19px_3_4m_1_0x_3_1rps_x_cones", 19, 3.4,
                                   pass_left, 1.0, 3.1, 'x', photo, 31},
-                      motion_case{"heldout101_23_circle84px_2_3m_3_9x_kodim19", 84, 2.3, circle,
-                                  3.9, 0.0, 'z', photo3, 38},
-                      motion_case{"heldout101_24_thrown13px_2_4m_1_3x_kodim19", 13, 2.4, thrown,
-                                  1.3, 0.0, 'z', photo3, 27},
                       motion_case{"heldout101_25_orbit_near70px_2_0m_2_8x_aloe", 70, 2.0,
                                   orbit_near, 2.8, 0.0, 'x', aloe, 28},
                       motion_case{"heldout101_26_left17px_2_1m_1_7x_cones", 17, 2.1, pass_left, 1.7,
@@ -3045,26 +3068,22 @@ INSTANTIATE_TEST_SUITE_P(
                       motion_case{"heldout101_27_recede115px_3_4m_0_4x_cones", 115, 3.4, recede,
                                   0.4, 0.0, 'x', photo, 33},
                       motion_case{"heldout101_28_back24px_3_4m_0_9x_tsukuba", 24, 3.4, circle_back,
-                                  0.9, 0.0, 'x', tsukuba, 25},
-                      motion_case{"heldout101_29_circle30px_3_8m_1_1x_2_4rps_x_aloe", 30, 3.8,
-                                  circle, 1.1, 2.4, 'x', aloe, 38}),
+                                  0.9, 0.0, 'x', tsukuba, 25}),
     case_name);
 
 // Held out with round 101: 20 balls of 15-45 px on turning paths (thrown,
 // circles, orbits, rebounds) at 1-4 times their base speed (seed 201),
 // committed with HeldOutSweep101 before they were run, under its rule.
+// Four thrown at over 30 px a frame are left out; of the other 16, 14
+// passed and 2 failed (DISABLED_Open).
 INSTANTIATE_TEST_SUITE_P(
     HeldOutCurve101, BoxOnMotion,
-    ::testing::Values(motion_case{"heldout101c_00_thrown33px_2_8m_2_9x_7_3rps_z_aloe", 33, 2.8,
-                                  thrown, 2.9, 7.3, 'z', aloe, 32},
-                      motion_case{"heldout101c_01_orbit_near25px_2_6m_1_9x", 25, 2.6, orbit_near,
+    ::testing::Values(motion_case{"heldout101c_01_orbit_near25px_2_6m_1_9x", 25, 2.6, orbit_near,
                                   1.9, 0.0, 'y', procedural, 31},
                       motion_case{"heldout101c_02_circle41px_3_8m_1_0x_6_0rps_x_aloe", 41, 3.8,
                                   circle, 1.0, 6.0, 'x', aloe, 24},
                       motion_case{"heldout101c_03_orbit_far40px_2_8m_2_4x_teddy", 40, 2.8,
                                   orbit_far, 2.4, 0.0, 'z', photo4, 39},
-                      motion_case{"heldout101c_04_thrown35px_2_6m_1_6x_kodim19", 35, 2.6, thrown,
-                                  1.6, 0.0, 'y', photo3, 24},
                       motion_case{"heldout101c_05_orbit_near24px_2_0m_2_8x_2_8rps_x_kodim19", 24,
                                   2.0, orbit_near, 2.8, 2.8, 'x', photo3, 40},
                       motion_case{"heldout101c_06_thrown20px_3_2m_1_6x_kodim19", 20, 3.2, thrown,
@@ -3075,10 +3094,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   orbit_far, 2.6, 0.0, 'x', tsukuba, 39},
                       motion_case{"heldout101c_09_orbit_near15px_2_2m_2_0x_8_8rps_y_tsukuba", 15,
                                   2.2, orbit_near, 2.0, 8.8, 'y', tsukuba, 37},
-                      motion_case{"heldout101c_10_circle44px_2_3m_3_1x_4_0rps_y_venus", 44, 2.3,
-                                  circle, 3.1, 4.0, 'y', venus, 24},
-                      motion_case{"heldout101c_11_thrown41px_3_3m_3_0x_teddy", 41, 3.3, thrown, 3.0,
-                                  0.0, 'x', photo4, 40},
                       motion_case{"heldout101c_12_rebound44px_3_9m_3_5mps_5_1rps_y_kodim23", 44,
                                   3.9, rebound, 1.1, 5.1, 'y', photo2, 31, 0.0, 3.5},
                       motion_case{"heldout101c_13_circle18px_3_2m_2_0x_kodim23", 18, 3.2, circle,
@@ -3089,10 +3104,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   1.2, 0.0, 'z', tsukuba, 39},
                       motion_case{"heldout101c_16_circle42px_2_0m_3_4x_cones", 42, 2.0, circle, 3.4,
                                   0.0, 'y', photo, 28},
-                      motion_case{"heldout101c_17_rebound36px_3_7m_1_8mps_8_3rps_x_teddy", 36, 3.7,
-                                  rebound, 1.0, 8.3, 'x', photo4, 32, 0.0, 1.8},
-                      motion_case{"heldout101c_18_thrown26px_3_9m_3_5x_teddy", 26, 3.9, thrown, 3.5,
-                                  0.0, 'z', photo4, 34},
                       motion_case{"heldout101c_19_orbit_far19px_2_4m_1_0x_3_4rps_z_teddy", 19, 2.4,
                                   orbit_far, 1.0, 3.4, 'z', photo4, 29}),
     case_name);
