@@ -3,7 +3,8 @@
 // object(t-1) is the common part of the two differences unless they share
 // one edge only (the motion reversed), the SAD box's pull keeps its
 // documented step, and Dif(key, t) reads a displacement only where one side
-// reaches past the key's box and the other does not.
+// reaches past the key's box and the other does not. A box placed past
+// Dif(t-1,t)'s extent is held at its end where the SAD box read that end.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -413,8 +414,6 @@ TEST(HoldAxis, MovedOnlyToHoldTheMaskAtMostAStep) {
     EXPECT_GT(compared, 10000);
 }
 
-}  // namespace
-
 // Round 99's 22 px ball circling (traced): the window placed it at 335
 // (to 359) past Dif(t-1,t)'s 313..351, the SAD box at 327..351; the ball's
 // top stood at 327.3. Moving up (round 100's 23 px ball): 119 against the
@@ -469,3 +468,5 @@ TEST(HeldAtExtentEnd, ASadBoxOfAnotherSizeOrABoxInsideTheExtentIsKept) {
     EXPECT_TRUE(
         is_span(dsp::held_at_extent_end(span{313, 24}, span{313, 24}, span{313, 38}), 313, 24));
 }
+
+}  // namespace
