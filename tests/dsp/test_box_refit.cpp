@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <vector>
 
 #include "dsp/box_refit.h"
 
@@ -414,59 +415,58 @@ TEST(HoldAxis, MovedOnlyToHoldTheMaskAtMostAStep) {
     EXPECT_GT(compared, 10000);
 }
 
+// held_at_extent_end(placed, found, both) against the start expected.
+struct extent_end_case {
+    span placed, found, both;
+    int start;
+};
+
+void expect_held(const std::vector<extent_end_case>& cases) {
+    for (const extent_end_case& c : cases)
+        EXPECT_TRUE(
+            is_span(dsp::held_at_extent_end(c.placed, c.found, c.both), c.start, c.placed.size))
+            << "placed " << c.placed.start << ", SAD box " << c.found.start << " +" << c.found.size
+            << ", extent " << c.both.start << " +" << c.both.size;
+}
+
 // Round 99's 22 px ball circling (traced): the window placed it at 335
 // (to 359) past Dif(t-1,t)'s 313..351, the SAD box at 327..351; the ball's
 // top stood at 327.3. Moving up (round 100's 23 px ball): 119 against the
 // extent's 128 and the SAD box's 128, the ball's top at 127.2.
 TEST(HeldAtExtentEnd, PastTheExtentWhereTheSadBoxReadItsEnd) {
-    EXPECT_TRUE(
-        is_span(dsp::held_at_extent_end(span{335, 24}, span{327, 24}, span{313, 38}), 327, 24));
-    EXPECT_TRUE(
-        is_span(dsp::held_at_extent_end(span{119, 24}, span{128, 24}, span{128, 37}), 128, 24));
+    expect_held({{{335, 24}, {327, 24}, {313, 38}, 327}, {{119, 24}, {128, 24}, {128, 37}, 128}});
 }
 
 TEST(HeldAtExtentEnd, TwoPixelsPastOrTheSadBoxElsewhereIsKept) {
-    // 2 px past the end: kept; 3 px: held.
-    EXPECT_TRUE(
-        is_span(dsp::held_at_extent_end(span{329, 24}, span{327, 24}, span{313, 38}), 329, 24));
-    EXPECT_TRUE(
-        is_span(dsp::held_at_extent_end(span{330, 24}, span{327, 24}, span{313, 38}), 327, 24));
-    EXPECT_TRUE(
-        is_span(dsp::held_at_extent_end(span{126, 24}, span{128, 24}, span{128, 37}), 126, 24));
-    EXPECT_TRUE(
-        is_span(dsp::held_at_extent_end(span{125, 24}, span{128, 24}, span{128, 37}), 128, 24));
-    // The SAD box's side 2 px off the end still reads it; 3 px off (a rim
-    // the differences missed, the texture past it) does not.
-    EXPECT_TRUE(
-        is_span(dsp::held_at_extent_end(span{119, 24}, span{130, 24}, span{128, 37}), 128, 24));
-    EXPECT_TRUE(
-        is_span(dsp::held_at_extent_end(span{119, 24}, span{126, 24}, span{128, 37}), 128, 24));
-    EXPECT_TRUE(
-        is_span(dsp::held_at_extent_end(span{335, 24}, span{329, 24}, span{313, 38}), 327, 24));
-    EXPECT_TRUE(
-        is_span(dsp::held_at_extent_end(span{335, 24}, span{325, 24}, span{313, 38}), 327, 24));
-    EXPECT_TRUE(
-        is_span(dsp::held_at_extent_end(span{335, 24}, span{330, 24}, span{313, 38}), 335, 24));
-    EXPECT_TRUE(
-        is_span(dsp::held_at_extent_end(span{335, 24}, span{324, 24}, span{313, 38}), 335, 24));
-    EXPECT_TRUE(
-        is_span(dsp::held_at_extent_end(span{119, 24}, span{131, 24}, span{128, 37}), 119, 24));
-    EXPECT_TRUE(
-        is_span(dsp::held_at_extent_end(span{119, 24}, span{125, 24}, span{128, 37}), 119, 24));
+    expect_held({
+        // 2 px past the end: kept; 3 px: held.
+        {{329, 24}, {327, 24}, {313, 38}, 329},
+        {{330, 24}, {327, 24}, {313, 38}, 327},
+        {{126, 24}, {128, 24}, {128, 37}, 126},
+        {{125, 24}, {128, 24}, {128, 37}, 128},
+        // The SAD box's side 2 px off the end still reads it; 3 px off (a
+        // rim the differences missed, the texture past it) does not.
+        {{119, 24}, {130, 24}, {128, 37}, 128},
+        {{119, 24}, {126, 24}, {128, 37}, 128},
+        {{335, 24}, {329, 24}, {313, 38}, 327},
+        {{335, 24}, {325, 24}, {313, 38}, 327},
+        {{335, 24}, {330, 24}, {313, 38}, 335},
+        {{335, 24}, {324, 24}, {313, 38}, 335},
+        {{119, 24}, {131, 24}, {128, 37}, 119},
+        {{119, 24}, {125, 24}, {128, 37}, 119},
+    });
 }
 
 TEST(HeldAtExtentEnd, ASadBoxOfAnotherSizeOrABoxInsideTheExtentIsKept) {
-    // A SAD box of another size (a pattern taken at another depth) reads
-    // no end of this box's.
-    EXPECT_TRUE(
-        is_span(dsp::held_at_extent_end(span{335, 24}, span{325, 26}, span{313, 38}), 335, 24));
-    EXPECT_TRUE(
-        is_span(dsp::held_at_extent_end(span{119, 24}, span{128, 23}, span{128, 37}), 119, 24));
-    // Inside the extent, whatever the SAD box reads.
-    EXPECT_TRUE(
-        is_span(dsp::held_at_extent_end(span{320, 24}, span{327, 24}, span{313, 38}), 320, 24));
-    EXPECT_TRUE(
-        is_span(dsp::held_at_extent_end(span{313, 24}, span{313, 24}, span{313, 38}), 313, 24));
+    expect_held({
+        // A SAD box of another size (a pattern taken at another depth)
+        // reads no end of this box's.
+        {{335, 24}, {325, 26}, {313, 38}, 335},
+        {{119, 24}, {128, 23}, {128, 37}, 119},
+        // Inside the extent, whatever the SAD box reads.
+        {{320, 24}, {327, 24}, {313, 38}, 320},
+        {{313, 24}, {313, 24}, {313, 38}, 313},
+    });
 }
 
 }  // namespace
