@@ -38,7 +38,9 @@ bool falls_back(int last, int now) {
 // (take_key: the key at the tracker's box, its ring's and pattern's copy charged.)
 void controller::impl::take_key(uint64_t* cycles, sdram_traffic* traffic, int grow) {
     key.take(history(0), tracker.position(), tracker.pattern_box(), grow);
-    key_sized_q8 = measured_disparity_q8;
+    // The key's size stands for the depth the box's does (a size kept may
+    // stand for an earlier pair's: size_still_stands).
+    key_sized_q8 = sized_disparity_q8 > 0 ? sized_disparity_q8 : measured_disparity_q8;
     key_x = key_y = key_axis{};
     key_first_seen = false;
     const box r = key.region(), hole = key.hole(), kp = key.pattern();
@@ -221,6 +223,10 @@ void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
     b.x = max_int(0, min_int(b.x, width - b.width));
     b.y = max_int(0, min_int(b.y, height - b.height));
     size_from_key = true;
+    // The key's size carried stands for the key's depth; one at_disparity or
+    // the outline moved, for the last pair's.
+    if (key_sized_q8 > 0)
+        sized_disparity_q8 = same_size(b, k) ? key_sized_q8 : measured_disparity_q8;
     if (!same_box(b, tracker.position())) {
         tracker.start(history(0), b);
         *cycles += cycles_of(
@@ -272,6 +278,14 @@ void controller::impl::follow_outline_key(track_motion seen, uint64_t* cycles,
                                         outline_key_across == 'y', first_y, outline_key_drift));
     b.x = max_int(0, min_int(b.x, width - b.width));
     b.y = max_int(0, min_int(b.y, height - b.height));
+    // At least the key's size: of an object going away, the box stands for
+    // the key's depth, and so does a key re-taken at it, until the depth's
+    // change since moves a side by more than max_step (the drop above).
+    // Re-taken at each pair's depth instead, a 34 px ball thrown at the wall
+    // was held at 34 x 35 px while it shrank to 28 px.
+    if (key_sized_q8 > 0)
+        sized_disparity_q8 =
+            measured_disparity_q8 < key_sized_q8 ? key_sized_q8 : measured_disparity_q8;
     if (!same_box(b, s)) {
         tracker.start(history(0), b);
         *cycles += cycles_of(

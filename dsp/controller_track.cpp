@@ -185,6 +185,12 @@ bool controller::impl::track_object(uint64_t* cycles, sdram_traffic* traffic, tr
     }
     resized = rounded_box(resized, width, height, config.rig);
     *cycles += cycles_of(cost::round_box_profile());
+    if (motion.found) {  // a size kept, of an object going away: its depth kept with it
+        if (same_size(last, tracked) && same_size(resized, tracked) &&
+            size_still_stands(resized, motion.previous, sized_before, measured_disparity_q8))
+            sized_disparity_q8 = sized_before;
+        *cycles += cycles_of(cost::size_depth_profile());
+    }
     if (status != track_status::tracking || !same_box(resized, found)) {
         tracker.start(history(0), resized);
         *cycles += cycles_of(

@@ -531,6 +531,17 @@ kernel_profile extent_end_profile() {
     return p;
 }
 
+kernel_profile size_depth_profile() {
+    // dsp/size_at_depth.h, size_still_stands, each pair with a difference:
+    // the two boxes' sizes compared (l 4), the disparities' change and its
+    // eighth (SUB, ABS, shift, l 3), the silhouette's sides against the box's
+    // (l 2) and the conditional move of the depth kept (s 1).
+    kernel_profile p("size_depth");
+    p.add(block("compare", op_mix{/*l*/ 9, /*s*/ 1, 0, /*d*/ 2, 0, /*lsd*/ 1},
+                latency_load + 3 * latency_alu, 1));
+    return p;
+}
+
 kernel_profile window_fit_profile(int extents) {
     // dsp/extent_window.h: the median of the 2 (n - 1) edge steps (an
     // insertion sort, as surface_mean's); over a full window the 2 (n - 2)

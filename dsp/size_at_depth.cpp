@@ -81,4 +81,9 @@ bool disparity_jumped(int64_t from_q8, int64_t to_q8) {
     return from_q8 > 0 && to_q8 > 0 && 8 * change_of(from_q8, to_q8) > from_q8;
 }
 
+bool size_still_stands(box kept, box silhouette, int64_t sized_q8, int64_t now_q8) {
+    return sized_q8 > 0 && now_q8 > 0 && now_q8 < sized_q8 && !disparity_jumped(sized_q8, now_q8) &&
+           silhouette.width < kept.width && silhouette.height < kept.height;
+}
+
 }  // namespace dsp

@@ -182,4 +182,51 @@ TEST(DisparityJumped, OverAnEighthOnly) {
     EXPECT_FALSE(dsp::disparity_jumped(0, 9001));  // none yet
 }
 
+// A size the track kept stands for the depth it was sized at while the
+// object goes away and its silhouette is smaller on both axes; not coming
+// nearer, not across a jumped disparity, not without a depth.
+TEST(SizeStillStands, GoingAwayWithASmallerSilhouetteOnly) {
+    const box kept{250, 208, 34, 33};
+    const box smaller{251, 209, 30, 29};
+    EXPECT_TRUE(dsp::size_still_stands(kept, smaller, 6000, 5950));
+    EXPECT_TRUE(dsp::size_still_stands(kept, smaller, 8000, 7000));   // 12.5 %: not jumped
+    EXPECT_FALSE(dsp::size_still_stands(kept, smaller, 8000, 6999));  // jumped
+    EXPECT_FALSE(dsp::size_still_stands(kept, smaller, 6000, 6000));  // no change
+    EXPECT_FALSE(dsp::size_still_stands(kept, smaller, 5950, 6000));  // coming nearer
+    EXPECT_FALSE(dsp::size_still_stands(kept, box{251, 209, 30, 33}, 6000, 5950));
+    EXPECT_FALSE(dsp::size_still_stands(kept, box{251, 209, 34, 29}, 6000, 5950));
+    EXPECT_FALSE(dsp::size_still_stands(kept, box{248, 207, 36, 35}, 6000, 5950));
+    EXPECT_FALSE(dsp::size_still_stands(kept, smaller, 0, 5950));  // none yet
+    EXPECT_FALSE(dsp::size_still_stands(kept, smaller, 6000, 0));
+}
+
+// The track's loop (controller_track.cpp): each pair the box carried to the
+// last pair's disparity, and its size's depth kept where size_still_stands.
+// A ball thrown at the wall, its disparity falling 0.9 % a pair (under
+// at_disparity's 1 %): the box follows the pinhole size s d / d0 within
+// 1.5 px (the 1 % dead band, and each resize rounding the last rounded
+// size), where restarted from each pair's depth it stays at its first size
+// (5.7 px too large by the 20th pair).
+TEST(SizeStillStands, AFallUnderOnePercentAPairAddsUp) {
+    const box first{250, 208, 34, 33};
+    const int64_t d0 = 6400;
+    box kept = first, restarted = first;
+    int64_t sized = d0, restarted_sized = d0;
+    for (int pair = 1; pair <= 20; ++pair) {
+        const int64_t d = std::llround(d0 * std::pow(0.991, pair));
+        const box smaller{0, 0, static_cast<int>(std::lround(34.0 * d / d0)) - 1,
+                          static_cast<int>(std::lround(33.0 * d / d0)) - 1};
+        const box carried = dsp::at_disparity(kept, sized, d);
+        const bool same = carried.width == kept.width && carried.height == kept.height;
+        sized = same && dsp::size_still_stands(carried, smaller, sized, d) ? sized : d;
+        kept = carried;
+        restarted = dsp::at_disparity(restarted, restarted_sized, d);
+        restarted_sized = d;
+        EXPECT_LE(std::fabs(kept.width - 34.0 * d / d0), 1.5) << "pair " << pair;
+        EXPECT_LE(std::fabs(kept.height - 33.0 * d / d0), 1.5) << "pair " << pair;
+    }
+    EXPECT_EQ(restarted.width, first.width);  // never moved a side
+    EXPECT_LE(kept.width, 29);                // 34 x 0.991^20 = 28.3
+}
+
 }  // namespace
