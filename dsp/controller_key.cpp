@@ -223,8 +223,8 @@ void controller::impl::follow_slow_object(track_motion seen, uint64_t* cycles,
     b.x = max_int(0, min_int(b.x, width - b.width));
     b.y = max_int(0, min_int(b.y, height - b.height));
     size_from_key = true;
-    // The key's size carried stands for the key's depth; one at_disparity or
-    // the outline moved, for the last pair's.
+    // The key's size carried stands for the key's depth; a box at_disparity
+    // or the outline resized, for the last pair's.
     if (key_sized_q8 > 0)
         sized_disparity_q8 = same_size(b, k) ? key_sized_q8 : measured_disparity_q8;
     if (!same_box(b, tracker.position())) {
