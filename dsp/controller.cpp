@@ -188,6 +188,7 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
             if (has_object) {  // a new track: its size stands for no depth yet, nor a key's
                 m_state = tracker_state::track;
                 s.measured_disparity_q8 = s.sized_disparity_q8 = s.key_sized_q8 = 0;
+                s.reported_depth.clear();
                 s.size_from_key = false;
                 s.still_pairs = 0;
             }
@@ -218,7 +219,10 @@ frame_output controller::process_pair(gray_cplane raw_left, gray_cplane raw_righ
     out.box_right = s.tracker.position();
     s.stereo_sad(out.box_right, outlined, out);
     s.stereo_edge(out.box_right, out);
-    if (!s.choose_disparity(out)) return out;
+    if (!s.choose_disparity(out)) {
+        s.reported_depth.clear();
+        return out;
+    }
     // For the next pair's size (dsp/size_at_depth.h): the part of the
     // disparity inversely proportional to depth.
     s.measured_disparity_q8 = out.disparity_q8 - cfg.rig.principal_offset_q8();

@@ -205,6 +205,9 @@ struct frame_output {
     bool sad_at_range_end = false;
     bool edge_at_range_end = false;
     int32_t disparity_q8 = 0;  // the disparity the point was triangulated from
+    // ... the line of the track's last depths, not the match's: no motion of
+    // the ball reaches the match's (a wrong match, dsp/depth_line.h).
+    bool depth_from_line = false;
     bool has_point = false;
     point3_um point;         // right camera frame, micrometres
     uint16_t gain_q8 = 256;  // brightness compensation, both images (the right one's mean)

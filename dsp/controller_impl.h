@@ -8,6 +8,7 @@
 
 #include "dsp/box_refit.h"
 #include "dsp/controller.h"
+#include "dsp/depth_line.h"
 #include "dsp/detection_steps.h"
 #include "dsp/extent_window.h"
 #include "dsp/int_bounds.h"
@@ -165,6 +166,7 @@ struct controller::impl {
     // tracker's box stands for, and the one the key's box stood for when taken.
     int64_t measured_disparity_q8 = 0, sized_disparity_q8 = 0;
     int64_t key_sized_q8 = 0;
+    depth_line reported_depth;  // the track's last depths: a wrong match reported at their line
 
     // Disparities (Q8) of the depth range's ends, without the search margin.
     int64_t far_disparity_q8 = 0, near_disparity_q8 = 0;

@@ -270,10 +270,16 @@ bool controller::impl::choose_disparity(frame_output& out) const {
 }
 
 // Stage xyz: the box centre (Q8, from the exact Q1 centre) and the chosen
-// disparity, as measured: a depth gated against the track's fitted depths
+// disparity, as measured unless no motion of the ball reaches it
+// (dsp/depth_line.h): a depth gated against the track's fitted depths
 // passed fewer fresh box cases (docs/firmware.md, "The measured depth").
 void controller::impl::xyz(box object, frame_output& out) {
     stage_scope scope(*hardware, stage::xyz, out);
+    const int64_t offset = config.rig.principal_offset_q8();
+    const int64_t reported =
+        reported_depth.reported(out.disparity_q8 - offset, &out.depth_from_line);
+    if (out.depth_from_line) out.disparity_q8 = static_cast<int32_t>(reported + offset);
+    scope.charge(cycles_of(cost::depth_line_profile(reported_depth.divides())));
     out.has_point = triangulate(config.rig, object.center_x2() * 128, object.center_y2() * 128,
                                 out.disparity_q8, &out.point);
     scope.charge(cycles_of(cost::triangulate_profile()));

@@ -2909,8 +2909,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   'x', photo, 32},
                       motion_case{"heldout94_05_circle27px_2_1m_3_0x_aloe", 27, 2.1, circle, 3.0,
                                   0.0, 'z', aloe, 30},
-                      motion_case{"heldout94_06_approach13px_3_9m_1_4x_teddy", 13, 3.9, approach,
-                                  1.4, 0.0, 'x', photo4, 25},
                       motion_case{"heldout94_08_circle20px_2_5m_2_6x_venus", 20, 2.5, circle, 2.6,
                                   0.0, 'z', venus, 30},
                       motion_case{"heldout94_16_enter13px_3_1m_4_3x_kodim19", 13, 3.1, enter, 4.3,
@@ -2963,8 +2961,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   pass_left, 0.3, 2.0, 'x', photo4, 27},
                       motion_case{"heldout100_27_enter55px_2_4m_0_3x_teddy", 55, 2.4, enter, 0.3,
                                   0.0, 'z', photo4, 24},
-                      motion_case{"heldout100_29_pass17px_2_7m_0_7x_teddy", 17, 2.7, pass, 0.7, 0.0,
-                                  'x', photo4, 33},
                       motion_case{"heldout99s_01_circle30px_2_7m_1_3x_6_2rps_z_venus", 30, 2.7,
                                   circle, 1.3, 6.2, 'z', venus, 39},
                       motion_case{"heldout101_03_circle17px_3_6m_2_0x_venus", 17, 3.6, circle, 2.0,
@@ -3178,6 +3174,19 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.0, 'z', procedural, 26, 0.0, 1.7}),
     case_name);
 
+// Open cases that pass since a depth no motion of the ball reaches is
+// reported at the line of the track's last three (docs/firmware.md, "A
+// depth no motion reaches"): a 13 px ball coming nearer (24.27 % at one
+// pair -> 0.52 %) and a 17 px pass (16.43 -> 0.99 %), both over teddy,
+// their neighbours' depths within 1 %.
+INSTANTIATE_TEST_SUITE_P(DepthOffItsLine, BoxOnMotion,
+                         ::testing::Values(motion_case{"heldout94_06_approach13px_3_9m_1_4x_teddy",
+                                                       13, 3.9, approach, 1.4, 0.0, 'x', photo4,
+                                                       25},
+                                           motion_case{"heldout100_29_pass17px_2_7m_0_7x_teddy", 17,
+                                                       2.7, pass, 0.7, 0.0, 'x', photo4, 33}),
+                         case_name);
+
 // Held out, round 102: 30 cases drawn at random (seed 102, rounds 94 and
 // 95's envelope) and committed before they were run, with and without the
 // box's size standing for the depth it was sized at while the object goes
@@ -3370,6 +3379,125 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.0, 'x', aloe, 35},
                       motion_case{"heldout103d_19_recede82px_3_0m_1_0x_7_4rps_z", 82, 3.0, recede,
                                   1.0, 7.4, 'z', procedural, 38}),
+    case_name);
+
+// Held out, round 104: 30 cases drawn at random (seed 104, rounds 94 and
+// 95's envelope) and committed before they were run, with and without a
+// wrong match's depth reported at the line of the track's last three
+// (dsp/depth_line.h). Decision declared here: the rule replaces only a
+// depth no motion of the ball reaches (over 6.25 % off that line), so on
+// fresh cases it should change nothing or turn a fail into a pass. Kept
+// only if, over this round and HeldOutDepth104 together, no case in the
+// envelope (30 px a frame at most) passes without it and fails with it,
+// and it passes at least as many; otherwise it is removed.
+INSTANTIATE_TEST_SUITE_P(
+    HeldOutSweep104, BoxOnMotion,
+    ::testing::Values(motion_case{"heldout104_00_pass163px_3_5m_0_6x_7_4rps_x_kodim23", 163, 3.5,
+                                  pass, 0.6, 7.4, 'x', photo2, 27},
+                      motion_case{"heldout104_01_thrown17px_3_3m_0_8x_teddy", 17, 3.3, thrown, 0.8,
+                                  0.0, 'x', photo4, 36},
+                      motion_case{"heldout104_02_enter205px_2_3m_0_7x_5_0rps_x_teddy", 205, 2.3,
+                                  enter, 0.7, 5.0, 'x', photo4, 29},
+                      motion_case{"heldout104_03_orbit_near32px_2_0m_2_6x_2_5rps_z_venus", 32, 2.0,
+                                  orbit_near, 2.6, 2.5, 'z', venus, 34},
+                      motion_case{"heldout104_04_left34px_4_0m_0_5x_aloe", 34, 4.0, pass_left, 0.5,
+                                  0.0, 'x', aloe, 39},
+                      motion_case{"heldout104_05_orbit_far37px_2_2m_1_3x", 37, 2.2, orbit_far, 1.3,
+                                  0.0, 'x', procedural, 36},
+                      motion_case{"heldout104_06_pass19px_2_3m_1_7x_2_4rps_x_kodim23", 19, 2.3,
+                                  pass, 1.7, 2.4, 'x', photo2, 31},
+                      motion_case{"heldout104_07_left15px_3_2m_2_3x_aloe", 15, 3.2, pass_left, 2.3,
+                                  0.0, 'z', aloe, 30},
+                      motion_case{"heldout104_08_recede30px_3_7m_2_1x_aloe", 30, 3.7, recede, 2.1,
+                                  0.0, 'z', aloe, 40},
+                      motion_case{"heldout104_09_orbit_far70px_2_7m_2_2x_9_3rps_x_aloe", 70, 2.7,
+                                  orbit_far, 2.2, 9.3, 'x', aloe, 38},
+                      motion_case{"heldout104_10_left16px_3_2m_1_6x_teddy", 16, 3.2, pass_left, 1.6,
+                                  0.0, 'z', photo4, 27},
+                      motion_case{"heldout104_11_orbit_near109px_2_2m_1_1x_kodim19", 109, 2.2,
+                                  orbit_near, 1.1, 0.0, 'y', photo3, 29},
+                      motion_case{"heldout104_12_recede32px_2_4m_0_4x_3_1rps_x_cones", 32, 2.4,
+                                  recede, 0.4, 3.1, 'x', photo, 30},
+                      motion_case{"heldout104_13_orbit_far33px_2_5m_1_5x_aloe", 33, 2.5, orbit_far,
+                                  1.5, 0.0, 'x', aloe, 30},
+                      motion_case{"heldout104_14_approach12px_3_7m_0_7x_3_0rps_x", 12, 3.7,
+                                  approach, 0.7, 3.0, 'x', procedural, 39},
+                      motion_case{"heldout104_15_pass39px_2_4m_0_9x_aloe", 39, 2.4, pass, 0.9, 0.0,
+                                  'z', aloe, 32},
+                      motion_case{"heldout104_16_left177px_2_3m_0_8x_aloe", 177, 2.3, pass_left,
+                                  0.8, 0.0, 'x', aloe, 24},
+                      motion_case{"heldout104_17_thrown64px_2_9m_0_3x_8_9rps_x_kodim23", 64, 2.9,
+                                  thrown, 0.3, 8.9, 'x', photo2, 29},
+                      motion_case{"heldout104_18_thrown52px_2_2m_2_3x_3_8rps_x_aloe", 52, 2.2,
+                                  thrown, 2.3, 3.8, 'x', aloe, 34},
+                      motion_case{"heldout104_19_left25px_3_1m_0_4x_7_2rps_x_teddy", 25, 3.1,
+                                  pass_left, 0.4, 7.2, 'x', photo4, 27},
+                      motion_case{"heldout104_20_enter133px_2_9m_3_6x_kodim19", 133, 2.9, enter,
+                                  3.6, 0.0, 'z', photo3, 31},
+                      motion_case{"heldout104_21_thrown66px_2_3m_1_6x_9_4rps_y_kodim19", 66, 2.3,
+                                  thrown, 1.6, 9.4, 'y', photo3, 30},
+                      motion_case{"heldout104_22_circle163px_2_2m_1_3x_8_4rps_x_kodim19", 163, 2.2,
+                                  circle, 1.3, 8.4, 'x', photo3, 25},
+                      motion_case{"heldout104_23_enter18px_3_4m_0_3x_6_4rps_x_kodim19", 18, 3.4,
+                                  enter, 0.3, 6.4, 'x', photo3, 26},
+                      motion_case{"heldout104_24_rebound92px_3_8m_3_1mps", 92, 3.8, rebound, 0.4,
+                                  0.0, 'z', procedural, 28, 0.0, 3.1},
+                      motion_case{"heldout104_25_recede17px_3_1m_0_4x_3_2rps_z_kodim23", 17, 3.1,
+                                  recede, 0.4, 3.2, 'z', photo2, 40},
+                      motion_case{"heldout104_26_circle227px_2_2m_1_3x_teddy", 227, 2.2, circle,
+                                  1.3, 0.0, 'y', photo4, 37},
+                      motion_case{"heldout104_27_orbit_far126px_2_5m_1_1x_3_4rps_z", 126, 2.5,
+                                  orbit_far, 1.1, 3.4, 'z', procedural, 36},
+                      motion_case{"heldout104_28_enter90px_3_0m_2_0x_2_0rps_y_teddy", 90, 3.0,
+                                  enter, 2.0, 2.0, 'y', photo4, 28},
+                      motion_case{"heldout104_29_orbit_near32px_2_0m_1_1x_cones", 32, 2.0,
+                                  orbit_near, 1.1, 0.0, 'y', photo, 25}),
+    case_name);
+
+// Held out with round 104: 20 balls whose depth changes (seed 204),
+// committed with HeldOutSweep104 before they were run, under its rule.
+INSTANTIATE_TEST_SUITE_P(
+    HeldOutDepth104, BoxOnMotion,
+    ::testing::Values(motion_case{"heldout104d_00_recede158px_3_9m_0_5x_8_8rps_x_kodim23", 158, 3.9,
+                                  recede, 0.5, 8.8, 'x', photo2, 34},
+                      motion_case{"heldout104d_01_recede15px_2_1m_2_0x_kodim23", 15, 2.1, recede,
+                                  2.0, 0.0, 'y', photo2, 30},
+                      motion_case{"heldout104d_02_rebound33px_3_7m_1_9mps_3_9rps_z_teddy", 33, 3.7,
+                                  rebound, 0.5, 3.9, 'z', photo4, 28, 0.0, 1.9},
+                      motion_case{"heldout104d_03_recede57px_3_5m_0_3x_aloe", 57, 3.5, recede, 0.3,
+                                  0.0, 'z', aloe, 38},
+                      motion_case{"heldout104d_04_recede37px_3_9m_0_4x_3_9rps_y_teddy", 37, 3.9,
+                                  recede, 0.4, 3.9, 'y', photo4, 24},
+                      motion_case{"heldout104d_05_recede124px_3_7m_0_5x_venus", 124, 3.7, recede,
+                                  0.5, 0.0, 'z', venus, 36},
+                      motion_case{"heldout104d_06_recede104px_3_4m_0_3x_kodim19", 104, 3.4, recede,
+                                  0.3, 0.0, 'y', photo3, 26},
+                      motion_case{"heldout104d_07_rebound50px_4_1m_3_8mps", 50, 4.1, rebound, 0.9,
+                                  0.0, 'z', procedural, 38, 0.0, 3.8},
+                      motion_case{"heldout104d_08_approach95px_3_5m_1_5x_teddy", 95, 3.5, approach,
+                                  1.5, 0.0, 'y', photo4, 37},
+                      motion_case{"heldout104d_09_approach17px_2_7m_0_6x_3_5rps_x_kodim23", 17, 2.7,
+                                  approach, 0.6, 3.5, 'x', photo2, 36},
+                      motion_case{"heldout104d_10_rebound73px_3_7m_2_7mps_4_3rps_x_cones", 73, 3.7,
+                                  rebound, 0.9, 4.3, 'x', photo, 30, 0.0, 2.7},
+                      motion_case{"heldout104d_11_recede46px_3_8m_0_5x_aloe", 46, 3.8, recede, 0.5,
+                                  0.0, 'y', aloe, 30},
+                      motion_case{"heldout104d_12_recede196px_2_7m_2_9x_venus", 196, 2.7, recede,
+                                  2.9, 0.0, 'z', venus, 24},
+                      motion_case{"heldout104d_13_approach226px_3_7m_3_1x_3_2rps_z_aloe", 226, 3.7,
+                                  approach, 3.1, 3.2, 'z', aloe, 24},
+                      motion_case{"heldout104d_14_rebound47px_4_5m_3_8mps_7_7rps_z_tsukuba", 47,
+                                  4.5, rebound, 0.4, 7.7, 'z', tsukuba, 38, 0.0, 3.8},
+                      motion_case{"heldout104d_15_rebound74px_4_4m_3_2mps", 74, 4.4, rebound, 0.7,
+                                  0.0, 'z', procedural, 35, 0.0, 3.2},
+                      motion_case{"heldout104d_16_rebound36px_3_5m_2_1mps_aloe", 36, 3.5, rebound,
+                                  0.6, 0.0, 'y', aloe, 32, 0.0, 2.1},
+                      motion_case{"heldout104d_17_recede107px_2_3m_0_8x_5_1rps_x_tsukuba", 107, 2.3,
+                                  recede, 0.8, 5.1, 'x', tsukuba, 40},
+                      motion_case{"heldout104d_18_approach55px_2_2m_0_4x_9_3rps_z_tsukuba", 55, 2.2,
+                                  approach, 0.4, 9.3, 'z', tsukuba, 36},
+                      motion_case{"heldout104d_19_rebound63px_4_0m_1_7mps_6_4rps_x_kodim19", 63,
+                                  4.0, rebound, 0.5, 6.4, 'x', photo3, 35, 0.0, 1.7}),
     case_name);
 
 }  // namespace
