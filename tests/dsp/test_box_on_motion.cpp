@@ -2835,6 +2835,14 @@ INSTANTIATE_TEST_SUITE_P(
 // wall.
 // A 25 px ball thrown at the wall over teddy (HalfPelCore), a side 0.4 px
 // over at one pair since the size's depth is kept (not traced).
+// Held-out round 104's failures (HeldOutSweep104, HeldOutDepth104), the
+// same with and without the depth line: balls going away, on the box (a
+// 124 px one 35.77 px off at one pair, a 104 px one 9.67 px; a 158 px one
+// scored on 4 pairs of the 5 a case needs), on a side (a 17 px one) and on
+// the depth (a 15 px one 68.51 % at one pair: two wrong matches in a row,
+// the first reported at the line, 67.28 -> 0.23 %, the second taken as
+// the rule says; 2.08 % at another pair too); a 133 px ball entering at
+// 18 px a frame, 6.57 px off at one pair.
 // Held-out round 101's failures (HeldOutSweep101, HeldOutCurve101): on
 // the depth alone, balls of 17-40 px on circles and an orbit (1.04-1.40 %)
 // and a 36 px ball thrown at the wall (1.71 %); a 44 px circle at 25 px a
@@ -3018,7 +3026,19 @@ INSTANTIATE_TEST_SUITE_P(
                       motion_case{"heldout103d_12_recede32px_4_0m_0_4x_kodim19", 32, 4.0, recede,
                                   0.4, 0.0, 'x', photo3, 29},
                       motion_case{"heldout103d_18_rebound95px_3_7m_3_4mps_4_1rps_z_teddy", 95, 3.7,
-                                  rebound, 1.0, 4.1, 'z', photo4, 32, 0.0, 3.4}),
+                                  rebound, 1.0, 4.1, 'z', photo4, 32, 0.0, 3.4},
+                      motion_case{"heldout104_20_enter133px_2_9m_3_6x_kodim19", 133, 2.9, enter,
+                                  3.6, 0.0, 'z', photo3, 31},
+                      motion_case{"heldout104_25_recede17px_3_1m_0_4x_3_2rps_z_kodim23", 17, 3.1,
+                                  recede, 0.4, 3.2, 'z', photo2, 40},
+                      motion_case{"heldout104d_00_recede158px_3_9m_0_5x_8_8rps_x_kodim23", 158, 3.9,
+                                  recede, 0.5, 8.8, 'x', photo2, 34},
+                      motion_case{"heldout104d_01_recede15px_2_1m_2_0x_kodim23", 15, 2.1, recede,
+                                  2.0, 0.0, 'y', photo2, 30},
+                      motion_case{"heldout104d_05_recede124px_3_7m_0_5x_venus", 124, 3.7, recede,
+                                  0.5, 0.0, 'z', venus, 36},
+                      motion_case{"heldout104d_06_recede104px_3_4m_0_3x_kodim19", 104, 3.4, recede,
+                                  0.3, 0.0, 'y', photo3, 26}),
     case_name);
 
 // Seven open cases that pass since the silhouette's box is held at
@@ -3389,7 +3409,12 @@ INSTANTIATE_TEST_SUITE_P(
 // fresh cases it should change nothing or turn a fail into a pass. Kept
 // only if, over this round and HeldOutDepth104 together, no case in the
 // envelope (30 px a frame at most) passes without it and fails with it,
-// and it passes at least as many; otherwise it is removed.
+// and it passes at least as many; otherwise it is removed. Three of the 50
+// moved faster (left out); of the other 47, 41 passed with the rule and 41
+// without it, none either way: kept. Two pairs changed: one in the
+// envelope, a 15 px ball going away (-67.28 -> 0.23 %, failing on the
+// next pair's), and one of a 52 px throw at 61 px a frame (195.28 -> 2.12
+// %). Of this round's 28, 26 pass and 2 fail (DISABLED_Open).
 INSTANTIATE_TEST_SUITE_P(
     HeldOutSweep104, BoxOnMotion,
     ::testing::Values(motion_case{"heldout104_00_pass163px_3_5m_0_6x_7_4rps_x_kodim23", 163, 3.5,
@@ -3428,22 +3453,14 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.8, 0.0, 'x', aloe, 24},
                       motion_case{"heldout104_17_thrown64px_2_9m_0_3x_8_9rps_x_kodim23", 64, 2.9,
                                   thrown, 0.3, 8.9, 'x', photo2, 29},
-                      motion_case{"heldout104_18_thrown52px_2_2m_2_3x_3_8rps_x_aloe", 52, 2.2,
-                                  thrown, 2.3, 3.8, 'x', aloe, 34},
                       motion_case{"heldout104_19_left25px_3_1m_0_4x_7_2rps_x_teddy", 25, 3.1,
                                   pass_left, 0.4, 7.2, 'x', photo4, 27},
-                      motion_case{"heldout104_20_enter133px_2_9m_3_6x_kodim19", 133, 2.9, enter,
-                                  3.6, 0.0, 'z', photo3, 31},
-                      motion_case{"heldout104_21_thrown66px_2_3m_1_6x_9_4rps_y_kodim19", 66, 2.3,
-                                  thrown, 1.6, 9.4, 'y', photo3, 30},
                       motion_case{"heldout104_22_circle163px_2_2m_1_3x_8_4rps_x_kodim19", 163, 2.2,
                                   circle, 1.3, 8.4, 'x', photo3, 25},
                       motion_case{"heldout104_23_enter18px_3_4m_0_3x_6_4rps_x_kodim19", 18, 3.4,
                                   enter, 0.3, 6.4, 'x', photo3, 26},
                       motion_case{"heldout104_24_rebound92px_3_8m_3_1mps", 92, 3.8, rebound, 0.4,
                                   0.0, 'z', procedural, 28, 0.0, 3.1},
-                      motion_case{"heldout104_25_recede17px_3_1m_0_4x_3_2rps_z_kodim23", 17, 3.1,
-                                  recede, 0.4, 3.2, 'z', photo2, 40},
                       motion_case{"heldout104_26_circle227px_2_2m_1_3x_teddy", 227, 2.2, circle,
                                   1.3, 0.0, 'y', photo4, 37},
                       motion_case{"heldout104_27_orbit_far126px_2_5m_1_1x_3_4rps_z", 126, 2.5,
@@ -3456,22 +3473,16 @@ INSTANTIATE_TEST_SUITE_P(
 
 // Held out with round 104: 20 balls whose depth changes (seed 204),
 // committed with HeldOutSweep104 before they were run, under its rule.
+// One moved faster (left out); of the other 19, 15 pass and 4 fail
+// (DISABLED_Open).
 INSTANTIATE_TEST_SUITE_P(
     HeldOutDepth104, BoxOnMotion,
-    ::testing::Values(motion_case{"heldout104d_00_recede158px_3_9m_0_5x_8_8rps_x_kodim23", 158, 3.9,
-                                  recede, 0.5, 8.8, 'x', photo2, 34},
-                      motion_case{"heldout104d_01_recede15px_2_1m_2_0x_kodim23", 15, 2.1, recede,
-                                  2.0, 0.0, 'y', photo2, 30},
-                      motion_case{"heldout104d_02_rebound33px_3_7m_1_9mps_3_9rps_z_teddy", 33, 3.7,
+    ::testing::Values(motion_case{"heldout104d_02_rebound33px_3_7m_1_9mps_3_9rps_z_teddy", 33, 3.7,
                                   rebound, 0.5, 3.9, 'z', photo4, 28, 0.0, 1.9},
                       motion_case{"heldout104d_03_recede57px_3_5m_0_3x_aloe", 57, 3.5, recede, 0.3,
                                   0.0, 'z', aloe, 38},
                       motion_case{"heldout104d_04_recede37px_3_9m_0_4x_3_9rps_y_teddy", 37, 3.9,
                                   recede, 0.4, 3.9, 'y', photo4, 24},
-                      motion_case{"heldout104d_05_recede124px_3_7m_0_5x_venus", 124, 3.7, recede,
-                                  0.5, 0.0, 'z', venus, 36},
-                      motion_case{"heldout104d_06_recede104px_3_4m_0_3x_kodim19", 104, 3.4, recede,
-                                  0.3, 0.0, 'y', photo3, 26},
                       motion_case{"heldout104d_07_rebound50px_4_1m_3_8mps", 50, 4.1, rebound, 0.9,
                                   0.0, 'z', procedural, 38, 0.0, 3.8},
                       motion_case{"heldout104d_08_approach95px_3_5m_1_5x_teddy", 95, 3.5, approach,
@@ -3484,8 +3495,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.0, 'y', aloe, 30},
                       motion_case{"heldout104d_12_recede196px_2_7m_2_9x_venus", 196, 2.7, recede,
                                   2.9, 0.0, 'z', venus, 24},
-                      motion_case{"heldout104d_13_approach226px_3_7m_3_1x_3_2rps_z_aloe", 226, 3.7,
-                                  approach, 3.1, 3.2, 'z', aloe, 24},
                       motion_case{"heldout104d_14_rebound47px_4_5m_3_8mps_7_7rps_z_tsukuba", 47,
                                   4.5, rebound, 0.4, 7.7, 'z', tsukuba, 38, 0.0, 3.8},
                       motion_case{"heldout104d_15_rebound74px_4_4m_3_2mps", 74, 4.4, rebound, 0.7,

@@ -286,6 +286,40 @@ TEST(ControllerStates, ANewTrackAfterAStillOneReportsItsOwnDepth) {
     EXPECT_GE(points, 20);
 }
 
+// A wrong match's depth is reported at the line of the track's last three
+// (dsp/depth_line.h); after pairs without a disparity (their left images
+// dark: no match) that line starts again. The ball goes away at 1.5 m/s
+// 4.1 m from the rig, 0.9 % a pair: carried over ten such pairs, the
+// line's next value would stand ten pairs behind it, past the gate (6.25
+// %), and the first depth after the gap would be replaced by it.
+TEST(ControllerStates, PairsWithoutADepthStartTheLineAgain) {
+    const scene::scenario scenario = host::vanish_then_new_object_scenario();
+    host::stereo_runner runner(scenario, default_config(scenario));
+    constexpr int gap = 26, gap_pairs = 10;
+    int tracked_before = 0, own_after = 0;
+    for (int n = 0; n < gap + gap_pairs + 8; ++n) {
+        runner.render(n);
+        const bool dark = n >= gap && n < gap + gap_pairs;
+        if (dark) std::fill(runner.raw_left().pixels.begin(), runner.raw_left().pixels.end(), 0);
+        const host::host_record r = runner.process();
+        if (n < gap) {
+            tracked_before += r.firmware.has_point;
+        } else if (dark) {
+            EXPECT_EQ(r.firmware.state, tracker_state::track) << "frame " << n;
+            EXPECT_FALSE(r.firmware.has_point) << "frame " << n;
+        } else {
+            ASSERT_TRUE(r.firmware.has_point) << "frame " << n;
+            EXPECT_FALSE(r.firmware.depth_from_line) << "frame " << n;
+            const double err_pct =
+                100.0 * (r.firmware.point.z * 1e-6 / r.truth.visible_mean_depth_m - 1.0);
+            EXPECT_LE(std::fabs(err_pct), 1.0) << "frame " << n;
+            ++own_after;
+        }
+    }
+    EXPECT_GE(tracked_before, 6);  // a line of three pairs and more before the gap
+    EXPECT_EQ(own_after, 8);
+}
+
 // A dropped ball bounces and comes to rest; nothing else moves. Its track
 // is kept, still, to the end of the run (75 pairs and more).
 TEST(ControllerStates, AStoppedObjectKeepsItsTrack) {
