@@ -24,9 +24,9 @@ class depth_line {
     // for `measured_q8`: the line's next value where the last three pairs lie
     // on a line (the middle one within 1/128 of its neighbours' mean) and
     // `measured_q8` departs from it by more than a sixteenth; `measured_q8`
-    // otherwise. Never two pairs in a row: a depth
-    // off the line after a replaced one is taken, and the line starts again
-    // from it. `*replaced` says which.
+    // otherwise. Never two pairs in a row: a depth off the line after a
+    // replaced one is taken, and the line starts again from it. `*replaced`
+    // says which.
     int64_t reported(int64_t measured_q8, bool* replaced);
 
     // Divides one pair's reading takes (the depth; the line's disparity when

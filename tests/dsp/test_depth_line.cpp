@@ -15,7 +15,7 @@
 namespace {
 
 constexpr double pair_s = 0.0245;     // the frame period
-constexpr double focal_base = 78.95;  // f B, px m: 789.5 px, 0.1 m
+constexpr double focal_base = 94.74;  // f B, px m: 789.5 px, 0.12 m (the default rig)
 
 int64_t disparity_q8(double depth_m) {
     return std::llround(256.0 * focal_base / depth_m);
