@@ -2843,6 +2843,10 @@ INSTANTIATE_TEST_SUITE_P(
 // the first reported at the line, 67.28 -> 0.23 %, the second taken as
 // the rule says; 2.08 % at another pair too); a 133 px ball entering at
 // 18 px a frame, 6.57 px off at one pair.
+// Held-out round 105's failures (HeldOutSweep105, HeldOutDepth105), the
+// same with and without the pattern key's part of a size's depth: balls
+// of 22-90 px thrown at the wall, a 15 px ball and a 211 px ball going
+// away (not traced).
 // Held-out round 101's failures (HeldOutSweep101, HeldOutCurve101): on
 // the depth alone, balls of 17-40 px on circles and an orbit (1.04-1.40 %)
 // and a 36 px ball thrown at the wall (1.71 %); a 44 px circle at 25 px a
@@ -2983,8 +2987,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   rebound, 1.0, 8.3, 'x', photo4, 32, 0.0, 1.8},
                       motion_case{"rebound25px_1_5mps_4_3m_teddy", 25, 4.3, rebound, 0.5, 0.0, 'x',
                                   photo4, 34, 0.0, 1.5},
-                      motion_case{"heldout102_09_recede93px_3_9m_0_5x_7_0rps_x_venus", 93, 3.9,
-                                  recede, 0.5, 7.0, 'x', venus, 28},
                       motion_case{"heldout102_15_orbit_far37px_2_1m_1_3x_kodim23", 37, 2.1,
                                   orbit_far, 1.3, 0.0, 'x', photo2, 25},
                       motion_case{"heldout102_20_back27px_3_8m_3_5x_cones", 27, 3.8, circle_back,
@@ -3038,7 +3040,17 @@ INSTANTIATE_TEST_SUITE_P(
                       motion_case{"heldout104d_05_recede124px_3_7m_0_5x_venus", 124, 3.7, recede,
                                   0.5, 0.0, 'z', venus, 36},
                       motion_case{"heldout104d_06_recede104px_3_4m_0_3x_kodim19", 104, 3.4, recede,
-                                  0.3, 0.0, 'y', photo3, 26}),
+                                  0.3, 0.0, 'y', photo3, 26},
+                      motion_case{"heldout105_04_rebound90px_4_1m_2_5mps_teddy", 90, 4.1, rebound,
+                                  0.8, 0.0, 'y', photo4, 40, 0.0, 2.5},
+                      motion_case{"heldout105_28_rebound22px_3_6m_1_2mps_5_2rps_x_teddy", 22, 3.6,
+                                  rebound, 1.0, 5.2, 'x', photo4, 29, 0.0, 1.2},
+                      motion_case{"heldout105d_07_rebound47px_4_3m_3_2mps_aloe", 47, 4.3, rebound,
+                                  1.0, 0.0, 'y', aloe, 26, 0.0, 3.2},
+                      motion_case{"heldout105d_08_recede15px_2_9m_1_1x_teddy", 15, 2.9, recede, 1.1,
+                                  0.0, 'z', photo4, 33},
+                      motion_case{"heldout105d_18_recede211px_3_3m_0_5x_9_3rps_z_teddy", 211, 3.3,
+                                  recede, 0.5, 9.3, 'z', photo4, 40}),
     case_name);
 
 // Seven open cases that pass since the silhouette's box is held at
@@ -3205,6 +3217,16 @@ INSTANTIATE_TEST_SUITE_P(DepthOffItsLine, BoxOnMotion,
                                                        25},
                                            motion_case{"heldout100_29_pass17px_2_7m_0_7x_teddy", 17,
                                                        2.7, pass, 0.7, 0.0, 'x', photo4, 33}),
+                         case_name);
+
+// An open case that passes since a box placed from a pattern key stands
+// for the last pair's depth (docs/firmware.md, "A size's depth kept while
+// the object goes away"; held out in round 105): round 102's 93 px ball
+// going away at half speed, spinning 7 rev/s (1.19 -> 0.56 %).
+INSTANTIATE_TEST_SUITE_P(KeyBoxAtPairDepth, BoxOnMotion,
+                         ::testing::Values(motion_case{
+                             "heldout102_09_recede93px_3_9m_0_5x_7_0rps_x_venus", 93, 3.9, recede,
+                             0.5, 7.0, 'x', venus, 28}),
                          case_name);
 
 // Held out, round 102: 30 cases drawn at random (seed 102, rounds 94 and
@@ -3517,7 +3539,11 @@ INSTANTIATE_TEST_SUITE_P(
 // Decision declared here: the part is removed only if, over this round and
 // HeldOutDepth105 together, no case in the envelope (30 px a frame at
 // most) passes with it and fails without it, and the firmware without it
-// passes at least as many; otherwise it stays.
+// passes at least as many; otherwise it stays. Seven of the 50 moved
+// faster (left out); of the other 43, 38 passed with the part and 38
+// without it, none either way (one case's figures moved: a 44 px throw's
+// box mean 1.63 -> 1.50 px): removed. Of this round's 28, 26 pass and 2
+// fail (DISABLED_Open).
 INSTANTIATE_TEST_SUITE_P(
     HeldOutSweep105, BoxOnMotion,
     ::testing::Values(motion_case{"heldout105_00_orbit_near53px_2_8m_2_9x_7_9rps_y_teddy", 53, 2.8,
@@ -3528,8 +3554,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.6, 0.0, 'z', photo4, 40},
                       motion_case{"heldout105_03_back14px_2_7m_3_0x_kodim23", 14, 2.7, circle_back,
                                   3.0, 0.0, 'y', photo2, 36},
-                      motion_case{"heldout105_04_rebound90px_4_1m_2_5mps_teddy", 90, 4.1, rebound,
-                                  0.8, 0.0, 'y', photo4, 40, 0.0, 2.5},
                       motion_case{"heldout105_05_left66px_2_7m_2_2x_aloe", 66, 2.7, pass_left, 2.2,
                                   0.0, 'x', aloe, 36},
                       motion_case{"heldout105_06_enter218px_3_2m_0_3x_1_5rps_x_tsukuba", 218, 3.2,
@@ -3554,14 +3578,10 @@ INSTANTIATE_TEST_SUITE_P(
                                   0.0, 'z', aloe, 38},
                       motion_case{"heldout105_16_approach85px_2_3m_0_3x_teddy", 85, 2.3, approach,
                                   0.3, 0.0, 'x', photo4, 38},
-                      motion_case{"heldout105_17_thrown21px_2_5m_2_2x_4_4rps_z", 21, 2.5, thrown,
-                                  2.2, 4.4, 'z', procedural, 37},
                       motion_case{"heldout105_18_left62px_3_9m_2_6x_cones", 62, 3.9, pass_left, 2.6,
                                   0.0, 'z', photo, 36},
                       motion_case{"heldout105_19_pass205px_3_8m_1_7x_6_4rps_z_aloe", 205, 3.8, pass,
                                   1.7, 6.4, 'z', aloe, 27},
-                      motion_case{"heldout105_20_thrown97px_2_2m_1_3x_cones", 97, 2.2, thrown, 1.3,
-                                  0.0, 'z', photo, 24},
                       motion_case{"heldout105_21_approach52px_3_0m_0_6x_cones", 52, 3.0, approach,
                                   0.6, 0.0, 'y', photo, 39},
                       motion_case{"heldout105_22_rebound27px_4_2m_2_6mps_tsukuba", 27, 4.2, rebound,
@@ -3576,14 +3596,14 @@ INSTANTIATE_TEST_SUITE_P(
                                   pass_left, 1.1, 2.2, 'y', photo2, 32},
                       motion_case{"heldout105_27_enter43px_2_2m_0_6x_3_5rps_y", 43, 2.2, enter, 0.6,
                                   3.5, 'y', procedural, 29},
-                      motion_case{"heldout105_28_rebound22px_3_6m_1_2mps_5_2rps_x_teddy", 22, 3.6,
-                                  rebound, 1.0, 5.2, 'x', photo4, 29, 0.0, 1.2},
                       motion_case{"heldout105_29_enter209px_2_4m_2_6x_aloe", 209, 2.4, enter, 2.6,
                                   0.0, 'y', aloe, 33}),
     case_name);
 
 // Held out with round 105: 20 balls whose depth changes (seed 205),
 // committed with HeldOutSweep105 before they were run, under its rule.
+// Five moved faster (left out); of the other 15, 12 pass and 3 fail
+// (DISABLED_Open).
 INSTANTIATE_TEST_SUITE_P(
     HeldOutDepth105, BoxOnMotion,
     ::testing::Values(motion_case{"heldout105d_00_recede51px_2_2m_3_2x_7_3rps_z_kodim23", 51, 2.2,
@@ -3598,32 +3618,16 @@ INSTANTIATE_TEST_SUITE_P(
                                   approach, 2.1, 0.0, 'x', photo3, 27},
                       motion_case{"heldout105d_05_approach72px_3_6m_2_0x_4_8rps_z_venus", 72, 3.6,
                                   approach, 2.0, 4.8, 'z', venus, 24},
-                      motion_case{"heldout105d_06_approach220px_3_9m_4_6x_teddy", 220, 3.9,
-                                  approach, 4.6, 0.0, 'z', photo4, 26},
-                      motion_case{"heldout105d_07_rebound47px_4_3m_3_2mps_aloe", 47, 4.3, rebound,
-                                  1.0, 0.0, 'y', aloe, 26, 0.0, 3.2},
-                      motion_case{"heldout105d_08_recede15px_2_9m_1_1x_teddy", 15, 2.9, recede, 1.1,
-                                  0.0, 'z', photo4, 33},
                       motion_case{"heldout105d_09_recede29px_3_1m_2_2x_1_2rps_z_cones", 29, 3.1,
                                   recede, 2.2, 1.2, 'z', photo, 29},
                       motion_case{"heldout105d_10_rebound50px_3_8m_2_0mps_4_1rps_x_venus", 50, 3.8,
                                   rebound, 0.8, 4.1, 'x', venus, 38, 0.0, 2.0},
-                      motion_case{"heldout105d_11_approach15px_2_2m_3_6x_kodim19", 15, 2.2,
-                                  approach, 3.6, 0.0, 'x', photo3, 26},
-                      motion_case{"heldout105d_12_approach53px_3_3m_3_2x_7_0rps_y_teddy", 53, 3.3,
-                                  approach, 3.2, 7.0, 'y', photo4, 31},
                       motion_case{"heldout105d_13_approach38px_2_8m_0_5x_kodim23", 38, 2.8,
                                   approach, 0.5, 0.0, 'x', photo2, 25},
-                      motion_case{"heldout105d_14_approach100px_2_8m_4_2x_9_1rps_z_kodim19", 100,
-                                  2.8, approach, 4.2, 9.1, 'z', photo3, 37},
                       motion_case{"heldout105d_15_approach32px_3_2m_0_7x_kodim23", 32, 3.2,
                                   approach, 0.7, 0.0, 'z', photo2, 38},
-                      motion_case{"heldout105d_16_approach74px_2_3m_3_3x_4_4rps_z_aloe", 74, 2.3,
-                                  approach, 3.3, 4.4, 'z', aloe, 29},
                       motion_case{"heldout105d_17_recede200px_3_3m_3_3x_2_5rps_y_kodim19", 200, 3.3,
                                   recede, 3.3, 2.5, 'y', photo3, 40},
-                      motion_case{"heldout105d_18_recede211px_3_3m_0_5x_9_3rps_z_teddy", 211, 3.3,
-                                  recede, 0.5, 9.3, 'z', photo4, 40},
                       motion_case{"heldout105d_19_rebound22px_3_8m_2_3mps_venus", 22, 3.8, rebound,
                                   0.7, 0.0, 'y', venus, 34, 0.0, 2.3}),
     case_name);
