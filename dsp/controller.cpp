@@ -22,14 +22,6 @@ int size_rule_side(const controller_config& config) {
     return config.max_width > config.max_height ? config.max_width : config.max_height;
 }
 
-// Disparity (Q8 px) of a point at depth_mm on the rig: d = s f / D + dcx
-// (the inverse of dsp/triangulate.h). Integer, once at init.
-int64_t disparity_q8_at_depth(const camera_rig& rig, int32_t depth_mm) {
-    const int64_t depth_um = static_cast<int64_t>(depth_mm) * 1000;
-    return static_cast<int64_t>(rig.baseline_um) * rig.focal_px_q8() / depth_um +
-           rig.principal_offset_q8();
-}
-
 }  // namespace
 
 const char* tracker_state_name(tracker_state s) {
@@ -116,8 +108,10 @@ void controller::init(const controller_config& config, hal& hardware) {
     s.stride.init(s.left_gray, frame_pixels);
 
     if (config.disparity_from_rig) {
-        const int64_t near_q8 = disparity_q8_at_depth(config.rig, config.min_depth_mm);
-        const int64_t far_q8 = disparity_q8_at_depth(config.rig, config.max_depth_mm);
+        const int64_t near_q8 =
+            disparity_q8_at_depth(config.rig, int64_t{config.min_depth_mm} * 1000);
+        const int64_t far_q8 =
+            disparity_q8_at_depth(config.rig, int64_t{config.max_depth_mm} * 1000);
         const int max_d = static_cast<int>((near_q8 + 255) / 256) + config.disparity_margin_px;
         const int min_d = max_int(0, static_cast<int>(far_q8 / 256) - config.disparity_margin_px);
         s.config.stereo.min_disparity = min_d;

@@ -269,19 +269,23 @@ bool controller::impl::choose_disparity(frame_output& out) const {
     return true;
 }
 
-// Stage xyz: the box centre (Q8, from the exact Q1 centre) and the chosen
-// disparity, as measured unless no motion of the ball reaches it
-// (dsp/depth_line.h): a depth gated against the track's fitted depths
-// passed fewer fresh box cases (docs/firmware.md, "The measured depth").
+// Stage xyz: the box centre (Q8, from the exact Q1 centre) triangulated at
+// the chosen disparity; a depth no motion of the ball reaches
+// (dsp/depth_line.h) is reported at the line of the track's last ones, its
+// point triangulated again at that depth's disparity. A depth gated against
+// the track's fitted depths passed fewer fresh box cases (docs/firmware.md,
+// "The measured depth").
 void controller::impl::xyz(box object, frame_output& out) {
     stage_scope scope(*hardware, stage::xyz, out);
-    const int64_t offset = config.rig.principal_offset_q8();
-    const int64_t reported =
-        reported_depth.reported(out.disparity_q8 - offset, &out.depth_from_line);
-    if (out.depth_from_line) out.disparity_q8 = static_cast<int32_t>(reported + offset);
-    scope.charge(cycles_of(cost::depth_line_profile(reported_depth.divides())));
-    out.has_point = triangulate(config.rig, object.center_x2() * 128, object.center_y2() * 128,
-                                out.disparity_q8, &out.point);
+    const int32_t x_q8 = object.center_x2() * 128, y_q8 = object.center_y2() * 128;
+    out.has_point = triangulate(config.rig, x_q8, y_q8, out.disparity_q8, &out.point);
+    scope.charge(cycles_of(cost::triangulate_profile()));
+    const int32_t depth_um =
+        reported_depth.reported(out.has_point ? out.point.z : 0, &out.depth_from_line);
+    scope.charge(cycles_of(cost::depth_line_profile(out.depth_from_line)));
+    if (!out.depth_from_line) return;
+    out.disparity_q8 = static_cast<int32_t>(disparity_q8_at_depth(config.rig, depth_um));
+    out.has_point = triangulate(config.rig, x_q8, y_q8, out.disparity_q8, &out.point);
     scope.charge(cycles_of(cost::triangulate_profile()));
 }
 

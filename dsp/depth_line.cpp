@@ -1,10 +1,10 @@
 #include "dsp/depth_line.h"
 
+#include <cstdint>
+
 namespace dsp {
 
 namespace {
-
-constexpr int64_t depth_scale = int64_t{1} << 40;  // depth ~ 2^40 / disparity (Q8)
 
 int64_t abs64(int64_t v) {
     return v < 0 ? -v : v;
@@ -25,19 +25,17 @@ void depth_line::push(int64_t d) {
     depth[count++] = d;
 }
 
-int64_t depth_line::reported(int64_t measured_q8, bool* replaced) {
+int32_t depth_line::reported(int32_t measured_um, bool* replaced) {
     *replaced = false;
-    last_divides = 0;
-    if (measured_q8 <= 0) {
+    if (measured_um <= 0) {
         clear();
-        return measured_q8;
+        return measured_um;
     }
-    last_divides = 1;
-    const int64_t z = depth_scale / measured_q8;
+    const int64_t z = measured_um;
     if (last_replaced) {  // never two in a row: the line starts again here
         clear();
         push(z);
-        return measured_q8;
+        return measured_um;
     }
     if (count == history) {
         // The three on a line: the middle one within 1/128 of its neighbours'
@@ -47,16 +45,16 @@ int64_t depth_line::reported(int64_t measured_q8, bool* replaced) {
         // after it by 16 %.
         const int64_t middle = (depth[0] + depth[2]) / 2;
         const int64_t next = 2 * depth[2] - depth[1];
-        if (128 * abs64(depth[1] - middle) <= middle && next > 0 && 16 * abs64(z - next) > next) {
+        if (128 * abs64(depth[1] - middle) <= middle && next > 0 && next <= INT32_MAX &&
+            16 * abs64(z - next) > next) {
             *replaced = true;
             last_replaced = true;
-            last_divides = 2;
             push(next);
-            return depth_scale / next;
+            return static_cast<int32_t>(next);
         }
     }
     push(z);
-    return measured_q8;
+    return measured_um;
 }
 
 }  // namespace dsp

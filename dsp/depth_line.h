@@ -17,28 +17,24 @@ namespace dsp {
 
 class depth_line {
   public:
-    // A new track, or a pair without a disparity: the line starts again.
+    // A new track, or a pair without a point: the line starts again.
     void clear();
 
-    // The disparity (less the principal points' offset, Q8, > 0) to report
-    // for `measured_q8`: the line's next value where the last three pairs lie
-    // on a line (the middle one within 1/128 of its neighbours' mean) and
-    // `measured_q8` departs from it by more than a sixteenth; `measured_q8`
+    // The depth (micrometres, > 0) to report for the triangulated
+    // `measured_um`: the line's next value where the last three pairs lie on
+    // a line (the middle one within 1/128 of its neighbours' mean) and
+    // `measured_um` departs from it by more than a sixteenth; `measured_um`
     // otherwise. Never two pairs in a row: a depth off the line after a
     // replaced one is taken, and the line starts again from it. `*replaced`
-    // says which.
-    int64_t reported(int64_t measured_q8, bool* replaced);
-
-    // Divides one pair's reading takes (the depth; the line's disparity when
-    // replaced), for the charge.
-    int divides() const { return last_divides; }
+    // says which. No divide: the caller has the depth from triangulation and
+    // computes a disparity only for a replaced one.
+    int32_t reported(int32_t measured_um, bool* replaced);
 
   private:
     static constexpr int history = 3;
-    int64_t depth[history] = {};  // 2^40 / disparity of the last pairs, oldest first
+    int64_t depth[history] = {};  // micrometres, the last pairs', oldest first
     int count = 0;
     bool last_replaced = false;
-    int last_divides = 0;
     void push(int64_t d);
 };
 

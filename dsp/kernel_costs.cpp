@@ -542,16 +542,20 @@ kernel_profile size_depth_profile() {
     return p;
 }
 
-kernel_profile depth_line_profile(int divides) {
-    // dsp/depth_line.h, each pair with a disparity: 2^40 / d (64-bit
-    // dividend, a depth's 29 quotient bits at the range's far end), and the
-    // line's disparity where replaced; the three depths' line and the
-    // pair's distance from it (5 SUB/ADD, 2 ABS, 2 shift-compares, l 9),
-    // the history's shift (l 3, d 4).
+kernel_profile depth_line_profile(bool replaced) {
+    // dsp/depth_line.h on the triangulated depth: the three depths' line and
+    // the pair's distance from it (5 SUB/ADD, 2 ABS, 2 shift-compares, l 9),
+    // the history's shift (l 3, d 4). A replaced depth's disparity,
+    // s f_px / D (dsp/triangulate.h), is one 64-bit divide (ASSUMED 24
+    // quotient bits, as triangulate's) and f_px's; its point is charged as
+    // a second triangulation by the caller.
     kernel_profile p("depth_line");
-    p.add_call(c64x::software_divide(29, true), divides);
     p.add(block("line, compare, history", op_mix{/*l*/ 12, /*s*/ 2, 0, /*d*/ 4, 0, /*lsd*/ 3},
                 latency_load + 4 * latency_alu + latency_store, 1));
+    if (replaced) {
+        p.add_call(c64x::software_divide(c64x::quotient_bits(uint64_t{1} << 18)));
+        p.add_call(c64x::software_divide(24, true));
+    }
     return p;
 }
 

@@ -124,7 +124,7 @@ c64x::kernel_profile size_at_depth_profile(int divides);
 c64x::kernel_profile round_box_profile();
 c64x::kernel_profile extent_end_profile();
 c64x::kernel_profile size_depth_profile();
-c64x::kernel_profile depth_line_profile(int divides);
+c64x::kernel_profile depth_line_profile(bool replaced);
 c64x::kernel_profile triangulate_profile();
 
 }  // namespace dsp::cost

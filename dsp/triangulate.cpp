@@ -40,4 +40,9 @@ bool triangulate(const camera_rig& rig, int32_t x_right_q8, int32_t y_right_q8,
     return true;
 }
 
+int64_t disparity_q8_at_depth(const camera_rig& rig, int64_t depth_um) {
+    return divide_rounded(static_cast<int64_t>(rig.baseline_um) * rig.focal_px_q8(), depth_um) +
+           rig.principal_offset_q8();
+}
+
 }  // namespace dsp

@@ -53,4 +53,9 @@ struct point3_um {
 bool triangulate(const camera_rig& rig, int32_t x_right_q8, int32_t y_right_q8,
                  int32_t disparity_q8, point3_um* out);
 
+// The disparity (Q8 px, rounded) of a point at depth_um > 0: s f_px / D plus
+// the principal points' offset, the inverse of triangulate's depth. One
+// 64-bit division (and f_px's).
+int64_t disparity_q8_at_depth(const camera_rig& rig, int64_t depth_um);
+
 }  // namespace dsp

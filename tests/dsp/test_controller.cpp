@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "dsp/controller.h"
+#include "dsp/kernel_costs.h"
 #include "tb/platform/scoring/error_metrics.h"
 #include "tests/support/data_path.h"
 #include "tests/support/host/box_judge.h"
@@ -318,6 +319,41 @@ TEST(ControllerStates, PairsWithoutADepthStartTheLineAgain) {
     }
     EXPECT_GE(tracked_before, 6);  // a line of three pairs and more before the gap
     EXPECT_EQ(own_after, 8);
+}
+
+// A wrong match, made here: the left image of one pair shifted 4 px right
+// (an even shift keeps its Bayer pattern), so the ball's disparity reads 4
+// px more and its depth 15 % near. It is reported at the line of the
+// track's last three (dsp/depth_line.h), within 1 % of the scene's depth;
+// its disparity and point are computed again at that depth, charged as a
+// second triangulation and a divide (cost::depth_line_profile(true)). The
+// pairs around it are reported as measured, charged one triangulation.
+TEST(ControllerStates, AWrongMatchIsReportedAtTheLineAndChargedAgain) {
+    const scene::scenario scenario = host::vanish_then_new_object_scenario();
+    host::stereo_runner runner(scenario, default_config(scenario));
+    const c64x::cost_model model;  // the runner's
+    const uint64_t triangulation = model.cycles(dsp::cost::triangulate_profile());
+    const uint64_t measured = triangulation + model.cycles(dsp::cost::depth_line_profile(false));
+    const uint64_t replaced = 2 * triangulation + model.cycles(dsp::cost::depth_line_profile(true));
+    constexpr int wrong = 20, shift = 4;
+    for (int n = 0; n <= wrong + 2; ++n) {
+        runner.render(n);
+        scene::gray_image& left = runner.raw_left();
+        if (n == wrong) {
+            for (int y = 0; y < left.height; ++y)
+                for (int x = left.width - 1; x >= shift; --x) left.at(x, y) = left.at(x - shift, y);
+        }
+        const host::host_record r = runner.process();
+        if (n < wrong - 2) continue;
+        ASSERT_TRUE(r.firmware.has_point) << "frame " << n;
+        EXPECT_EQ(r.firmware.depth_from_line, n == wrong) << "frame " << n;
+        const double err_pct =
+            100.0 * (r.firmware.point.z * 1e-6 / r.truth.visible_mean_depth_m - 1.0);
+        EXPECT_LE(std::fabs(err_pct), 1.0) << "frame " << n;
+        EXPECT_EQ(r.firmware.stage_cycles[static_cast<int>(dsp::stage::xyz)],
+                  n == wrong ? replaced : measured)
+            << "frame " << n;
+    }
 }
 
 // A dropped ball bounces and comes to rest; nothing else moves. Its track

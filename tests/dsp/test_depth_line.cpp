@@ -1,9 +1,10 @@
 // A wrong match's depth reported at the line of the track's last depths
 // (dsp/depth_line.h), on depths worked out here in closed form: a ball at
 // constant velocity in depth, one bouncing off a wall, one swung round;
-// disparities from the pinhole model (f B / Z, Q8), with a fixed
-// +-0.1 % pattern of noise (the box cases' per-pair depth noise). The
-// oracle is the true depth, not the code's line.
+// each pair's depth measured through its disparity on the pinhole model
+// (f B / Z, Q8 disparity, micrometre depth), with a fixed +-0.1 % pattern
+// of noise (the box cases' per-pair depth noise). The oracle is the true
+// depth, not the code's line.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,8 +22,11 @@ int64_t disparity_q8(double depth_m) {
     return std::llround(256.0 * focal_base / depth_m);
 }
 
-double depth_of(int64_t q8) {
-    return 256.0 * focal_base / static_cast<double>(q8);
+// The depth triangulation gives, micrometres, for the Q8 disparity of
+// depth_m with `factor` on it (noise, or a wrong match).
+int32_t measured_um(double depth_m, double factor = 1.0) {
+    const double q8 = static_cast<double>(std::llround(disparity_q8(depth_m) * factor));
+    return static_cast<int32_t>(std::llround(1e6 * 256.0 * focal_base / q8));
 }
 
 // +-0.1 %, no two pairs alike in a row.
@@ -44,8 +48,8 @@ std::vector<reading> run(const std::vector<double>& truth, int at = -1, double w
     for (int i = 0; i < static_cast<int>(truth.size()); ++i) {
         const double factor = (1.0 + noise(i)) * (i == at ? wrong : 1.0);
         bool replaced = false;
-        const int64_t q8 = line.reported(std::llround(disparity_q8(truth[i]) * factor), &replaced);
-        out.push_back({depth_of(q8), replaced});
+        const int32_t um = line.reported(measured_um(truth[i], factor), &replaced);
+        out.push_back({um * 1e-6, replaced});
     }
     return out;
 }
@@ -112,17 +116,17 @@ TEST(DepthLine, OfTwoInARowTheSecondIsTakenAndTheLineStartsAgain) {
     const std::vector<double> truth = straight(2.5, 2.5, 16);
     dsp::depth_line line;
     bool replaced = false;
-    for (int i = 0; i < 6; ++i) line.reported(disparity_q8(truth[i]), &replaced);
-    line.reported(disparity_q8(truth[6]) * 12 / 10, &replaced);
+    for (int i = 0; i < 6; ++i) line.reported(measured_um(truth[i]), &replaced);
+    line.reported(measured_um(truth[6], 1.2), &replaced);
     EXPECT_TRUE(replaced);
-    const int64_t second = disparity_q8(truth[7]) * 12 / 10;
+    const int32_t second = measured_um(truth[7], 1.2);
     EXPECT_EQ(line.reported(second, &replaced), second);
     EXPECT_FALSE(replaced);
     // The line from the second on: the true depths after it are no line
     // with it, so none is replaced until three lie on one.
     for (int i = 8; i < 16; ++i) {
-        const int64_t q8 = disparity_q8(truth[i]);
-        EXPECT_EQ(line.reported(q8, &replaced), q8) << "pair " << i;
+        const int32_t um = measured_um(truth[i]);
+        EXPECT_EQ(line.reported(um, &replaced), um) << "pair " << i;
         EXPECT_FALSE(replaced);
     }
 }
@@ -133,10 +137,10 @@ TEST(DepthLine, DepthsOffTheirLineGateNothing) {
     const std::vector<double> truth = straight(3.0, 0.0, 5);
     dsp::depth_line line;
     bool replaced = false;
-    line.reported(std::llround(disparity_q8(truth[0]) * 1.077), &replaced);
-    line.reported(disparity_q8(truth[1]), &replaced);
-    line.reported(disparity_q8(truth[2]), &replaced);
-    const int64_t off = std::llround(disparity_q8(truth[3]) * 1.1);
+    line.reported(measured_um(truth[0], 1.077), &replaced);
+    line.reported(measured_um(truth[1]), &replaced);
+    line.reported(measured_um(truth[2]), &replaced);
+    const int32_t off = measured_um(truth[3], 1.1);
     EXPECT_EQ(line.reported(off, &replaced), off);
     EXPECT_FALSE(replaced);
 }
@@ -148,16 +152,16 @@ TEST(DepthLine, AWrongMatchThatDriftsIsNoLine) {
     const std::vector<double> truth = straight(3.6, 1.4, 8);
     dsp::depth_line line;
     bool replaced = false;
-    for (int i = 0; i < 4; ++i) line.reported(disparity_q8(truth[i]), &replaced);
+    for (int i = 0; i < 4; ++i) line.reported(measured_um(truth[i]), &replaced);
     const double drift[] = {1.0 / 1.03, 1.0 / 1.1};
     for (int i = 4; i < 6; ++i) {
-        const int64_t off = std::llround(disparity_q8(truth[i]) * drift[i - 4]);
+        const int32_t off = measured_um(truth[i], drift[i - 4]);
         EXPECT_EQ(line.reported(off, &replaced), off) << "pair " << i;
         EXPECT_FALSE(replaced) << "pair " << i;
     }
     for (int i = 6; i < 8; ++i) {
-        const int64_t q8 = disparity_q8(truth[i]);
-        EXPECT_EQ(line.reported(q8, &replaced), q8) << "pair " << i;
+        const int32_t um = measured_um(truth[i]);
+        EXPECT_EQ(line.reported(um, &replaced), um) << "pair " << i;
         EXPECT_FALSE(replaced) << "pair " << i;
     }
 }
@@ -166,19 +170,19 @@ TEST(DepthLine, ClearedOrWithoutADisparityItStartsAgain) {
     const std::vector<double> truth = straight(2.5, 2.5, 8);
     dsp::depth_line line;
     bool replaced = false;
-    for (int i = 0; i < 4; ++i) line.reported(disparity_q8(truth[i]), &replaced);
+    for (int i = 0; i < 4; ++i) line.reported(measured_um(truth[i]), &replaced);
     line.clear();
-    line.reported(disparity_q8(truth[4]), &replaced);
-    line.reported(disparity_q8(truth[5]), &replaced);
-    const int64_t off = disparity_q8(truth[6]) * 13 / 10;  // two pairs since: no line yet
+    line.reported(measured_um(truth[4]), &replaced);
+    line.reported(measured_um(truth[5]), &replaced);
+    const int32_t off = measured_um(truth[6], 1.3);  // two pairs since: no line yet
     EXPECT_EQ(line.reported(off, &replaced), off);
     EXPECT_FALSE(replaced);
     // A pair without a disparity restarts it as clear() does.
-    for (int i = 0; i < 3; ++i) line.reported(disparity_q8(truth[i]), &replaced);
+    for (int i = 0; i < 3; ++i) line.reported(measured_um(truth[i]), &replaced);
     EXPECT_EQ(line.reported(0, &replaced), 0);
-    line.reported(disparity_q8(truth[4]), &replaced);
-    line.reported(disparity_q8(truth[5]), &replaced);
-    const int64_t off2 = disparity_q8(truth[6]) * 13 / 10;
+    line.reported(measured_um(truth[4]), &replaced);
+    line.reported(measured_um(truth[5]), &replaced);
+    const int32_t off2 = measured_um(truth[6], 1.3);
     EXPECT_EQ(line.reported(off2, &replaced), off2);
     EXPECT_FALSE(replaced);
 }

@@ -129,4 +129,30 @@ TEST(triangulate, disparity_at_or_below_the_principal_point_offset_gives_false) 
     EXPECT_NEAR(p.z, 3.0e6, 300.0);  // 0.01 % of depth
 }
 
+TEST(triangulate, disparity_at_a_depth_is_the_pinhole_models) {
+    // The inverse of the depth: s f / D + dcx from the rig's true focal
+    // length in double, within the Q8 step and f_px's rounding to 1/256 px;
+    // triangulated back, the depth within the Q8 disparity's error.
+    dsp::camera_rig offset;
+    offset.baseline_um = 95000;
+    offset.focal_length_um = 4800;
+    offset.pixel_pitch_nm = 5600;
+    offset.cx_left_q8 = to_q8(331.25);
+    offset.cx_right_q8 = to_q8(309.75);
+    for (const dsp::camera_rig& rig : {dsp::camera_rig{}, offset}) {
+        const double f_px = static_cast<double>(rig.focal_length_um) * 1000.0 / rig.pixel_pitch_nm;
+        const double dcx = (rig.cx_left_q8 - rig.cx_right_q8) / 256.0;
+        for (double z_m = 0.5; z_m <= 8.0001; z_m += 0.25) {
+            const int64_t z_um = std::llround(z_m * 1e6);
+            const int64_t q8 = dsp::disparity_q8_at_depth(rig, z_um);
+            const double d = rig.baseline_um * f_px / (z_m * 1e6) + dcx;
+            EXPECT_NEAR(q8 / 256.0, d, 1.0 / 256) << z_m << " m";
+            dsp::point3_um p;
+            ASSERT_TRUE(dsp::triangulate(rig, rig.cx_right_q8, rig.cy_right_q8,
+                                         static_cast<int32_t>(q8), &p));
+            EXPECT_NEAR(p.z, z_um, z_um / (256.0 * (d - dcx))) << z_m << " m";
+        }
+    }
+}
+
 }  // namespace
