@@ -54,6 +54,7 @@ using host::max_box_error_px;
 using host::max_depth_error_pct;
 using host::max_mean_box_error_px;
 using host::max_side_error;
+using host::min_judged_pairs;
 using host::min_side_error_px;
 using host::untracked_start_pairs;
 
@@ -269,6 +270,21 @@ motion_result run_case(const motion_case& c) {
     return r;
 }
 
+// The pairs a case can judge, from its scene's truth alone: those with the
+// ball wholly in both views from the first frame three-frame differencing
+// can detect it in (two differences with motion: the frame after the first
+// one that moved), less the start pairs not judged. Fewer than the judge
+// asks for is a defect of the case, not of the firmware.
+int judgeable_pairs(const motion_case& c) {
+    const scene::sequence sequence(scenario_of(c));
+    const int first_motion = platform::first_motion_frame(sequence, c.frames);
+    if (first_motion < 0) return 0;
+    int in_view = 0;
+    for (int n = first_motion + 1; n < c.frames; ++n)
+        in_view += sequence.truth(n).front().in_both_views;
+    return std::max(0, in_view - untracked_start_pairs);
+}
+
 class BoxOnMotion : public ::testing::TestWithParam<motion_case> {};
 
 TEST_P(BoxOnMotion, StaysOnTheObject) {
@@ -276,11 +292,14 @@ TEST_P(BoxOnMotion, StaysOnTheObject) {
     if (c.background != backdrop::procedural) {
         ASSERT_NE(photograph(c.background), nullptr);
     }
+    const int judgeable = judgeable_pairs(c);
+    ASSERT_GE(judgeable, min_judged_pairs) << "three-frame differencing can judge no more than "
+                                           << judgeable << " pairs (a defect of the case)";
     const motion_result r = run_case(c);
     ASSERT_GE(r.detection, 0) << "never detected";
     EXPECT_EQ(r.tracked, r.after_detection) << "a pair after the detection not in TRACK";
     EXPECT_EQ(r.points, r.tracked) << "a tracked pair without a 3D point";
-    ASSERT_GE(r.judged.scored, 5);
+    ASSERT_GE(r.judged.scored, min_judged_pairs);
     EXPECT_LE(r.judged.box_mean_px(), max_mean_box_error_px);
     EXPECT_LE(r.judged.box_max_px, max_box_error_px);
     EXPECT_LE(r.judged.side_over_px, 0.0)
@@ -2012,7 +2031,8 @@ INSTANTIATE_TEST_SUITE_P(
 // balls under 30 px wide fail (the 16 px and 17 px circles over kodim23
 // with the depth 26 % and 70 % off; the 17 px one 5.3 % since a fifth's
 // core, and the 21-22 px ones pass: SmallCoreFifth), the 185 px ball going away over aloe
-// loses its track (the 160 px one over kodim23 passes: ReachKeptRound).
+// loses its track (the 160 px one over kodim23 passes: ReachKeptRound; the
+// 185 px one left out since: its scene gives 3 judgeable pairs).
 // Balls 120-140 px going away over teddy at 6-8 px a frame, most spinning,
 // tried beside round 23's 120 px ball (which passes): 10 of 24 failed at 24
 // frames, 7 of them on the depth alone (TiledFromEighty since); three were
@@ -2045,7 +2065,8 @@ INSTANTIATE_TEST_SUITE_P(
 // tsukuba (depth 1.01 %; passes: SmallCoreFifth) and a 38 px ball on the circle's other side over
 // kodim19 (1.29 %; passes: RoundCore) on the depth alone; a 111 px ball going away from 4 m
 // over teddy, 2.88 / 3.31 px, with 4 pairs scored of the 5 a case needs
-// (from pair 10 it is not wholly before the background plane at 5 m).
+// (from pair 10 it is not wholly before the background plane at 5 m; left
+// out since: its scene gives 4 judgeable pairs).
 // Found by a sweep of 144 slow passes and circles (50-140 px at 1-2 px a frame,
 // spinning 0.5-1 rev/s about z or x), 143 of which pass: a 50 px circle over
 // aloe, its depth 1.01 % off at one pair (passes: RoundCore).
@@ -2838,7 +2859,8 @@ INSTANTIATE_TEST_SUITE_P(
 // Held-out round 104's failures (HeldOutSweep104, HeldOutDepth104), the
 // same with and without the depth line: balls going away, on the box (a
 // 124 px one 35.77 px off at one pair, a 104 px one 9.67 px; a 158 px one
-// scored on 4 pairs of the 5 a case needs), on a side (a 17 px one) and on
+// scored on 4 pairs of the 5 a case needs, left out since: its scene gives
+// 4 judgeable pairs), on a side (a 17 px one) and on
 // the depth (a 15 px one 68.51 % at one pair: two wrong matches in a row,
 // the first reported at the line, 67.28 -> 0.23 %, the second taken as
 // the rule says; 2.08 % at another pair too); a 133 px ball entering at
@@ -2893,8 +2915,6 @@ INSTANTIATE_TEST_SUITE_P(
     DISABLED_Open, BoxOnMotion,
     ::testing::Values(motion_case{"heldout78_00_circle16px_3_8m_3_3rps_x_kodim23", 16, 3.8, circle,
                                   2.6, 3.3, 'x', photo2, 40},
-                      motion_case{"heldout78_04_recede185px_3_9m_aloe", 185, 3.9, recede, 0.6, 0.0,
-                                  'x', aloe, 40},
                       motion_case{"heldout78_13_recede14px_2_3m_1_7rps_z_aloe", 14, 2.3, recede,
                                   3.2, 1.7, 'z', aloe, 40},
                       motion_case{"heldout78_14_enter21px_2_3m_7_4rps_y_venus", 21, 2.3, enter, 3.4,
@@ -2905,8 +2925,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   circle_back, 2.2, 8.4, 'x', photo3, 32},
                       motion_case{"heldout84_32_recede157px_2_7m_2_2rps_z_tsukuba", 157, 2.7,
                                   recede, 2.2, 2.2, 'z', tsukuba, 40},
-                      motion_case{"heldout85_23_recede111px_4_0m_teddy", 111, 4.0, recede, 1.9, 0.0,
-                                  'x', photo4, 24},
                       motion_case{"heldout86_01_back222px_3_4m_5_5rps_y_aloe", 222, 3.4,
                                   circle_back, 2.1, 5.5, 'y', aloe, 24},
                       motion_case{"heldout86_25_back229px_3_7m_2_4rps_y_tsukuba", 229, 3.7,
@@ -3033,8 +3051,6 @@ INSTANTIATE_TEST_SUITE_P(
                                   3.6, 0.0, 'z', photo3, 31},
                       motion_case{"heldout104_25_recede17px_3_1m_0_4x_3_2rps_z_kodim23", 17, 3.1,
                                   recede, 0.4, 3.2, 'z', photo2, 40},
-                      motion_case{"heldout104d_00_recede158px_3_9m_0_5x_8_8rps_x_kodim23", 158, 3.9,
-                                  recede, 0.5, 8.8, 'x', photo2, 34},
                       motion_case{"heldout104d_01_recede15px_2_1m_2_0x_kodim23", 15, 2.1, recede,
                                   2.0, 0.0, 'y', photo2, 30},
                       motion_case{"heldout104d_05_recede124px_3_7m_0_5x_venus", 124, 3.7, recede,

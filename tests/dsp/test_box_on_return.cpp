@@ -148,7 +148,7 @@ TEST_P(BoxOnReturn, BothTracksStayOnTheObject) {
         EXPECT_EQ(records[n].firmware.state, tracker_state::track) << "pair " << n;
     for (const track_score& t : tracks) {
         const host::box_errors& j = t.judged;
-        ASSERT_GE(j.scored, 5) << "track from " << t.first;
+        ASSERT_GE(j.scored, host::min_judged_pairs) << "track from " << t.first;
         EXPECT_LE(j.box_mean_px(), host::max_mean_box_error_px) << "track from " << t.first;
         EXPECT_LE(j.box_max_px, host::max_box_error_px) << "track from " << t.first;
         EXPECT_LE(j.side_over_px, 0.0) << "a box side off the object's, track from " << t.first;

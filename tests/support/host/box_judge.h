@@ -11,6 +11,7 @@
 namespace host {
 
 constexpr int untracked_start_pairs = 2;  // tracked pairs before the bounds apply
+constexpr int min_judged_pairs = 5;       // a verdict on fewer judges too little
 constexpr double max_mean_box_error_px = 3.0;
 constexpr double max_box_error_px = 6.0;
 constexpr double max_depth_error_pct = 1.0;
