@@ -86,15 +86,22 @@ TEST(triangulate, default_rig_matches_the_pinhole_model_from_1_to_3_m) {
     EXPECT_LE(e.worst_arith_um, 0.5 + 1e-6);  // one rounding to nearest um
 }
 
-TEST(triangulate, rig_with_offset_principal_points) {
+// A rig unlike the default one: 95 mm, 4.8 mm lenses, 5.6 um pixels,
+// principal points off centre (dcx = 21.5 px).
+dsp::camera_rig offset_rig() {
     dsp::camera_rig rig;
     rig.baseline_um = 95000;
     rig.focal_length_um = 4800;
     rig.pixel_pitch_nm = 5600;
     rig.cx_left_q8 = to_q8(331.25);
-    rig.cx_right_q8 = to_q8(309.75);  // dcx = 21.5 px
+    rig.cx_right_q8 = to_q8(309.75);
     rig.cy_left_q8 = to_q8(244.0);
     rig.cy_right_q8 = to_q8(236.5);
+    return rig;
+}
+
+TEST(triangulate, rig_with_offset_principal_points) {
+    const dsp::camera_rig rig = offset_rig();
     const errors e = sweep(rig, 640, 480);
     std::printf(
         "offset rig (dcx 21.5 px): %d points, worst depth error %.5f%%, worst X/Y "
@@ -133,13 +140,7 @@ TEST(triangulate, disparity_at_a_depth_is_the_pinhole_models) {
     // The inverse of the depth: s f / D + dcx from the rig's true focal
     // length in double, within the Q8 step and f_px's rounding to 1/256 px;
     // triangulated back, the depth within the Q8 disparity's error.
-    dsp::camera_rig offset;
-    offset.baseline_um = 95000;
-    offset.focal_length_um = 4800;
-    offset.pixel_pitch_nm = 5600;
-    offset.cx_left_q8 = to_q8(331.25);
-    offset.cx_right_q8 = to_q8(309.75);
-    for (const dsp::camera_rig& rig : {dsp::camera_rig{}, offset}) {
+    for (const dsp::camera_rig& rig : {dsp::camera_rig{}, offset_rig()}) {
         const double f_px = static_cast<double>(rig.focal_length_um) * 1000.0 / rig.pixel_pitch_nm;
         const double dcx = (rig.cx_left_q8 - rig.cx_right_q8) / 256.0;
         for (double z_m = 0.5; z_m <= 8.0001; z_m += 0.25) {
