@@ -8,6 +8,7 @@
 // is written only with --timeline-csv.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -38,7 +39,9 @@ std::string read_file(const std::string& path) {
 }
 
 run_output run_binary(const std::string& args) {
-    const std::string err = testing::TempDir() + "cli_report_stderr.txt";
+    // One file per test process: ctest -j runs this file's tests side by side.
+    const std::string err =
+        testing::TempDir() + "cli_report_stderr_" + std::to_string(getpid()) + ".txt";
     const std::string command = std::string(STEREOSIM_BINARY) + " " + args + " 2>" + err;
     const int raw = std::system(command.c_str());
     run_output out;
@@ -227,8 +230,11 @@ TEST(cli_report, schema_csv_verdict_and_reproducibility) {
         return keys;
     };
     EXPECT_EQ(keys_of(report["summary"]["timing"]["stage_ms"]), stages);
-    for (const json& row : report["frames"])
-        if (!row["stage_ms"].is_null()) EXPECT_EQ(keys_of(row["stage_ms"]), stages);
+    for (const json& row : report["frames"]) {
+        if (!row["stage_ms"].is_null()) {
+            EXPECT_EQ(keys_of(row["stage_ms"]), stages);
+        }
+    }
     EXPECT_EQ(report["frames"].size(), 5u);
     // The validator rejects broken reports (each a copy with one defect).
     std::vector<std::pair<std::string, json>> broken;
