@@ -274,13 +274,6 @@ struct controller::impl {
         int x2 = 0, y2 = 0, read_axes = 0;
     };
     fading_rims read_fading_rims(bool fast, bool part_x, bool part_y, box last) const;
-    // The axes on which a part's box takes both differences' common part.
-    struct part_growth {
-        bool x = false, y = false;
-        bool round_read = false;  // the common part tested for a sphere's shape (is_round)
-    };
-    part_growth grow_part(const motion_extents& motion, box last, bool may_be_part, bool part_x,
-                          bool part_y) const;
     bool follow_object(const motion_extents& motion, box last, bool may_be_part, bool keyed,
                        box* followed, follow_reading* reading = nullptr) const;
     int fit_to_window(bool fit_x, bool fit_y, int size_x, int size_y, box last, span* object_x,

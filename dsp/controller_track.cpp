@@ -1,6 +1,7 @@
 // TRACK: the SAD box (paper eq. 5) and its refit from the two frame
 // differences around it (dsp/box_refit.h).
 #include "dsp/controller_impl.h"
+#include "dsp/part_growth.h"
 #include "dsp/round_box.h"
 
 namespace dsp {
@@ -318,45 +319,6 @@ controller::impl::motion_extents controller::impl::measure_motion(box last, cons
     return m;
 }
 
-// Where a box that may be a part of its object (`may_be_part`) takes
-// object(t-1)'s extent, both differences' common part, as it is
-// (follow_object); neither axis where Dif(t-1,t) is a part of it. Per axis for a
-// slow object (both differences' extents within min_shift px of each
-// other), where that part holds the box and is over an eighth larger: the
-// three-frame AND of a slow spinning ball holds where its texture changed
-// most (a detection 67 x 34 px of a 110 px ball, 88 px wide of 140), both
-// differences the whole ball. Not later in a track (at a bounce the common
-// part holds the ball and where it was and will be), nor per axis for a
-// fast object (a throw's first common part is over an eighth larger than
-// its detection). On both axes at any speed where it holds the box on both,
-// is over an eighth larger on one, is clear of the border and has a
-// sphere's shape (dsp/round_box.h, is_round): object(t-1) whole, of which a
-// three-frame AND of a large ball moving along an axis leaves a sliver (a
-// 35 x 11 px detection of a 160 px ball thrown up).
-controller::impl::part_growth controller::impl::grow_part(const motion_extents& motion, box last,
-                                                          bool may_be_part, bool part_x,
-                                                          bool part_y) const {
-    const int tolerance_x = max_int(2, last.width / 8), tolerance_y = max_int(2, last.height / 8);
-    const span common_x = x_span(motion.previous), common_y = y_span(motion.previous);
-    const int slow = key_frame::min_shift;
-    const bool slow_x = may_be_part && near_size(motion.before.x, motion.after.x, slow) &&
-                        near_size(motion.before.right(), motion.after.right(), slow);
-    const bool slow_y = may_be_part && near_size(motion.before.y, motion.after.y, slow) &&
-                        near_size(motion.before.bottom(), motion.after.bottom(), slow);
-    const bool holds = covers(common_x, x_span(last)) && covers(common_y, y_span(last));
-    const bool larger =
-        common_x.size > last.width + tolerance_x || common_y.size > last.height + tolerance_y;
-    part_growth g;
-    g.round_read =
-        may_be_part && !part_x && !part_y && holds && larger && !at_border(motion.previous);
-    const bool round = g.round_read && is_round(motion.previous, config.rig);
-    g.x = round || (slow_x && !part_x && covers(common_x, x_span(last)) &&
-                    common_x.size > last.width + tolerance_x);
-    g.y = round || (slow_y && !part_y && covers(common_y, y_span(last)) &&
-                    common_y.size > last.height + tolerance_y);
-    return g;
-}
-
 // object(t) from the extents, per axis: object(t-1) (previous_of) and
 // where Dif(t-1,t) reaches past it (follow_axis), as wide as object(t-1)
 // (the last box's size where the motion reversed). Not given when object(t-1)'s extent is not the
@@ -368,7 +330,7 @@ controller::impl::part_growth controller::impl::grow_part(const motion_extents& 
 // slow ball's leading crescent), object(t) is the last box's size from the part's outer edge.
 // A box that may be a part of its object (`may_be_part`: a detection's, until a silhouette of its
 // size confirms it) may take object(t-1)'s extent, the common part of both differences, as it is
-// (grow_part).
+// (dsp/part_growth.h).
 // A fast object (read_speed: Dif(t-1,t) 2 min_shift px or more past object(t-1), or the extent
 // window's step min_shift px a pair or more): a size measured short is a rim the differences
 // missed, neither a reason to give up nor taken, and object(t) is fitted to the last pairs'
@@ -381,7 +343,9 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
     if (part_x && part_y) return false;
     const int tolerance_x = max_int(2, last.width / 8), tolerance_y = max_int(2, last.height / 8);
     const span common_x = x_span(motion.previous), common_y = y_span(motion.previous);
-    const part_growth grown = grow_part(motion, last, may_be_part, part_x, part_y);
+    const part_growth grown =
+        grow_part(difference_extents{motion.before, motion.after, motion.previous}, last,
+                  may_be_part, part_x, part_y, at_border(motion.previous), config.rig);
     if (reading) reading->round_read = grown.round_read;
     const bool grown_x = grown.x, grown_y = grown.y;
     const int slow = key_frame::min_shift;

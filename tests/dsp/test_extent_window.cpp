@@ -142,6 +142,21 @@ TEST(WindowAxis, ASpeedThatChangesEveryPairIsFollowed) {
     }
 }
 
+// Faster changes, 6-8 px a pair every pair (a ball circling at 30 px a
+// frame on a 110-150 px radius, v^2 / R, where it turns on that axis): the
+// steps' median is the velocity a pair before the last, over 6 px from the
+// last pair's, so the velocity is searched around the median moved by the
+// change. Every rim read, the last box on object(t-1); no reversal within
+// the window.
+TEST(WindowAxis, ASpeedThatChangesFastIsSearchedAroundTheLastPairs) {
+    const int t = 8;
+    for (const motion m : {motion{100.3, -20.0, 40, 6.0}, motion{700.6, 25.4, 40, -6.0},
+                           motion{200.2, -30.0, 60, 8.0}, motion{900.7, 33.1, 60, -8.0}}) {
+        const span got = fit(window_at(m, t, 4), m.size, m.object(t - 1));
+        EXPECT_NEAR(got.start, m.start(t), 1.5) << "v " << m.v << ", a " << m.a;
+    }
+}
+
 // Edges read 1 px off from pair to pair (each extent's rounding, or a rim
 // read a pixel short) make every second difference 1 px the same way at a
 // constant velocity: no change of speed, so the fit stays where the
