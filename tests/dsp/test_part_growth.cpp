@@ -14,7 +14,7 @@ using dsp::box;
 
 constexpr int ball = 110;
 
-// A ball at rest on x at column 245 (clear of every border) rising `step`
+// A ball at rest on x at column 245 (clear of the side borders) rising `step`
 // px a frame, object(t-1) at row `top`: Dif(t-2,t-1) spans object(t-2)
 // and object(t-1), Dif(t-1,t) object(t-1) and object(t), cut at the image's
 // bottom (row 480) when `bottom_cut`.
