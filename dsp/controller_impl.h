@@ -14,6 +14,7 @@
 #include "dsp/int_bounds.h"
 #include "dsp/kernel_costs.h"
 #include "dsp/key_frame.h"
+#include "dsp/part_growth.h"
 #include "dsp/size_at_depth.h"
 #include "dsp/sobel.h"
 #include "dsp/stereo_reach.h"
@@ -249,12 +250,11 @@ struct controller::impl {
         return b.x <= border || b.y <= border || b.right() >= width - border ||
                b.bottom() >= height - border;
     }
-    // What the two frame differences say around the last box (dsp/box_refit.h).
-    struct motion_extents {
+    // What the two frame differences say around the last box (dsp/box_refit.h):
+    // before (in DETECT object(t-1)), after and previous as difference_extents
+    // (dsp/part_growth.h) has them.
+    struct motion_extents : difference_extents {
         bool found = false;  // both differences hold enough pixels and share a box
-        box before;          // Dif(t-2,t-1)'s extent (DETECT: object(t-1))
-        box after;           // Dif(t-1,t)'s extent around the last box
-        box previous;        // object(t-1): the two extents' common box
         box both;            // Dif(t-1,t)'s extent: object(t-1) and object(t)
     };
     motion_extents measure_motion(box last, const box* detected, uint64_t* cycles,

@@ -1,7 +1,6 @@
 // TRACK: the SAD box (paper eq. 5) and its refit from the two frame
 // differences around it (dsp/box_refit.h).
 #include "dsp/controller_impl.h"
-#include "dsp/part_growth.h"
 #include "dsp/round_box.h"
 
 namespace dsp {
@@ -343,9 +342,8 @@ bool controller::impl::follow_object(const motion_extents& motion, box last, boo
     if (part_x && part_y) return false;
     const int tolerance_x = max_int(2, last.width / 8), tolerance_y = max_int(2, last.height / 8);
     const span common_x = x_span(motion.previous), common_y = y_span(motion.previous);
-    const part_growth grown =
-        grow_part(difference_extents{motion.before, motion.after, motion.previous}, last,
-                  may_be_part, part_x, part_y, at_border(motion.previous), config.rig);
+    const part_growth grown = grow_part(motion, last, may_be_part, part_x, part_y,
+                                        at_border(motion.previous), config.rig);
     if (reading) reading->round_read = grown.round_read;
     const bool grown_x = grown.x, grown_y = grown.y;
     const int slow = key_frame::min_shift;
