@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "model/scene/cosine.h"
+
 namespace scene {
 namespace {
 
@@ -141,7 +143,7 @@ sphere_texture::sphere_texture(const sphere_texture_params& params) {
 
 double sphere_texture::factor(vec3 n_body) const {
     double s = 0.0;
-    for (const component& c : m_components) s += std::cos(dot(c.k, n_body) + c.phase);
+    for (const component& c : m_components) s += cosine(dot(c.k, n_body) + c.phase);
     return 1.0 + std::clamp(m_scale * s, -m_clamp, m_clamp);
 }
 
