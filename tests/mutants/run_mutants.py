@@ -1023,10 +1023,12 @@ def load_known_killers(settings, whole, path=KILLERS_FILE):
         log(f"run_mutants: no configured {main_build}: every mutant goes the whole way")
         return
     settings.killers = record
-    # The cli label's too: a firmware mutant the box cases miss may still break a
-    # co-simulated scenario (the record names those by hand, docs/mutants.md).
+    # The cli and system labels' too: a firmware mutant the box cases miss may
+    # still break a co-simulated scenario or the default scenario's cycle golden
+    # (the record names those by hand, docs/mutants.md).
     settings.test_executables = {**known_killers.test_executables(main_build, "dsp"),
-                                 **known_killers.test_executables(main_build, "cli")}
+                                 **known_killers.test_executables(main_build, "cli"),
+                                 **known_killers.test_executables(main_build, "system")}
     for mutant in firmware_mutants():
         settings.neighbours.setdefault(mutant.file, []).append(mutant.id)
 
