@@ -1026,9 +1026,9 @@ def load_known_killers(settings, whole, path=KILLERS_FILE):
     # The cli and system labels' too: a firmware mutant the box cases miss may
     # still break a co-simulated scenario or the default scenario's cycle golden
     # (the record names those by hand, docs/mutants.md).
-    settings.test_executables = {**known_killers.test_executables(main_build, "dsp"),
-                                 **known_killers.test_executables(main_build, "cli"),
-                                 **known_killers.test_executables(main_build, "system")}
+    settings.test_executables = {name: program for label in ("dsp", "cli", "system")
+                                 for name, program in
+                                 known_killers.test_executables(main_build, label).items()}
     for mutant in firmware_mutants():
         settings.neighbours.setdefault(mutant.file, []).append(mutant.id)
 
