@@ -280,6 +280,8 @@ struct controller::impl {
                       span* object_y) const;
     box pull_box(const motion_extents& motion, box last, box found, bool hold_size) const;
     void stereo_sad(box object, bool outlined, frame_output& out);
+    uint64_t match_core(box object, frame_output& out, int* core_pixels);
+    uint64_t rematch_core(box moved_in, frame_output& out, int* core_pixels);
     uint64_t match_surface(box object, bool outlined, frame_output& out);
     // core_pixels: the pixels of the box's core, whose SAD match `out` holds.
     uint64_t read_short_of(int core_pixels, const frame_output& out, stereo_reach* short_sides,

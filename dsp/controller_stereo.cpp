@@ -10,47 +10,83 @@ namespace dsp {
 
 using namespace controller_parts;
 
+namespace {
+
+// Whether the object stops short of any side or end of its box.
+bool stops_short(const stereo_reach& sides, const stereo_reach& ends) {
+    return sides.left > 0 || sides.right > 0 || ends.up > 0 || ends.down > 0;
+}
+
+}  // namespace
+
 // Stage stereo_sad: the object's core (the right pattern) along the same rows
 // (+-row_slack) of the left image over the depth range; a large
 // object's disparity is then its tiles' mean depth around the core's
 // (dsp/object_depth.h), the core's when too few tiles matched; on a
 // tracked box, the tiles of the box moved in where the object stops short
-// of it. The reported box is then widened where the object's disparity
-// reaches past a side, else moved in (dsp/stereo_reach.h).
+// of it, and a smaller object's core matched again on that box. The
+// reported box is then widened where the object's disparity reaches past a
+// side, else moved in (dsp/stereo_reach.h).
 void controller::impl::stereo_sad(box object, bool outlined, frame_output& out) {
     stage_scope scope(*hardware, stage::stereo_sad, out);
-    row_span spans[max_round_core_rows];
-    const object_core_pattern pattern = object_core(object, config.surface, spans);
-    const box core = pattern.core;
-    const int core_pixels = pattern.pixels;
-    out.sad_match = pattern.round
-                        ? stereo_match_sad_masked(history(0), left(), core, spans, config.stereo)
-                        : stereo_match_sad(history(0), left(), core, config.stereo);
-    out.sad_at_range_end = at_range_end(out.sad_match, core, config.stereo.min_disparity,
-                                        config.stereo.max_disparity, width);
-    scope.charge(
-        cycles_of(cost::sad_search_profile(core.width, core.height, out.sad_match.positions)));
-    // The round core's rows: an ellipse's half width a row, as the tiles' outline.
-    if (pattern.round) scope.charge(cycles_of(cost::surface_outline_profile(core.height, 1, 0)));
-    if (config.stereo.subpixel && out.sad_match.valid) {
-        scope.charge(cycles_of(cost::subpixel_profile()));
-        if (config.stereo.fit == subpixel_fit::half_pel)
-            scope.charge(cycles_of(cost::half_pel_profile(core.width, core.height)));
-    }
+    int core_pixels = 0;
+    scope.charge(match_core(object, out, &core_pixels));
     if (!out.sad_match.valid || out.sad_at_range_end) return;
     // Where the object stops short of the box, read at the core's
-    // disparity, the tiled depth is read on the box moved in: the
-    // background its sides took in pulled the depth far (held-out round
-    // 25's 140 px ball going away, its box 4-7 px too large, 1.04 %).
+    // disparity, the tiled depth (under its size, the core) is read again
+    // on the box moved in: the background its sides took in pulled the
+    // depth far (held-out round 25's 140 px ball going away, its box 4-7 px
+    // too large, 1.04 %; round 80's 45 px ball, its box 6 px past its left
+    // rim, 1.80 %).
     stereo_reach short_sides, short_ends;
     box surface = object;
     if (outlined) {
         scope.charge(read_short_of(core_pixels, out, &short_sides, &short_ends));
         surface = moved_box(object, stereo_reach{}, stereo_reach{}, short_sides, short_ends);
     }
-    if (object_is_tiled(surface, config.surface))
+    if (object_is_tiled(surface, config.surface)) {
         scope.charge(match_surface(surface, outlined, out));
+    } else if (stops_short(short_sides, short_ends)) {
+        scope.charge(rematch_core(surface, out, &core_pixels));
+    }
     if (outlined) scope.charge(widen_to_stereo_reach(core_pixels, short_sides, short_ends, out));
+}
+
+// The core's SAD match on `object` into `out`, its pixels; its cycles.
+uint64_t controller::impl::match_core(box object, frame_output& out, int* core_pixels) {
+    row_span spans[max_round_core_rows];
+    const object_core_pattern pattern = object_core(object, config.surface, spans);
+    const box core = pattern.core;
+    *core_pixels = pattern.pixels;
+    out.sad_match = pattern.round
+                        ? stereo_match_sad_masked(history(0), left(), core, spans, config.stereo)
+                        : stereo_match_sad(history(0), left(), core, config.stereo);
+    out.sad_at_range_end = at_range_end(out.sad_match, core, config.stereo.min_disparity,
+                                        config.stereo.max_disparity, width);
+    uint64_t cycles =
+        cycles_of(cost::sad_search_profile(core.width, core.height, out.sad_match.positions));
+    // The round core's rows: an ellipse's half width a row, as the tiles' outline.
+    if (pattern.round) cycles += cycles_of(cost::surface_outline_profile(core.height, 1, 0));
+    if (config.stereo.subpixel && out.sad_match.valid) {
+        cycles += cycles_of(cost::subpixel_profile());
+        if (config.stereo.fit == subpixel_fit::half_pel)
+            cycles += cycles_of(cost::half_pel_profile(core.width, core.height));
+    }
+    return cycles;
+}
+
+// The core matched again on the box moved in; the first match stands where
+// the second is no measurement.
+uint64_t controller::impl::rematch_core(box moved_in, frame_output& out, int* core_pixels) {
+    const stereo_result first = out.sad_match;
+    const int first_pixels = *core_pixels;
+    const uint64_t cycles = match_core(moved_in, out, core_pixels);
+    if (!out.sad_match.valid || out.sad_at_range_end) {
+        out.sad_match = first;
+        out.sad_at_range_end = false;
+        *core_pixels = first_pixels;
+    }
+    return cycles;
 }
 
 // The tiled disparity of a large object (dsp/object_depth.h), its cycles.
