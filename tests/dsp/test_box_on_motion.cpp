@@ -213,10 +213,8 @@ struct motion_result {
     host::box_errors judged;     // the scored pairs
 };
 
-motion_result run_case(const motion_case& c) {
-    const scene::scenario scenario = scenario_of(c);
-    host::stereo_runner runner(scenario, host::controller_config_for(scenario.scene.rig));
-    const std::vector<host::host_record> records = runner.run(0, scenario.frame_count);
+motion_result run_case(const motion_case& c, host::stereo_runner& runner) {
+    const std::vector<host::host_record> records = runner.run(0, c.frames);
     motion_result r;
     r.detection = platform::summarize(host::scored(records),
                                       platform::first_motion_frame(runner.sequence(), c.frames))
@@ -275,8 +273,7 @@ motion_result run_case(const motion_case& c) {
 // can detect it in (two differences with motion: the frame after the first
 // one that moved), less the start pairs not judged. Fewer than the judge
 // asks for is a defect of the case, not of the firmware.
-int judgeable_pairs(const motion_case& c) {
-    const scene::sequence sequence(scenario_of(c));
+int judgeable_pairs(const motion_case& c, const scene::sequence& sequence) {
     const int first_motion = platform::first_motion_frame(sequence, c.frames);
     if (first_motion < 0) return 0;
     int in_view = 0;
@@ -292,10 +289,12 @@ TEST_P(BoxOnMotion, StaysOnTheObject) {
     if (c.background != backdrop::procedural) {
         ASSERT_NE(photograph(c.background), nullptr);
     }
-    const int judgeable = judgeable_pairs(c);
+    const scene::scenario scenario = scenario_of(c);
+    host::stereo_runner runner(scenario, host::controller_config_for(scenario.scene.rig));
+    const int judgeable = judgeable_pairs(c, runner.sequence());
     ASSERT_GE(judgeable, min_judged_pairs) << "three-frame differencing can judge no more than "
                                            << judgeable << " pairs (a defect of the case)";
-    const motion_result r = run_case(c);
+    const motion_result r = run_case(c, runner);
     ASSERT_GE(r.detection, 0) << "never detected";
     EXPECT_EQ(r.tracked, r.after_detection) << "a pair after the detection not in TRACK";
     EXPECT_EQ(r.points, r.tracked) << "a tracked pair without a 3D point";
