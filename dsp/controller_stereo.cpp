@@ -10,15 +10,6 @@ namespace dsp {
 
 using namespace controller_parts;
 
-namespace {
-
-// Whether the object stops short of any side or end of its box.
-bool stops_short(const stereo_reach& sides, const stereo_reach& ends) {
-    return sides.left > 0 || sides.right > 0 || ends.up > 0 || ends.down > 0;
-}
-
-}  // namespace
-
 // Stage stereo_sad: the object's core (the right pattern) along the same rows
 // (+-row_slack) of the left image over the depth range; a large
 // object's disparity is then its tiles' mean depth around the core's
@@ -46,7 +37,7 @@ void controller::impl::stereo_sad(box object, bool outlined, frame_output& out) 
     }
     if (object_is_tiled(surface, config.surface)) {
         scope.charge(match_surface(surface, outlined, out));
-    } else if (stops_short(short_sides, short_ends)) {
+    } else if (!same_box(surface, object)) {
         scope.charge(rematch_core(surface, out, &core_pixels));
     }
     if (outlined) scope.charge(widen_to_stereo_reach(core_pixels, short_sides, short_ends, out));
